@@ -1,0 +1,230 @@
+#!/usr/bin/python3
+"""Derivation time: yamsc against SymPy's KanesMethod on n-link 3D pendulum chains.
+
+    derivation.py YAMSC_EXE [--n 5,10,20,40] [--sympy-timeout 600] [--yamsc-timeout 600]
+                  [--workdir DIR] [--json PATH] [--seed 1] [--skip-sympy]
+
+For each n it writes the chain of tests/reference/chain.py (2 DOFs per link, full
+inertia tensors, gravity, springs, a point force and a body-frame torque) as
+DIR/chain<n>.mbd and times
+  - `yamsc chain<n>.mbd -o chain<n>.cpp`: wall time of the whole compile (parse,
+    Kane's method in GiNaC, code emission), median of 3 runs for n <= 10, killed
+    after --yamsc-timeout seconds;
+  - SymPy: building the same system and `kanes_equations` + `mass_matrix` / `forcing`,
+    no simplification (the PyDy default), one run in a subprocess that is killed
+    after --sympy-timeout seconds. Importing SymPy is not counted.
+Once a side times out for some n, it is not tried for larger n.
+It prints a markdown table and writes the same numbers as JSON (default
+DIR/derivation.json). Note the two sides do not do the same work: yamsc also
+emits code, SymPy stops at the expressions.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import platform
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import asdict, dataclass
+from typing import List, Optional
+
+REFERENCE_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                             "tests", "reference")
+sys.path.insert(0, REFERENCE_DIR)
+import chain  # noqa: E402
+
+REPEAT_UP_TO_N = 10  # small models compile in milliseconds: take the median of 3 runs
+REPEATS = 3
+
+
+@dataclass
+class Row:
+    n: int
+    dofs: int
+    yamsc_s: Optional[float] = None
+    yamsc_runs: int = 0
+    yamsc_status: str = "not run"  # ok | failed: ... | timeout
+    sympy_s: Optional[float] = None
+    sympy_status: str = "not run"  # ok | timeout | skipped | failed: ...
+    code_bytes: Optional[int] = None
+    code_lines: Optional[int] = None
+
+    @property
+    def ratio(self) -> Optional[float]:
+        if self.yamsc_s and self.sympy_s is not None:
+            return self.sympy_s / self.yamsc_s
+        return None
+
+
+def time_yamsc(exe: str, model: str, output: str, runs: int, timeout: float, row: Row) -> None:
+    seconds = []
+    for _ in range(runs):
+        start = time.perf_counter()
+        try:
+            run = subprocess.run([exe, model, "-o", output], capture_output=True, text=True,
+                                 timeout=timeout)
+        except subprocess.TimeoutExpired:
+            row.yamsc_status = "timeout"
+            return
+        except OSError as error:
+            row.yamsc_status = f"failed: {error}"
+            return
+        seconds.append(time.perf_counter() - start)
+        if run.returncode != 0:
+            last_line = (run.stderr.strip().splitlines() or ["(no message)"])[-1]
+            row.yamsc_status = f"failed: exit {run.returncode}: {last_line}"
+            return
+    row.yamsc_s, row.yamsc_runs, row.yamsc_status = statistics.median(seconds), runs, "ok"
+    with open(output, "rb") as f:
+        code = f.read()
+    row.code_bytes, row.code_lines = len(code), code.count(b"\n")
+
+
+def time_sympy(n: int, seed: int, timeout: float, row: Row) -> None:
+    """Runs this script's --sympy-worker mode, which prints the derivation time."""
+    command = [sys.executable, os.path.abspath(__file__), "--sympy-worker", str(n),
+               "--seed", str(seed)]
+    try:
+        # On timeout subprocess.run kills the worker before raising.
+        run = subprocess.run(command, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        row.sympy_status = "timeout"
+        return
+    if run.returncode != 0:
+        last_line = (run.stderr.strip().splitlines() or ["(no message)"])[-1]
+        row.sympy_status = f"failed: {last_line}"
+        return
+    row.sympy_s, row.sympy_status = json.loads(run.stdout)["seconds"], "ok"
+
+
+def sympy_worker(n: int, seed: int) -> int:
+    import importlib
+
+    importlib.import_module("sympy.physics.mechanics")  # imported before the clock starts
+
+    desc = chain.make_chain(n, seed)
+    start = time.perf_counter()
+    chain.kane_equations(desc)
+    print(json.dumps({"seconds": time.perf_counter() - start}))
+    return 0
+
+
+def _cell(value: Optional[float], status: str) -> str:
+    if value is not None:
+        return f"{value:.3g}" if value < 100 else f"{value:.0f}"
+    return status
+
+
+def _seconds(value: Optional[float], status: str) -> str:
+    return f"{value:.3g} s" if value is not None else status
+
+
+def markdown_table(rows: List[Row], sympy_timeout: float, yamsc_timeout: float) -> str:
+    lines = [
+        "| n | DOFs | yamsc [s] | SymPy [s] | SymPy / yamsc | code [bytes] | code [lines] |",
+        "|---|------|-----------|-----------|---------------|--------------|--------------|",
+    ]
+    for r in rows:
+        sympy_cell = _cell(r.sympy_s, f"> {sympy_timeout:g} (timeout)"
+                           if r.sympy_status == "timeout" else r.sympy_status)
+        yamsc_cell = _cell(r.yamsc_s, f"> {yamsc_timeout:g} (timeout)"
+                           if r.yamsc_status == "timeout" else r.yamsc_status)
+        ratio = f"{r.ratio:.3g}" if r.ratio is not None else "-"
+        lines.append(f"| {r.n} | {r.dofs} | {yamsc_cell} | {sympy_cell} "
+                     f"| {ratio} | {r.code_bytes or '-'} | {r.code_lines or '-'} |")
+    return "\n".join(lines)
+
+
+def main(argv: Optional[List[str]] = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("yamsc", nargs="?", help="path of the yamsc executable")
+    parser.add_argument("--n", default="5,10,20,40", help="comma-separated link counts")
+    parser.add_argument("--sympy-timeout", type=float, default=600.0,
+                        help="seconds before a SymPy derivation is killed")
+    parser.add_argument("--yamsc-timeout", type=float, default=600.0,
+                        help="seconds before one yamsc compile is killed")
+    parser.add_argument("--workdir", help="where models and generated code go (default: a "
+                        "new temporary directory)")
+    parser.add_argument("--json", help="results file (default: WORKDIR/derivation.json)")
+    parser.add_argument("--seed", type=int, default=1, help="seed of the chain's numbers")
+    parser.add_argument("--skip-sympy", action="store_true", help="time yamsc only")
+    parser.add_argument("--sympy-worker", type=int, metavar="N", help=argparse.SUPPRESS)
+    args = parser.parse_args(argv)
+    if args.sympy_worker is not None:
+        return sympy_worker(args.sympy_worker, args.seed)
+    if not args.yamsc:
+        parser.error("YAMSC_EXE is required")
+    try:
+        counts = [int(v) for v in args.n.split(",")]
+    except ValueError:
+        parser.error(f"--n expects comma-separated integers, got '{args.n}'")
+    if any(n < 1 for n in counts):
+        parser.error("--n values must be at least 1")
+    if not (os.path.isfile(args.yamsc) and os.access(args.yamsc, os.X_OK)):
+        print(f"error: yamsc executable not found or not executable: {args.yamsc}",
+              file=sys.stderr)
+        return 3
+    workdir = args.workdir or tempfile.mkdtemp(prefix="yamsc-bench-")
+    os.makedirs(workdir, exist_ok=True)
+
+    rows: List[Row] = []
+    sympy_timed_out = yamsc_timed_out = False
+    for n in counts:
+        desc = chain.make_chain(n, args.seed)
+        row = Row(n=n, dofs=len(desc.dofs))
+        model = os.path.join(workdir, f"{desc.name}.mbd")
+        with open(model, "w") as f:
+            f.write(chain.to_mbd(desc))
+        runs = REPEATS if n <= REPEAT_UP_TO_N else 1
+        if yamsc_timed_out:
+            row.yamsc_status = "timeout"  # a smaller chain already did
+        else:
+            time_yamsc(args.yamsc, model, os.path.join(workdir, f"{desc.name}.cpp"), runs,
+                       args.yamsc_timeout, row)
+            yamsc_timed_out = row.yamsc_status == "timeout"
+        if args.skip_sympy:
+            row.sympy_status = "skipped"
+        elif sympy_timed_out:
+            row.sympy_status = "timeout"  # a smaller chain already did
+        else:
+            time_sympy(n, args.seed, args.sympy_timeout, row)
+            sympy_timed_out = row.sympy_status == "timeout"
+        rows.append(row)
+        print(f"n={n}: yamsc {_seconds(row.yamsc_s, row.yamsc_status)}, "
+              f"SymPy {_seconds(row.sympy_s, row.sympy_status)}", file=sys.stderr, flush=True)
+
+    table = markdown_table(rows, args.sympy_timeout, args.yamsc_timeout)
+    print(table)
+    import sympy
+
+    results = {
+        "benchmark": "derivation time, n-link 3D pendulum chain (tests/reference/chain.py)",
+        "yamsc": os.path.abspath(args.yamsc),
+        "sympy_version": sympy.__version__,
+        "python": platform.python_version(),
+        "machine": platform.machine(),
+        "processor": platform.processor() or platform.machine(),
+        "cpus": os.cpu_count(),
+        "seed": args.seed,
+        "sympy_timeout_s": args.sympy_timeout,
+        "yamsc_timeout_s": args.yamsc_timeout,
+        "rows": [dict(asdict(r), ratio=r.ratio) for r in rows],
+        "markdown": table,
+    }
+    json_path = args.json or os.path.join(workdir, "derivation.json")
+    with open(json_path, "w") as f:
+        json.dump(results, f, indent=2)
+        f.write("\n")
+    print(f"\nresults: {json_path}", file=sys.stderr)
+    # Non-zero when yamsc failed or timed out for some n, so a pipeline notices.
+    failed = any(r.yamsc_status != "ok" for r in rows)
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,184 @@
+// yamsc: the command line. Parses arguments into the driver's option structs,
+// runs the command, and maps errors to exit statuses: 0 success, 1 user error,
+// 2 usage error, 70 internal error.
+#include "diag/diagnostics.hpp"
+#include "driver/bindings.hpp"
+#include "driver/commands.hpp"
+
+#include <cstring>
+#include <iostream>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+using yamsc::driver::UsageError;
+
+const char* usage_text = R"(usage:
+  yamsc MODEL.mbd -o model.cpp [--header model.hpp] [--lang cpp|c|latex] [--namespace NS]
+                  [--depfile FILE] [--dump=ast|model|module] [-v]
+  yamsc check MODEL.mbd [--json]
+  yamsc eval MODEL.mbd [--q v,..] [--qd v,..] [--u name=v,..] [--set name=v,..] [--t T] --json
+  yamsc lin MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--json]
+  yamsc sim MODEL.mbd --tmax T --dt DT [--ic name=v,..] [--u name=v,..] [--set name=v,..]
+                      [--method rk4|cvode] [--rtol R] [--atol A] [-o out.csv] [-v]
+  yamsc --version | --help
+Values accept `deg`: --set theta_t=5deg. Exit status: 0 ok, 1 error in the model or
+its inputs, 2 usage error, 70 internal error.
+)";
+
+/// Command-line options of one subcommand: `--name value`, `--name=value`, flags.
+class Args {
+public:
+    Args(int argc, char** argv, int first, const std::set<std::string>& valued,
+         const std::set<std::string>& flags) {
+        for (int i = first; i < argc; ++i) {
+            std::string a = argv[i];
+            if (a.size() > 1 && a[0] == '-' &&
+                !(a.size() > 1 && (std::isdigit(a[1]) || a[1] == '.'))) {
+                std::string name = a, value;
+                bool has_value = false;
+                if (auto eq = a.find('='); eq != std::string::npos && a.rfind("--", 0) == 0) {
+                    name = a.substr(0, eq);
+                    value = a.substr(eq + 1);
+                    has_value = true;
+                }
+                if (flags.count(name)) {
+                    if (has_value) throw UsageError(name + " takes no value");
+                    values_[name] = "1";
+                } else if (valued.count(name)) {
+                    if (!has_value) {
+                        if (i + 1 >= argc) throw UsageError(name + " needs a value");
+                        value = argv[++i];
+                    }
+                    if (values_.count(name)) throw UsageError(name + " is given twice");
+                    values_[name] = value;
+                } else {
+                    throw UsageError("unknown option '" + name + "'");
+                }
+            } else {
+                positional_.push_back(a);
+            }
+        }
+    }
+    bool has(const std::string& name) const { return values_.count(name) > 0; }
+    std::string get(const std::string& name, const std::string& fallback = "") const {
+        auto it = values_.find(name);
+        return it == values_.end() ? fallback : it->second;
+    }
+    std::string model() const {
+        if (positional_.size() != 1)
+            throw UsageError(positional_.empty() ? "no model file given"
+                                                 : "one model file expected, got " +
+                                                       std::to_string(positional_.size()));
+        return positional_[0];
+    }
+    std::vector<yamsc::driver::Assignment> assignments(const std::string& name) const {
+        return has(name) ? yamsc::driver::parse_assignments(get(name), name)
+                         : std::vector<yamsc::driver::Assignment>{};
+    }
+    double number(const std::string& name, double fallback) const {
+        return has(name) ? yamsc::driver::parse_value(get(name), name) : fallback;
+    }
+
+private:
+    std::map<std::string, std::string> values_;
+    std::vector<std::string> positional_;
+};
+
+int run(int argc, char** argv) {
+    using namespace yamsc::driver;
+    if (argc < 2) throw UsageError("no command given");
+    std::string cmd = argv[1];
+    if (cmd == "--help" || cmd == "-h") {
+        std::cout << usage_text;
+        return 0;
+    }
+    if (cmd == "--version") {
+        std::cout << "yamsc " << YAMSC_VERSION << "\n";
+        return 0;
+    }
+    if (cmd == "check") {
+        Args a(argc, argv, 2, {}, {"--json"});
+        return check({a.model(), a.has("--json")}, std::cout, std::cerr);
+    }
+    if (cmd == "eval") {
+        Args a(argc, argv, 2, {"--q", "--qd", "--u", "--set", "--t"}, {"--json"});
+        EvalOptions o;
+        o.model = a.model();
+        if (a.has("--q")) o.q = parse_list(a.get("--q"), "--q");
+        if (a.has("--qd")) o.qd = parse_list(a.get("--qd"), "--qd");
+        o.u = a.assignments("--u");
+        o.set = a.assignments("--set");
+        o.t = a.number("--t", 0.0);
+        return eval(o, std::cout, std::cerr);
+    }
+    if (cmd == "lin") {
+        Args a(argc, argv, 2, {"--at", "--u", "--set"}, {"--json"});
+        LinOptions o;
+        o.model = a.model();
+        o.at = a.assignments("--at");
+        o.u = a.assignments("--u");
+        o.set = a.assignments("--set");
+        o.json = a.has("--json");
+        return lin(o, std::cout, std::cerr);
+    }
+    if (cmd == "sim") {
+        Args a(argc, argv, 2,
+               {"--tmax", "--dt", "--ic", "--u", "--set", "--method", "-o", "--rtol", "--atol"},
+               {"-v"});
+        SimOptions o;
+        o.model = a.model();
+        if (!a.has("--tmax") || !a.has("--dt")) throw UsageError("sim needs --tmax and --dt");
+        o.tmax = a.number("--tmax", 0);
+        o.dt = a.number("--dt", 0);
+        if (!(o.tmax > 0) || !(o.dt > 0)) throw UsageError("--tmax and --dt must be positive");
+        o.ic = a.assignments("--ic");
+        o.u = a.assignments("--u");
+        o.set = a.assignments("--set");
+        o.method = a.get("--method", "rk4");
+        if (o.method != "rk4" && o.method != "cvode")
+            throw UsageError("--method must be rk4 or cvode, not '" + o.method + "'");
+        o.rtol = a.number("--rtol", o.rtol);
+        o.atol = a.number("--atol", o.atol);
+        o.output = a.get("-o");
+        o.verbose = a.has("-v");
+        return sim(o, std::cout, std::cerr);
+    }
+    Args a(argc, argv, 1, {"-o", "--header", "--lang", "--namespace", "--dump", "--depfile"},
+           {"-v"});
+    CompileOptions o;
+    o.model = a.model();
+    o.output = a.get("-o");
+    o.header = a.get("--header");
+    o.lang = a.get("--lang");
+    o.name_space = a.get("--namespace");
+    o.dump = a.get("--dump");
+    o.depfile = a.get("--depfile");
+    o.verbose = a.has("-v");
+    if (o.output.empty() && o.dump.empty()) throw UsageError("no output given (-o FILE)");
+    return compile(o, std::cout, std::cerr);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const UsageError& e) {
+        std::cerr << "yamsc: usage error: " << e.what() << "\n" << usage_text;
+        return 2;
+    } catch (const yamsc::driver::UserError& e) {
+        std::cerr << "yamsc: error: " << e.what() << "\n";
+        return 1;
+    } catch (const yamsc::diag::InternalError& e) {
+        std::cerr << "yamsc: internal error: " << e.what()
+                  << "\nThis is a bug in yamsc, not in your model: please report it.\n";
+        return 70;
+    } catch (const std::exception& e) {
+        std::cerr << "yamsc: error: " << e.what() << "\n";
+        return 1;
+    }
+}

@@ -1,0 +1,212 @@
+// The C++17 emitter: one namespace per model with constexpr sizes and names, a
+// Params struct with defaults, the model functions and the Model bundle the
+// runtime's from_generated<NS::Model> takes (docs/generated-api.md).
+#include "codegen/body.hpp"
+#include "codegen/emit.hpp"
+#include "codegen/functions.hpp"
+#include "codegen/header_comment.hpp"
+#include "codegen/text.hpp"
+#include "diag/diagnostics.hpp"
+
+#include <fmt/format.h>
+
+namespace yamsc::codegen {
+namespace {
+
+std::string parameter_text(const Argument& a) {
+    switch (a.kind) {
+    case ArgumentKind::scalar:
+        return "double " + a.name;
+    case ArgumentKind::input_array:
+        return "const double* " + a.name;
+    case ArgumentKind::params:
+        return "const Params& " + a.name;
+    case ArgumentKind::output_array:
+        return "double* " + a.name;
+    }
+    return a.name;
+}
+
+std::string signature(const FunctionPlan& plan) {
+    std::string params;
+    for (const Argument* a : plan.parameters) {
+        if (!params.empty()) params += ", ";
+        params += parameter_text(*a);
+    }
+    return fmt::format("void {}({})", plan.routine->name, params);
+}
+
+std::string call_arguments(const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out;
+}
+
+std::string name_array(const char* name, const char* size_name, int size,
+                       const std::vector<std::string>& names) {
+    std::string items;
+    for (const std::string& n : names) items += (items.empty() ? "" : ", ") + c_string_literal(n);
+    if (names.empty()) items = "\"\"";
+    return fmt::format("inline constexpr const char* {}[{}] = {{{}}};\n", name,
+                       size > 0 ? size_name : "1", items);
+}
+
+bool any_param_without_default(const ModelInfo& m) {
+    for (const ParamInfo& p : m.params)
+        if (!p.default_value) return true;
+    return false;
+}
+
+std::string params_struct(const ModelInfo& m) {
+    std::string out = "// The parameters with their defaults; NaN: no default, set it before use.\n"
+                      "struct Params {\n";
+    for (const ParamInfo& p : m.params) {
+        out += fmt::format("    double {} = {};", p.name,
+                           p.default_value ? format_number(*p.default_value)
+                                           : "std::numeric_limits<double>::quiet_NaN()");
+        if (!p.doc.empty()) out += " // " + comment_quote(p.doc);
+        out += "\n";
+    }
+    return out + "};\n";
+}
+
+std::string model_struct(const std::string& ns, const std::vector<FunctionPlan>& plans) {
+    const std::string q = "::" + ns + "::";
+    std::string out = fmt::format(
+        "// Everything above in one type, for templates (the runtime's from_generated<Model>).\n"
+        "struct Model {{\n"
+        "    using Params = {0}Params;\n"
+        "    static constexpr int nq = {0}nq, nu = {0}nu, np = {0}np, ny = {0}ny;\n"
+        "    static constexpr const char* model_name = {0}model_name;\n"
+        "    static constexpr const char* const* dof_names = {0}dof_names;\n"
+        "    static constexpr const char* const* input_names = {0}input_names;\n"
+        "    static constexpr const char* const* param_names = {0}param_names;\n"
+        "    static constexpr const char* const* output_names = {0}output_names;\n",
+        q);
+    for (const FunctionPlan& plan : plans) {
+        if (plan.short_form) continue;
+        out += fmt::format("    static {} {{\n        {}{}({});\n    }}\n", signature(plan), q,
+                           plan.routine->name, call_arguments(parameter_names(plan)));
+    }
+    out += fmt::format("    static void params_to_array(const Params& p, double* a) {{\n"
+                       "        {0}params_to_array(p, a);\n    }}\n"
+                       "    static Params params_from_array(const double* a) {{\n"
+                       "        return {0}params_from_array(a);\n    }}\n",
+                       q);
+    return out + "};\n";
+}
+
+std::string declarations(const Module& module, const std::string& ns,
+                         const std::vector<FunctionPlan>& plans) {
+    const ModelInfo& m = module.model;
+    std::vector<std::string> dofs, inputs, params, outputs;
+    for (const NamedDoc& d : m.dofs) dofs.push_back(d.name);
+    for (const NamedDoc& u : m.inputs) inputs.push_back(u.name);
+    for (const ParamInfo& p : m.params) params.push_back(p.name);
+    for (const NamedDoc& y : m.outputs) outputs.push_back(y.name);
+
+    std::string out = fmt::format("namespace {} {{\n\n", ns);
+    out += fmt::format("inline constexpr int nq = {}, nu = {}, np = {}, ny = {};\n", m.nq(), m.nu(),
+                       m.np(), m.ny());
+    out += fmt::format("inline constexpr const char* model_name = {};\n", c_string_literal(m.name));
+    out += name_array("dof_names", "nq", m.nq(), dofs);
+    out += name_array("input_names", "nu", m.nu(), inputs);
+    out += name_array("param_names", "np", m.np(), params);
+    out += name_array("output_names", "ny", m.ny(), outputs);
+    out += "\n" + params_struct(m) + "\n";
+    out += "// The parameters as an array of np values, in declaration order, and back.\n"
+           "void params_to_array(const Params& p, double* a);\n"
+           "Params params_from_array(const double* a);\n\n";
+    out += "// M(q) q'' = F(q, q', u, t); u may be null when nu == 0.\n";
+    for (const FunctionPlan& plan : plans) {
+        out += fmt::format("// {}\n", plan.short_form
+                                          ? std::string("M(q) when it depends on q and p only")
+                                          : plan.routine->summary);
+        out += signature(plan) + ";\n";
+    }
+    out += "\n" + model_struct(ns, plans) + "\n";
+    return out + fmt::format("}} // namespace {}\n", ns);
+}
+
+std::string params_functions(const ModelInfo& m) {
+    std::string to = "void params_to_array(const Params& p, double* a) {\n";
+    std::string from = "Params params_from_array(const double* a) {\n";
+    if (m.params.empty()) {
+        to += "    (void)p;\n    (void)a;\n";
+        from += "    (void)a;\n";
+    }
+    from += "    Params p;\n";
+    for (std::size_t i = 0; i < m.params.size(); ++i) {
+        to += fmt::format("    a[{}] = p.{};\n", i, m.params[i].name);
+        from += fmt::format("    p.{} = a[{}];\n", m.params[i].name, i);
+    }
+    return to + "}\n\n" + from + "    return p;\n}\n";
+}
+
+struct Definitions {
+    std::string text;
+    std::string helpers; // part functions of the bodies cut in parts
+    std::vector<FunctionCost> costs;
+};
+
+Definitions definitions(const Module& module, const std::vector<FunctionPlan>& plans,
+                        int max_statements) {
+    const Syntax syntax = cpp_syntax();
+    Definitions d;
+    d.text = params_functions(module.model);
+    for (const FunctionPlan& plan : plans) {
+        d.text += "\n// " + plan.routine->summary + "\n" + signature(plan) + " {\n";
+        if (plan.forwards_to_short) {
+            for (const Argument* a : plan.parameters)
+                if (a->name == "t" || a->name == "u") d.text += "    (void)" + a->name + ";\n";
+            d.text += "    mass_matrix(q, p, M);\n";
+        } else {
+            BodyText body = body_text(*plan.routine, module.model, syntax, parameter_names(plan),
+                                      max_statements);
+            d.text += body.text;
+            d.helpers += body.helpers;
+            d.costs.push_back({plan.routine->name, body.count});
+        }
+        d.text += "}\n";
+    }
+    return d;
+}
+
+} // namespace
+
+EmittedFiles emit_cpp(const Module& module, const EmitOptions& options) {
+    const std::string ns =
+        options.namespace_name.empty() ? module.model.name : options.namespace_name;
+    if (!is_cpp_namespace(ns))
+        throw diag::InternalError("code generation: '" + ns + "' is not a C++ namespace name");
+    for (const ParamInfo& p : module.model.params)
+        if (!is_c_identifier(p.name))
+            throw diag::InternalError("code generation: parameter name '" + p.name +
+                                      "' is not an identifier");
+    check_header_name(options.header_name);
+
+    const std::vector<FunctionPlan> plans = function_plans(module);
+    const Definitions defs = definitions(module, plans, options.max_function_statements);
+    const std::string comment = header_comment(module, options, "C++17", ns, defs.costs);
+    const std::string limits = any_param_without_default(module.model) ? "#include <limits>\n" : "";
+    const std::string decls = declarations(module, ns, plans);
+
+    std::string body = fmt::format("namespace {} {{\n", ns);
+    std::string helpers = uses_solver(module) ? solver_helpers_text(cpp_syntax(), "") : "";
+    if (!defs.helpers.empty()) helpers += (helpers.empty() ? "" : "\n") + defs.helpers;
+    if (!helpers.empty()) body += "namespace {\n\n" + helpers + "\n} // namespace\n";
+    body += "\n" + defs.text + "\n" + fmt::format("}} // namespace {}\n", ns);
+
+    EmittedFiles files;
+    if (options.header_name.empty()) {
+        files.source = comment + "\n#include <cmath>\n" + limits + "\n" + decls + "\n" + body;
+    } else {
+        files.header =
+            comment + "\n#pragma once\n\n" + limits + (limits.empty() ? "" : "\n") + decls;
+        files.source =
+            comment + "\n#include \"" + options.header_name + "\"\n\n#include <cmath>\n\n" + body;
+    }
+    return files;
+}
+
+} // namespace yamsc::codegen

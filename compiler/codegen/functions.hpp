@@ -1,0 +1,23 @@
+#pragma once
+// The model functions both emitters write, in order, with their parameters:
+// one per routine, plus the short mass_matrix(q, p, M) when M depends on q and
+// p only (the full form then forwards to it).
+#include "codegen/module.hpp"
+
+#include <string>
+#include <vector>
+
+namespace yamsc::codegen {
+
+struct FunctionPlan {
+    const Routine* routine = nullptr;
+    std::vector<const Argument*> parameters;
+    bool short_form = false;        // mass_matrix(q, p, M)
+    bool forwards_to_short = false; // the full mass_matrix calling the short one
+};
+
+std::vector<FunctionPlan> function_plans(const Module& module);
+
+std::vector<std::string> parameter_names(const FunctionPlan& plan);
+
+} // namespace yamsc::codegen

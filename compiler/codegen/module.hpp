@@ -1,0 +1,152 @@
+#pragma once
+// The language-neutral module: everything the generated code computes, routine
+// by routine, with the shared work made explicit (named temporaries computed
+// once, local arrays, the factorisation of M and the solves with it). Emitters
+// only print a Module; `yamsc --dump=module` prints it with dump().
+#include "codegen/graph.hpp"
+#include "symbolic/equations.hpp"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace yamsc::codegen {
+
+struct Options {
+    /// The largest integer exponent written as repeated multiplication (x*x*x);
+    /// other exponents call pow (sqrt for 1/2).
+    int max_multiplied_power = 4;
+    /// A single-use expression nested deeper than this still gets a temporary,
+    /// so that printed expressions (and compilers) never nest without bound.
+    int max_inline_depth = 32;
+};
+
+enum class ExprKind : std::uint8_t {
+    number, // a literal
+    load,   // array[index]: an argument, a local array or an output already written
+    param,  // a parameter, by index
+    time,   // t
+    add,    // value + sum(weight * operand)
+    mul,    // value * prod(operand ^ weight), integer weights
+    call,   // function(operands...)
+};
+
+struct ExprOperand {
+    int expr = 0; // index into Routine::exprs, always lower than the user's
+    double weight = 1.0;
+};
+
+/// One node of a routine's expression DAG. Every node that is not a leaf is
+/// printed exactly once: as the definition of its temporary, or inline in its
+/// only user.
+struct Expr {
+    ExprKind kind = ExprKind::number;
+    double value = 0.0;                // number: the value; add: constant; mul: coefficient
+    std::string array;                 // load
+    int index = 0;                     // load: element; param: parameter index
+    Function function = Function::sin; // call
+    std::vector<ExprOperand> operands;
+    int temporary = -1; // >= 0: computed once into the temporary t<temporary>
+};
+
+bool is_leaf(const Expr& e);
+
+/// array[index] = exprs[expr]
+struct Assignment {
+    std::string array;
+    int index = 0;
+    int expr = 0;
+};
+
+enum class StepKind {
+    evaluate, // define `temporaries` (in order), then perform `assignments`
+    factor,   // LDL^T-factorise the n x n local `matrix` in place (lower triangle read)
+    solve,    // target + offset, an n x columns row-major block, := matrix^-1 * itself
+};
+
+struct Step {
+    StepKind kind = StepKind::evaluate;
+    std::vector<int> temporaries;
+    std::vector<Assignment> assignments;
+    std::string matrix;
+    int n = 0;
+    std::string target;
+    int offset = 0;
+    int columns = 0;
+};
+
+enum class ArgumentKind { scalar, input_array, params, output_array };
+
+struct Argument {
+    std::string name;
+    ArgumentKind kind = ArgumentKind::scalar;
+    bool used = false; // unused arguments are cast to void in the generated code
+};
+
+struct LocalArray {
+    std::string name;
+    int size = 0;
+};
+
+struct Routine {
+    std::string name; // mass_matrix, forcing, jacobians, outputs, rhs, rhs_jacobian
+    std::string summary;
+    std::vector<Argument> arguments;
+    std::vector<LocalArray> locals;
+    std::vector<Expr> exprs;
+    std::vector<Step> steps;
+    int temporary_count = 0;
+
+    const Argument* argument(std::string_view name) const;
+};
+
+struct NamedDoc {
+    std::string name;
+    std::string doc;
+};
+
+struct ParamInfo {
+    std::string name;
+    std::string doc;
+    std::optional<double> default_value; // none: must be set at run time
+};
+
+struct ModelInfo {
+    std::string name;
+    std::string title;
+    std::string source_path;
+    std::string source_digest;
+    std::vector<NamedDoc> dofs;
+    std::vector<NamedDoc> inputs; // name as written (theta_p''), doc
+    std::vector<ParamInfo> params;
+    std::vector<NamedDoc> outputs;
+
+    int nq() const { return static_cast<int>(dofs.size()); }
+    int nu() const { return static_cast<int>(inputs.size()); }
+    int np() const { return static_cast<int>(params.size()); }
+    int ny() const { return static_cast<int>(outputs.size()); }
+};
+
+struct Module {
+    ModelInfo model;
+    Options options;
+    /// M depends on q and the parameters only: `mass_matrix(q, p, M)` exists
+    /// besides the full `mass_matrix(t, q, u, p, M)`.
+    bool mass_matrix_short_form = false;
+    std::vector<Routine> routines;
+
+    /// The routine of that name; throws diag::InternalError if there is none.
+    const Routine& routine(std::string_view name) const;
+};
+
+/// Builds the module of `eq`: mass_matrix, forcing, jacobians, outputs, rhs and
+/// rhs_jacobian. Linear in the size of the equations' DAG. Throws
+/// diag::InternalError when the equations are malformed (wrong shapes, missing
+/// Jacobians) or hold something generated code cannot express.
+Module build_module(const symbolic::Equations& eq, const Options& options = {});
+
+/// A readable, deterministic listing of the module (for `yamsc --dump=module`).
+std::string dump(const Module& module);
+
+} // namespace yamsc::codegen

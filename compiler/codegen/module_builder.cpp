@@ -1,0 +1,269 @@
+// build_module: imports the equations into one canonical Graph (so that every
+// routine shares the same value numbers) and lays out the six routines.
+#include "codegen/from_ginac.hpp"
+#include "codegen/module.hpp"
+#include "codegen/routine_builder.hpp"
+#include "diag/diagnostics.hpp"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace yamsc::codegen {
+namespace {
+
+using NodeRow = std::vector<NodeId>;
+using NodeMatrix = std::vector<NodeRow>;
+
+struct ImportedEquations {
+    NodeMatrix M, dF_dq, dF_dqd, dF_du, dMa_dq;
+    NodeRow F, y;
+};
+
+[[noreturn]] void malformed(const std::string& what) {
+    throw diag::InternalError("code generation: malformed equations: " + what);
+}
+
+void check_shape(const symbolic::Matrix& m, int rows, int cols, const char* name) {
+    bool ok = static_cast<int>(m.size()) == rows;
+    for (const symbolic::Row& row : m) ok = ok && static_cast<int>(row.size()) == cols;
+    if (!ok)
+        malformed(std::string(name) + " is not " + std::to_string(rows) + " x " +
+                  std::to_string(cols) + (m.empty() ? " (were the Jacobians derived?)" : ""));
+}
+
+void check_shapes(const symbolic::Equations& eq) {
+    const int nq = eq.nq();
+    check_shape(eq.M, nq, nq, "M");
+    if (static_cast<int>(eq.F.size()) != nq) malformed("F does not have nq entries");
+    check_shape(eq.dF_dq, nq, nq, "dF_dq");
+    check_shape(eq.dF_dqd, nq, nq, "dF_dqd");
+    check_shape(eq.dF_du, nq, eq.nu(), "dF_du");
+    check_shape(eq.dMa_dq, nq, nq, "dMa_dq");
+    if (static_cast<int>(eq.a.size()) != nq) malformed("the vector `a` does not have nq symbols");
+}
+
+NodeMatrix import_matrix(GinacImporter& importer, const symbolic::Matrix& m) {
+    NodeMatrix out;
+    for (const symbolic::Row& row : m) {
+        NodeRow r;
+        for (const GiNaC::ex& e : row) r.push_back(importer.import(e));
+        out.push_back(std::move(r));
+    }
+    return out;
+}
+
+ModelInfo model_info(const symbolic::Equations& eq) {
+    ModelInfo m;
+    m.name = eq.model_name;
+    m.title = eq.title;
+    m.source_path = eq.source_path;
+    m.source_digest = eq.source_digest;
+    for (const symbolic::Dof& d : eq.dofs) m.dofs.push_back({d.name, d.doc});
+    for (const symbolic::InputChannel& u : eq.inputs) m.inputs.push_back({u.name, u.doc});
+    for (const symbolic::Parameter& p : eq.params) m.params.push_back({p.name, p.doc, p.value});
+    for (const symbolic::Output& y : eq.outputs) m.outputs.push_back({y.name, y.doc});
+    return m;
+}
+
+Expr load(const char* array, int index) {
+    Expr e;
+    e.kind = ExprKind::load;
+    e.array = array;
+    e.index = index;
+    return e;
+}
+
+Argument arg(const char* name, ArgumentKind kind) {
+    return Argument{name, kind, false};
+}
+
+/// How symbols are read: from (q, qd) in the q-form routines, from x = [q, q']
+/// in rhs and rhs_jacobian. `a` is bound to the solved accelerations when
+/// `accelerations` names the local array holding them.
+RoutineBuilder::Binding binding(int nq, bool state_vector, bool with_rates,
+                                const char* accelerations) {
+    return [=](SymbolRef s) -> std::optional<Expr> {
+        switch (s.kind) {
+        case SymbolKind::time: {
+            Expr e;
+            e.kind = ExprKind::time;
+            return e;
+        }
+        case SymbolKind::q:
+            return state_vector ? load("x", s.index) : load("q", s.index);
+        case SymbolKind::qd:
+            if (!with_rates) return std::nullopt;
+            return state_vector ? load("x", nq + s.index) : load("qd", s.index);
+        case SymbolKind::input:
+            return load("u", s.index);
+        case SymbolKind::param: {
+            Expr e;
+            e.kind = ExprKind::param;
+            e.index = s.index;
+            return e;
+        }
+        case SymbolKind::acceleration:
+            if (accelerations == nullptr) return std::nullopt;
+            return load(accelerations, s.index);
+        case SymbolKind::qdd:
+            return std::nullopt;
+        }
+        return std::nullopt;
+    };
+}
+
+std::vector<Argument> q_form_arguments(std::vector<Argument> outputs) {
+    std::vector<Argument> args{arg("t", ArgumentKind::scalar), arg("q", ArgumentKind::input_array),
+                               arg("qd", ArgumentKind::input_array),
+                               arg("u", ArgumentKind::input_array), arg("p", ArgumentKind::params)};
+    for (Argument& a : outputs) args.push_back(std::move(a));
+    return args;
+}
+
+std::vector<Argument> x_form_arguments(const char* output) {
+    return {arg("t", ArgumentKind::scalar), arg("x", ArgumentKind::input_array),
+            arg("u", ArgumentKind::input_array), arg("p", ArgumentKind::params),
+            arg(output, ArgumentKind::output_array)};
+}
+
+/// The lower triangle of M (all a factorisation reads), row by row.
+void assign_lower_triangle(RoutineBuilder& b, const char* array, const NodeMatrix& M) {
+    const int n = static_cast<int>(M.size());
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j <= i; ++j) b.assign(array, i * n + j, M[i][j]);
+}
+
+Routine mass_matrix_routine(const Graph& g, const ImportedEquations& in, int nq,
+                            const Options& options) {
+    RoutineBuilder b(g, "mass_matrix", "M(q) of M q'' = F (symmetric, row-major)",
+                     {arg("t", ArgumentKind::scalar), arg("q", ArgumentKind::input_array),
+                      arg("u", ArgumentKind::input_array), arg("p", ArgumentKind::params),
+                      arg("M", ArgumentKind::output_array)},
+                     binding(nq, false, false, nullptr));
+    assign_lower_triangle(b, "M", in.M);
+    // M is symmetric: the upper triangle repeats the lower one.
+    for (int i = 0; i < nq; ++i)
+        for (int j = i + 1; j < nq; ++j) b.copy("M", i * nq + j, "M", j * nq + i);
+    return std::move(b).finish(options);
+}
+
+Routine forcing_routine(const Graph& g, const ImportedEquations& in, int nq,
+                        const Options& options) {
+    RoutineBuilder b(g, "forcing", "F(q, q', u, t) of M q'' = F",
+                     q_form_arguments({arg("F", ArgumentKind::output_array)}),
+                     binding(nq, false, true, nullptr));
+    for (int i = 0; i < nq; ++i) b.assign("F", i, in.F[static_cast<std::size_t>(i)]);
+    return std::move(b).finish(options);
+}
+
+Routine jacobians_routine(const Graph& g, const ImportedEquations& in, int nq, int nu,
+                          const Options& options) {
+    RoutineBuilder b(g, "jacobians", "dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)",
+                     q_form_arguments({arg("dF_dq", ArgumentKind::output_array),
+                                       arg("dF_dqd", ArgumentKind::output_array),
+                                       arg("dF_du", ArgumentKind::output_array)}),
+                     binding(nq, false, true, nullptr));
+    for (int i = 0; i < nq; ++i)
+        for (int j = 0; j < nq; ++j) b.assign("dF_dq", i * nq + j, in.dF_dq[i][j]);
+    for (int i = 0; i < nq; ++i)
+        for (int j = 0; j < nq; ++j) b.assign("dF_dqd", i * nq + j, in.dF_dqd[i][j]);
+    for (int i = 0; i < nq; ++i)
+        for (int j = 0; j < nu; ++j) b.assign("dF_du", i * nu + j, in.dF_du[i][j]);
+    return std::move(b).finish(options);
+}
+
+Routine outputs_routine(const Graph& g, const ImportedEquations& in, int nq,
+                        const Options& options) {
+    RoutineBuilder b(g, "outputs", "the model's outputs y(q, q', u, t)",
+                     q_form_arguments({arg("y", ArgumentKind::output_array)}),
+                     binding(nq, false, true, nullptr));
+    for (std::size_t i = 0; i < in.y.size(); ++i) b.assign("y", static_cast<int>(i), in.y[i]);
+    return std::move(b).finish(options);
+}
+
+Routine rhs_routine(const Graph& g, const ImportedEquations& in, const std::vector<NodeId>& rates,
+                    int nq, const Options& options) {
+    RoutineBuilder b(g, "rhs", "x' = [q', M^-1 F] for x = [q, q']", x_form_arguments("xdot"),
+                     binding(nq, true, true, nullptr));
+    if (nq > 0) b.local("M", nq * nq);
+    for (int i = 0; i < nq; ++i) b.assign("xdot", i, rates[static_cast<std::size_t>(i)]);
+    assign_lower_triangle(b, "M", in.M);
+    for (int i = 0; i < nq; ++i) b.assign("xdot", nq + i, in.F[static_cast<std::size_t>(i)]);
+    if (nq > 0) {
+        b.factor("M", nq);
+        b.solve("M", nq, "xdot", nq, 1);
+    }
+    return std::move(b).finish(options);
+}
+
+// J = [[0, I], [M^-1 (dF_dq - dMa_dq(a = q'')), M^-1 dF_dqd]]: the lower block
+// rows of J are an nq x 2nq row-major matrix, solved in place.
+Routine rhs_jacobian_routine(Graph& g, const ImportedEquations& in, int nq,
+                             const Options& options) {
+    RoutineBuilder b(g, "rhs_jacobian", "d(rhs)/dx, 2nq x 2nq, row-major", x_form_arguments("J"),
+                     binding(nq, true, true, "qdd"));
+    const int nx = 2 * nq;
+    const NodeId zero = g.number(0.0);
+    const NodeId one = g.number(1.0);
+    std::vector<std::vector<NodeId>> lower_rows(static_cast<std::size_t>(nq));
+    for (int i = 0; i < nq; ++i) {
+        for (int j = 0; j < nq; ++j)
+            lower_rows[i].push_back(g.add({{in.dF_dq[i][j], 1.0}, {in.dMa_dq[i][j], -1.0}}, 0.0));
+        for (int j = 0; j < nq; ++j) lower_rows[i].push_back(in.dF_dqd[i][j]);
+    }
+    if (nq > 0) {
+        b.local("M", nq * nq);
+        b.local("qdd", nq);
+    }
+    for (int i = 0; i < nq; ++i)
+        for (int j = 0; j < nx; ++j) b.assign("J", i * nx + j, j == nq + i ? one : zero);
+    assign_lower_triangle(b, "M", in.M);
+    for (int i = 0; i < nq; ++i) b.assign("qdd", i, in.F[static_cast<std::size_t>(i)]);
+    if (nq == 0) return std::move(b).finish(options);
+    b.factor("M", nq);
+    b.solve("M", nq, "qdd", 0, 1);
+    for (int i = 0; i < nq; ++i)
+        for (int j = 0; j < nx; ++j) b.assign("J", (nq + i) * nx + j, lower_rows[i][j]);
+    b.solve("M", nq, "J", nq * nx, nx);
+    return std::move(b).finish(options);
+}
+
+} // namespace
+
+Module build_module(const symbolic::Equations& eq, const Options& options) {
+    check_shapes(eq);
+    const int nq = eq.nq();
+    Graph graph(options.max_multiplied_power);
+    GinacImporter importer(graph, eq);
+    ImportedEquations in;
+    in.M = import_matrix(importer, eq.M);
+    for (const GiNaC::ex& f : eq.F) in.F.push_back(importer.import(f));
+    in.dF_dq = import_matrix(importer, eq.dF_dq);
+    in.dF_dqd = import_matrix(importer, eq.dF_dqd);
+    in.dF_du = import_matrix(importer, eq.dF_du);
+    in.dMa_dq = import_matrix(importer, eq.dMa_dq);
+    for (const symbolic::Output& y : eq.outputs) in.y.push_back(importer.import(y.value));
+    std::vector<NodeId> rates;
+    for (int i = 0; i < nq; ++i) rates.push_back(graph.symbol({SymbolKind::qd, i}));
+
+    Module m;
+    m.model = model_info(eq);
+    m.options = options;
+    const std::uint32_t q_and_p =
+        (1u << static_cast<int>(SymbolKind::q)) | (1u << static_cast<int>(SymbolKind::param));
+    std::uint32_t mass_depends = 0;
+    for (const NodeRow& row : in.M)
+        for (NodeId id : row) mass_depends |= graph.node(id).depends;
+    m.mass_matrix_short_form = (mass_depends & ~q_and_p) == 0;
+
+    m.routines.push_back(mass_matrix_routine(graph, in, nq, options));
+    m.routines.push_back(forcing_routine(graph, in, nq, options));
+    m.routines.push_back(jacobians_routine(graph, in, nq, eq.nu(), options));
+    m.routines.push_back(outputs_routine(graph, in, nq, options));
+    m.routines.push_back(rhs_routine(graph, in, rates, nq, options));
+    m.routines.push_back(rhs_jacobian_routine(graph, in, nq, options));
+    return m;
+}
+
+} // namespace yamsc::codegen

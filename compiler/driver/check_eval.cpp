@@ -1,0 +1,136 @@
+// `yamsc check` and `yamsc eval`: the front end only, no code generation.
+#include "driver/bindings.hpp"
+#include "driver/commands.hpp"
+#include "driver/json.hpp"
+#include "driver/pipeline.hpp"
+#include "symbolic/dag.hpp"
+
+#include <ostream>
+
+namespace yamsc::driver {
+
+namespace {
+
+std::string frame_name(const model::Model& m, int i) {
+    return i < 0 ? "ground" : m.bodies[static_cast<std::size_t>(i)].name;
+}
+
+void check_text(const model::Model& m, std::ostream& out) {
+    out << "model " << m.name;
+    if (!m.title.empty()) out << " \"" << m.title << "\"";
+    out << "\n";
+    out << "dofs (" << m.dofs.size() << "):";
+    for (const auto& d : m.dofs) out << " " << d.name;
+    out << "\ninputs (" << m.inputs.size() << "):";
+    for (const auto& i : m.inputs)
+        out << " " << i.name << (i.order ? " order " + std::to_string(i.order) : "");
+    out << "\nparameters (" << m.params.size() << "):";
+    for (const auto& p : m.params) {
+        out << " " << p.name;
+        if (p.value) out << "=" << json::number(*p.value);
+    }
+    out << "\nbodies (" << m.bodies.size() << "):\n";
+    for (const auto& b : m.bodies) {
+        out << "  " << b.name << " (" << (b.kind == model::Body::Kind::rigid ? "rigid" : "flexible")
+            << ") <- " << frame_name(m, b.parent) << ":";
+        for (const auto& s : b.steps) {
+            if (s.kind == model::Step::Kind::offset)
+                out << " at";
+            else
+                out << (s.kind == model::Step::Kind::rotate ? " rotate " : " translate ")
+                    << ast::to_string(s.arg);
+            out << ";";
+        }
+        out << "\n";
+    }
+    out << "outputs (" << m.outputs.size() << "):";
+    for (const auto& o : m.outputs) out << " " << o.name;
+    out << "\n";
+}
+
+void check_json(const model::Model& m, std::ostream& out) {
+    std::vector<std::string> dofs, inputs, params;
+    for (const auto& d : m.dofs) dofs.push_back(d.name);
+    for (const auto& i : m.inputs) inputs.push_back(i.name);
+    out << "{\"model\":" << json::quote(m.name) << ",\"title\":" << json::quote(m.title)
+        << ",\"dofs\":" << json::strings(dofs) << ",\"inputs\":" << json::strings(inputs)
+        << ",\"parameters\":[";
+    for (std::size_t i = 0; i < m.params.size(); ++i) {
+        const auto& p = m.params[i];
+        out << (i ? "," : "") << "{\"name\":" << json::quote(p.name)
+            << ",\"default\":" << (p.value ? json::number(*p.value) : "null")
+            << ",\"doc\":" << json::quote(p.doc) << "}";
+    }
+    out << "],\"bodies\":[";
+    for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+        const auto& b = m.bodies[i];
+        out << (i ? "," : "") << "{\"name\":" << json::quote(b.name) << ",\"kind\":"
+            << json::quote(b.kind == model::Body::Kind::rigid ? "rigid" : "flexible")
+            << ",\"parent\":" << json::quote(frame_name(m, b.parent)) << "}";
+    }
+    std::vector<std::string> outputs;
+    for (const auto& o : m.outputs) outputs.push_back(o.name);
+    out << "],\"outputs\":" << json::strings(outputs) << "}\n";
+}
+
+} // namespace
+
+int check(const CheckOptions& o, std::ostream& out, std::ostream& err) {
+    diag::Diagnostics diags;
+    FrontEnd fe = run_front_end(o.model, Until::model, diags);
+    err << diags.render();
+    if (diags.has_errors() || !fe.model) return 1;
+    if (o.json)
+        check_json(*fe.model, out);
+    else
+        check_text(*fe.model, out);
+    return 0;
+}
+
+int eval(const EvalOptions& o, std::ostream& out, std::ostream& err) {
+    diag::Diagnostics diags;
+    FrontEnd fe = run_front_end(o.model, Until::equations, diags);
+    err << diags.render();
+    if (diags.has_errors() || !fe.equations) return 1;
+    const symbolic::Equations& eq = *fe.equations;
+    const auto nq = static_cast<std::size_t>(eq.nq());
+
+    std::vector<std::string> pnames, unames, dofs;
+    std::vector<std::optional<double>> pdefaults;
+    for (const auto& p : eq.params) {
+        pnames.push_back(p.name);
+        pdefaults.push_back(p.value);
+    }
+    for (const auto& u : eq.inputs) unames.push_back(u.name);
+    for (const auto& d : eq.dofs) dofs.push_back(d.name);
+    std::vector<double> p = bind_named(pnames, pdefaults, o.set, "parameter");
+    std::vector<double> u =
+        bind_named(unames, std::vector<std::optional<double>>(unames.size(), 0.0), o.u, "input");
+    std::vector<double> q = o.q.empty() ? std::vector<double>(nq, 0.0) : sized(o.q, nq, "--q");
+    std::vector<double> qd = o.qd.empty() ? std::vector<double>(nq, 0.0) : sized(o.qd, nq, "--qd");
+
+    symbolic::Evaluator::Values values;
+    values[eq.t] = o.t;
+    for (std::size_t i = 0; i < nq; ++i) {
+        values[eq.dofs[i].q] = q[i];
+        values[eq.dofs[i].qd] = qd[i];
+    }
+    for (std::size_t i = 0; i < u.size(); ++i) values[eq.inputs[i].sym] = u[i];
+    for (std::size_t i = 0; i < p.size(); ++i) values[eq.params[i].sym] = p[i];
+    symbolic::Evaluator evaluate(values);
+    std::vector<std::vector<double>> M(nq, std::vector<double>(nq));
+    std::vector<double> F(nq), y;
+    for (std::size_t r = 0; r < nq; ++r) {
+        for (std::size_t s = 0; s < nq; ++s) M[r][s] = evaluate(eq.M[r][s]);
+        F[r] = evaluate(eq.F[r]);
+    }
+    for (const auto& output : eq.outputs) y.push_back(evaluate(output.value));
+    std::vector<std::string> onames;
+    for (const auto& output : eq.outputs) onames.push_back(output.name);
+    out << "{\"nq\":" << nq << ",\"dofs\":" << json::strings(dofs) << ",\"M\":" << json::matrix(M)
+        << ",\"F\":" << json::array(F) << ",\"outputs\":" << json::strings(onames)
+        << ",\"y\":" << json::array(y) << "}\n";
+    return 0;
+}
+
+} // namespace yamsc::driver

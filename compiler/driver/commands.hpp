@@ -1,0 +1,61 @@
+#pragma once
+// The commands of `yamsc` as library functions: each takes its options, writes
+// its results to `out`, diagnostics and progress to `err`, and returns the exit
+// status (0 success, 1 user error). Usage errors throw UsageError, internal
+// errors diag::InternalError; the CLI turns them into exit statuses 2 and 70.
+#include "driver/values.hpp"
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace yamsc::driver {
+
+struct CompileOptions {
+    std::string model;
+    std::string output;     // -o
+    std::string header;     // --header
+    std::string lang;       // cpp | c | latex; empty: from the extension of -o
+    std::string name_space; // --namespace
+    std::string dump;       // ast | model | equations | module: print and stop
+    std::string depfile;    // --depfile: make-style dependencies of the output
+    bool verbose = false;   // progress of each stage on stderr
+};
+
+struct CheckOptions {
+    std::string model;
+    bool json = false;
+};
+
+struct EvalOptions {
+    std::string model;
+    std::vector<double> q, qd;      // empty: zeros
+    std::vector<Assignment> u, set; // --u, --set
+    double t = 0;
+    bool json = true;
+};
+
+struct LinOptions {
+    std::string model;
+    std::vector<Assignment> at, set, u;
+    bool json = false;
+};
+
+struct SimOptions {
+    std::string model;
+    double tmax = 0, dt = 0;
+    std::vector<Assignment> ic, u, set;
+    std::string method = "rk4"; // rk4 | cvode
+    std::string output;         // CSV path; empty: summary only
+    double rtol = 1e-8, atol = 1e-10;
+    bool verbose = false;
+};
+
+int compile(const CompileOptions& o, std::ostream& out, std::ostream& err);
+int check(const CheckOptions& o, std::ostream& out, std::ostream& err);
+int eval(const EvalOptions& o, std::ostream& out, std::ostream& err);
+int lin(const LinOptions& o, std::ostream& out, std::ostream& err);
+int sim(const SimOptions& o, std::ostream& out, std::ostream& err);
+
+} // namespace yamsc::driver

@@ -1,0 +1,136 @@
+// `yamsc MODEL -o FILE`: the whole pipeline, ending in generated files.
+#include "ast/ast.hpp"
+#include "codegen/emit.hpp"
+#include "codegen/module.hpp"
+#include "driver/commands.hpp"
+#include "driver/files.hpp"
+
+#include "driver/pipeline.hpp"
+#include "model/names.hpp"
+#include <yamsc/atomic_file.hpp>
+
+#include <ostream>
+
+namespace yamsc::driver {
+
+namespace {
+
+std::string extension(const std::string& path) {
+    auto slash = path.find_last_of('/');
+    auto dot = path.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+    return path.substr(dot + 1);
+}
+
+std::string basename(const std::string& path) {
+    auto slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+std::string language_of(const CompileOptions& o) {
+    if (!o.lang.empty()) {
+        if (o.lang != "cpp" && o.lang != "c" && o.lang != "latex")
+            throw UsageError("--lang must be cpp, c or latex, not '" + o.lang + "'");
+        return o.lang;
+    }
+    std::string ext = extension(o.output);
+    if (ext == "cpp" || ext == "cc" || ext == "cxx" || ext == "hpp") return "cpp";
+    if (ext == "c" || ext == "h") return "c";
+    if (ext == "tex") return "latex";
+    throw UsageError("cannot tell the language from '" + o.output + "': give --lang cpp|c|latex");
+}
+
+bool is_identifier(const std::string& s) {
+    if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+    for (char c : s)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+    return true;
+}
+
+void check_namespace(const std::string& ns, const std::string& lang) {
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    while (true) {
+        auto pos = ns.find("::", start);
+        parts.push_back(ns.substr(start, pos - start));
+        if (pos == std::string::npos) break;
+        start = pos + 2;
+    }
+    if (lang == "c" && parts.size() > 1)
+        throw UsageError("--namespace for C output is a single identifier (the function prefix)");
+    for (const auto& p : parts) {
+        if (!is_identifier(p))
+            throw UsageError("--namespace '" + ns + "' is not a valid identifier");
+        std::string why = model::reserved_reason(p);
+        if (!why.empty()) throw UsageError("--namespace '" + p + "' " + why);
+    }
+}
+
+/// Make-style dependency file: the output depends on the model file.
+std::string depfile_text(const CompileOptions& o) {
+    auto escape = [](const std::string& s) {
+        std::string out;
+        for (char c : s) out += (c == ' ' ? "\\ " : std::string(1, c));
+        return out;
+    };
+    std::string targets = escape(o.output) + (o.header.empty() ? "" : " " + escape(o.header));
+    return targets + ": " + escape(o.model) + "\n";
+}
+
+} // namespace
+
+int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
+    const std::string lang = o.dump.empty() ? language_of(o) : "cpp";
+    if (!o.name_space.empty()) check_namespace(o.name_space, lang);
+    if (!o.dump.empty() && o.dump != "ast" && o.dump != "model" && o.dump != "module")
+        throw UsageError("--dump takes ast, model or module");
+
+    diag::Diagnostics diags;
+    auto progress = [&](const std::string& s) {
+        if (o.verbose) err << "yamsc: " << s << "\n";
+    };
+    Until until = o.dump == "ast"     ? Until::ast
+                  : o.dump == "model" ? Until::model
+                                      : Until::jacobians;
+    FrontEnd fe = run_front_end(o.model, until, diags, progress);
+    err << diags.render();
+    if (diags.has_errors()) return 1;
+    if (o.dump == "ast") {
+        out << ast::dump(*fe.ast);
+        return 0;
+    }
+    if (o.dump == "model") {
+        out << model::dump(*fe.model);
+        return 0;
+    }
+    if (lang == "latex") {
+        err << o.model << ": error: LaTeX output is not supported yet [not-supported]\n";
+        return 1;
+    }
+    codegen::Module module = codegen::build_module(*fe.equations);
+    progress("built the code module (common subexpressions shared)");
+    if (o.dump == "module") {
+        out << codegen::dump(module);
+        return 0;
+    }
+    codegen::EmitOptions emit;
+    emit.namespace_name = o.name_space;
+    emit.header_name = o.header.empty() ? "" : basename(o.header);
+    emit.compiler_version = YAMSC_VERSION;
+    // Only the options that shape the output are recorded, so identical inputs give
+    // identical bytes wherever the files are written.
+    emit.command_line = "--lang " + lang +
+                        (o.name_space.empty() ? "" : " --namespace " + o.name_space) +
+                        (o.header.empty() ? "" : " --header " + emit.header_name);
+    codegen::EmittedFiles files =
+        lang == "c" ? codegen::emit_c(module, emit) : codegen::emit_cpp(module, emit);
+    // Write the header first: a source is never left referring to a missing header.
+    if (!o.header.empty()) runtime::write_file_atomically(o.header, files.header);
+    runtime::write_file_atomically(o.output, files.source);
+    if (!o.depfile.empty()) runtime::write_file_atomically(o.depfile, depfile_text(o));
+    progress("wrote " + o.output + (o.header.empty() ? "" : " and " + o.header) + " (" +
+             std::to_string(files.source.size() + files.header.size()) + " bytes)");
+    return 0;
+}
+
+} // namespace yamsc::driver

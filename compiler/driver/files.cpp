@@ -1,0 +1,41 @@
+#include "driver/files.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace yamsc::driver {
+
+std::shared_ptr<const diag::SourceFile> read_source(const std::string& path,
+                                                    diag::Diagnostics& diags) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        diags.error(diag::Kind::Io, diag::Location{},
+                    "cannot read '" + path + "': " + std::strerror(errno));
+        return nullptr;
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) {
+        diags.error(diag::Kind::Io, diag::Location{}, "cannot read '" + path + "'");
+        return nullptr;
+    }
+    return std::make_shared<diag::SourceFile>(path, text.str());
+}
+
+std::string digest(const std::string& text) {
+    std::uint64_t h = 1469598103934665603ull;
+    for (unsigned char c : text) {
+        h ^= c;
+        h *= 1099511628211ull;
+    }
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+}
+
+} // namespace yamsc::driver

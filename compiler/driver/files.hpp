@@ -1,0 +1,19 @@
+#pragma once
+// Files: reading sources with a located error, and the digest that identifies
+// a model's source in generated headers. Outputs are written atomically with
+// the runtime's write_file_atomically (temporary file, then rename).
+#include "diag/diagnostics.hpp"
+
+#include <optional>
+#include <string>
+
+namespace yamsc::driver {
+
+/// Reads a whole file; reports an Io diagnostic and returns nullopt on failure.
+std::shared_ptr<const diag::SourceFile> read_source(const std::string& path,
+                                                    diag::Diagnostics& diags);
+
+/// Hex digest (FNV-1a, 64 bit) of a text.
+std::string digest(const std::string& text);
+
+} // namespace yamsc::driver

@@ -1,0 +1,59 @@
+#include "driver/pipeline.hpp"
+
+#include "driver/files.hpp"
+#include "model/checker.hpp"
+#include "parse/parser.hpp"
+#include "symbolic/derive.hpp"
+
+#include <chrono>
+#include <cstdio>
+
+namespace yamsc::driver {
+
+namespace {
+
+class Stopwatch {
+public:
+    double seconds() const {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+private:
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+std::string timed(const char* what, double s) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%s: %.3f s", what, s);
+    return buf;
+}
+
+} // namespace
+
+FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& diags,
+                       const std::function<void(const std::string&)>& progress) {
+    auto say = [&](const std::string& s) {
+        if (progress) progress(s);
+    };
+    FrontEnd fe;
+    fe.source = read_source(path, diags);
+    if (!fe.source) return fe;
+    Stopwatch clock;
+    fe.ast = parse::parse_model(fe.source, diags);
+    if (!fe.ast || diags.has_errors() || until == Until::ast) return fe;
+    fe.model = model::check(*fe.ast, diags);
+    if (!fe.model || diags.has_errors() || until == Until::model) return fe;
+    say(timed("parsed and checked", clock.seconds()));
+    fe.equations = symbolic::derive(*fe.model, diags);
+    if (!fe.equations || diags.has_errors()) return fe;
+    fe.equations->source_path = path;
+    fe.equations->source_digest = digest(fe.source->text());
+    say(timed("derived the equations of motion", clock.seconds()));
+    if (until == Until::jacobians) {
+        symbolic::derive_jacobians(*fe.equations);
+        say(timed("derived the Jacobians", clock.seconds()));
+    }
+    return fe;
+}
+
+} // namespace yamsc::driver

@@ -1,0 +1,26 @@
+#pragma once
+// The compiler's stages chained: source -> AST -> checked model -> equations.
+// Each stage reports into one Diagnostics; the chain stops after the first stage
+// that reported an error.
+#include "ast/ast.hpp"
+#include "model/model.hpp"
+#include "symbolic/equations.hpp"
+
+#include <functional>
+
+namespace yamsc::driver {
+
+struct FrontEnd {
+    std::shared_ptr<const diag::SourceFile> source;
+    std::optional<ast::ModelFile> ast;
+    std::optional<model::Model> model;
+    std::optional<symbolic::Equations> equations;
+};
+
+enum class Until { ast, model, equations, jacobians };
+
+/// Runs the stages up to `until`. `progress` (may be empty) receives a line per stage.
+FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& diags,
+                       const std::function<void(const std::string&)>& progress = {});
+
+} // namespace yamsc::driver

@@ -1,0 +1,29 @@
+#pragma once
+// Values given on the command line: `name=v,name=v` assignments (with `deg`) and
+// `v,v,v` lists. Errors are usage errors (exit 2) with a message.
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace yamsc::driver {
+
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// "1.5", "-2e3", "5deg", "5 deg" -> value in SI (deg converted to rad).
+double parse_value(const std::string& text, const std::string& option);
+
+/// "v,v,v" -> values.
+std::vector<double> parse_list(const std::string& text, const std::string& option);
+
+/// One `name=value` (name may end in primes: psi'=0.5).
+struct Assignment {
+    std::string name;
+    int primes = 0;
+    double value = 0;
+};
+std::vector<Assignment> parse_assignments(const std::string& text, const std::string& option);
+
+} // namespace yamsc::driver

@@ -1,0 +1,629 @@
+#include "model/checker.hpp"
+
+#include "model/expr_check.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <set>
+
+namespace yamsc::model {
+
+using diag::Kind;
+
+int Model::body_index(const std::string& name) const {
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        if (bodies[i].name == name) return static_cast<int>(i);
+    return -1;
+}
+
+int Model::point_index(const std::string& name) const {
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (points[i].name == name) return static_cast<int>(i);
+    return -1;
+}
+
+namespace {
+
+Expr number(const std::string& text, const Loc& loc) {
+    Expr e;
+    e.kind = Expr::Kind::number;
+    e.text = text;
+    e.loc = loc;
+    return e;
+}
+
+Vec zero_vec(const Loc& loc) {
+    return {number("0", loc), number("0", loc), number("0", loc)};
+}
+
+class Checker {
+public:
+    Checker(const ast::ModelFile& file, diag::Diagnostics& diags)
+        : file_(file), diags_(diags), exprs_(names_, model_.inputs, diags) {}
+
+    std::optional<Model> run() {
+        model_.source = file_.source;
+        declare_model();
+        declare_names();
+        check_params();
+        build_bodies();
+        check_loads();
+        check_outputs();
+        check_dof_usage();
+        report_unsupported();
+        if (diags_.has_errors()) return std::nullopt;
+        return std::move(model_);
+    }
+
+private:
+    // ---- declarations -------------------------------------------------------------
+    void declare_model() {
+        if (!file_.model) {
+            diag::Location loc{file_.source, 1, 1};
+            diags_.error(Kind::MissingModel, loc,
+                         "the file has no model declaration (start it with `model NAME`)");
+            return;
+        }
+        model_.name = file_.model->name;
+        model_.title = file_.title;
+        std::string why = reserved_reason(model_.name);
+        if (!why.empty())
+            diags_.error(Kind::ReservedName, file_.model->loc,
+                         "model name '" + model_.name + "' " + why);
+    }
+
+    bool declare(const std::string& name, NameKind kind, int index, const Loc& loc) {
+        std::string why = reserved_reason(name);
+        if (!why.empty()) {
+            diags_.error(Kind::ReservedName, loc, "'" + name + "' " + why);
+            return false;
+        }
+        auto [it, fresh] = names_.emplace(name, NameInfo{kind, index, loc});
+        if (!fresh) {
+            diags_.error(Kind::DuplicateName, loc, "'" + name + "' is already declared");
+            diags_.note(it->second.loc, "'" + name + "' was declared here");
+            return false;
+        }
+        return true;
+    }
+
+    void declare_names() {
+        for (const auto& p : file_.params) {
+            declare(p.id.name, NameKind::param, static_cast<int>(model_.params.size()), p.id.loc);
+            model_.params.push_back({p.id.name, p.id.doc, std::nullopt, p.id.loc});
+        }
+        for (const auto& in : file_.inputs) {
+            declare(in.id.name, NameKind::input, static_cast<int>(model_.inputs.size()), in.id.loc);
+            if (in.order < 0 || in.order > 2)
+                diags_.error(Kind::InvalidValue, in.id.loc,
+                             "input order must be 0, 1 or 2, not " + std::to_string(in.order));
+            model_.inputs.push_back({in.id.name, in.id.doc, in.order, in.id.loc});
+        }
+        for (const auto& d : file_.dofs) {
+            declare(d.name, NameKind::dof, static_cast<int>(model_.dofs.size()), d.loc);
+            model_.dofs.push_back({d.name, d.doc, d.loc});
+        }
+        int body = 0;
+        for (const auto& b : file_.rigid_bodies) declare(b.name, NameKind::body, body++, b.loc);
+        for (const auto& b : file_.flexible_bodies) declare(b.name, NameKind::body, body++, b.loc);
+        int point = 0;
+        for (const auto& p : file_.points) declare(p.id.name, NameKind::point, point++, p.id.loc);
+        if (file_.dofs.empty() && file_.model)
+            diags_.error(Kind::DofUsage, file_.model->loc,
+                         "the model declares no DOF (add `dof NAME` and use it in a joint)");
+    }
+
+    void check_params() {
+        for (std::size_t i = 0; i < file_.params.size(); ++i) {
+            const auto& p = file_.params[i];
+            if (!p.value) continue;
+            ExprContext ctx{"the default of parameter '" + p.id.name + "'"};
+            if (!exprs_.scalar(*p.value, ctx)) continue;
+            std::string why;
+            auto v = evaluate_constant(*p.value, why);
+            if (!v)
+                diags_.error(Kind::NotConstant, p.value->loc,
+                             "the default of parameter '" + p.id.name +
+                                 "' must be a constant number: it " + why);
+            else
+                model_.params[i].value = *v;
+        }
+        if (file_.gravity) {
+            ExprContext ctx{"gravity"};
+            if (auto v = exprs_.vector(*file_.gravity, ctx)) model_.gravity = *v;
+        } else {
+            model_.gravity = zero_vec(file_.source ? Loc{file_.source, 1, 1} : Loc{});
+        }
+    }
+
+    // ---- bodies and joints ----------------------------------------------------------
+    static ExprContext constant_ctx(std::string what) { return ExprContext{std::move(what)}; }
+
+    ExprContext step_ctx(const std::string& body) const {
+        ExprContext ctx{"a joint step of body '" + body + "'"};
+        ctx.dofs = true;
+        ctx.inputs = true;
+        ctx.input_extra_order = 2;
+        ctx.time = true;
+        return ctx;
+    }
+
+    std::optional<Body> rigid_body(const ast::RigidBody& rb) {
+        Body b;
+        b.name = rb.name;
+        b.kind = Body::Kind::rigid;
+        b.loc = rb.loc;
+        b.com = zero_vec(rb.loc);
+        for (auto& e : b.inertia) e = number("0", rb.loc);
+        bool has_mass = false;
+        std::set<std::string> seen;
+        for (const auto& prop : rb.properties) {
+            if (!seen.insert(prop.key).second) {
+                diags_.error(Kind::DuplicateName, prop.loc,
+                             "property '" + prop.key + "' is given twice");
+                continue;
+            }
+            if (prop.value.kind != ast::Value::Kind::expr) {
+                diags_.error(Kind::InvalidValue, prop.value.loc,
+                             "property '" + prop.key + "' of a rigid body takes an expression");
+                continue;
+            }
+            const Expr& v = prop.value.expr;
+            std::string what = "the " + prop.key + " of body '" + rb.name + "'";
+            if (prop.key == "mass") {
+                has_mass = exprs_.scalar(v, constant_ctx(what));
+                if (has_mass) b.mass = v;
+            } else if (prop.key == "com") {
+                if (auto c = exprs_.vector(v, constant_ctx(what))) b.com = *c;
+            } else if (prop.key == "inertia") {
+                if (v.kind != Expr::Kind::vector || (v.args.size() != 3 && v.args.size() != 6)) {
+                    diags_.error(Kind::InvalidValue, v.loc,
+                                 "inertia takes 3 entries (Jxx, Jyy, Jzz) or 6 (Ixx, Iyy, Izz, "
+                                 "Ixy, Iyz, Ixz)");
+                    continue;
+                }
+                bool ok = true;
+                for (const Expr& a : v.args) ok = exprs_.scalar(a, constant_ctx(what)) && ok;
+                if (!ok) continue;
+                for (std::size_t i = 0; i < v.args.size(); ++i) b.inertia[i] = v.args[i];
+            } else {
+                diags_.error(Kind::UnknownProperty, prop.loc,
+                             "rigid bodies have no property '" + prop.key + "'" +
+                                 diag::did_you_mean(prop.key, {"mass", "com", "inertia"}));
+            }
+        }
+        if (!has_mass && !seen.count("mass")) {
+            diags_.error(Kind::MissingProperty, rb.loc,
+                         "rigid body '" + rb.name + "' has no mass (add `mass = ...`)");
+        }
+        if (!has_mass) return std::nullopt;
+        return b;
+    }
+
+    bool axis_of(const ast::Axis& axis, Step& step, const std::string& body) {
+        if (axis.vector) {
+            auto v =
+                exprs_.vector(*axis.vector, constant_ctx("the axis of a joint of '" + body + "'"));
+            if (!v) return false;
+            std::string why;
+            double n2 = 0;
+            bool constant = true;
+            for (const Expr& c : *v) {
+                auto x = evaluate_constant(c, why);
+                if (!x)
+                    constant = false;
+                else
+                    n2 += *x * *x;
+            }
+            if (constant && n2 == 0.0) {
+                diags_.error(Kind::InvalidValue, axis.vector->loc, "a joint axis cannot be zero");
+                return false;
+            }
+            step.vector = *v;
+            step.axis_index = -1;
+            return true;
+        }
+        if (axis.index < 0 || axis.index > 2) {
+            diags_.error(Kind::InvalidValue, axis.loc, "unknown axis");
+            return false;
+        }
+        step.axis_index = axis.index;
+        step.axis_sign = axis.sign;
+        step.vector = zero_vec(axis.loc);
+        step.vector[static_cast<std::size_t>(axis.index)] =
+            number(axis.sign > 0 ? "1" : "-1", axis.loc);
+        return true;
+    }
+
+    void joint_steps(const ast::Joint& j, Body& b) {
+        for (const auto& s : j.steps) {
+            switch (s.kind) {
+            case ast::JointStep::Kind::at: {
+                Step st;
+                st.kind = Step::Kind::offset;
+                st.loc = s.loc;
+                if (auto v =
+                        exprs_.vector(s.vector, constant_ctx("an `at` offset of the joint of '" +
+                                                             b.name + "'"))) {
+                    st.vector = *v;
+                    b.steps.push_back(st);
+                }
+                break;
+            }
+            case ast::JointStep::Kind::translate:
+            case ast::JointStep::Kind::rotate: {
+                Step st;
+                st.kind = s.kind == ast::JointStep::Kind::rotate ? Step::Kind::rotate
+                                                                 : Step::Kind::translate;
+                st.loc = s.loc;
+                bool ok = axis_of(s.axis, st, b.name);
+                ok = exprs_.scalar(s.arg, step_ctx(b.name)) && ok;
+                if (!ok) break;
+                st.arg = s.arg;
+                b.steps.push_back(st);
+                break;
+            }
+            case ast::JointStep::Kind::free: {
+                if (s.dofs.size() != 6) {
+                    diags_.error(Kind::InvalidValue, s.loc,
+                                 "free takes six DOFs: three translations and three rotations "
+                                 "(x, y, z order), not " +
+                                     std::to_string(s.dofs.size()));
+                    break;
+                }
+                for (std::size_t i = 0; i < 6; ++i) {
+                    const auto& entry = s.dofs[i];
+                    auto it = names_.find(entry.dof);
+                    if (it == names_.end() || it->second.kind != NameKind::dof) {
+                        std::vector<std::string> dofs;
+                        for (const auto& d : model_.dofs) dofs.push_back(d.name);
+                        diags_.error(it == names_.end() ? Kind::UnknownName : Kind::WrongKind,
+                                     entry.loc,
+                                     "free needs DOFs, '" + entry.dof + "' is " +
+                                         (it == names_.end() ? "not declared" : "not a DOF") +
+                                         diag::did_you_mean(entry.dof, dofs));
+                        continue;
+                    }
+                    Step st;
+                    st.kind = i < 3 ? Step::Kind::translate : Step::Kind::rotate;
+                    st.loc = entry.loc;
+                    ast::Axis axis;
+                    axis.index = static_cast<int>(i % 3);
+                    axis.loc = entry.loc;
+                    axis_of(axis, st, b.name);
+                    Expr arg;
+                    arg.kind = Expr::Kind::name;
+                    arg.text = entry.dof;
+                    arg.loc = entry.loc;
+                    st.arg = arg;
+                    b.steps.push_back(st);
+                }
+                break;
+            }
+            case ast::JointStep::Kind::option:
+                if (s.option.key == "elastic_rotation") {
+                    diags_.error(Kind::NotSupported, s.loc,
+                                 "elastic_rotation applies to joints on flexible bodies, which are "
+                                 "not supported yet");
+                } else {
+                    diags_.error(Kind::UnknownProperty, s.loc,
+                                 "joints have no option '" + s.option.key + "'" +
+                                     diag::did_you_mean(s.option.key, {"elastic_rotation"}));
+                }
+                break;
+            }
+        }
+    }
+
+    void build_bodies() {
+        // Bodies in declaration order; flexible ones are reported as unsupported.
+        std::vector<std::optional<Body>> declared;
+        std::vector<std::string> body_names;
+        for (const auto& rb : file_.rigid_bodies) {
+            declared.push_back(rigid_body(rb));
+            body_names.push_back(rb.name);
+        }
+        for (const auto& fb : file_.flexible_bodies) {
+            diags_.error(Kind::NotSupported, fb.loc,
+                         "flexible body '" + fb.name + "': flexible bodies are not supported yet");
+            declared.push_back(std::nullopt);
+            body_names.push_back(fb.name);
+        }
+        auto index_of = [&](const std::string& name) {
+            auto it = std::find(body_names.begin(), body_names.end(), name);
+            return it == body_names.end() ? -1 : static_cast<int>(it - body_names.begin());
+        };
+        std::vector<int> parent(declared.size(), -2); // -2: no joint yet
+        std::vector<const ast::Joint*> joint_of(declared.size(), nullptr);
+        for (const auto& j : file_.joints) {
+            int child = index_of(j.child);
+            if (j.child == "ground") {
+                diags_.error(Kind::BodyTree, j.child_loc, "ground cannot be the child of a joint");
+                continue;
+            }
+            if (child < 0) {
+                diags_.error(Kind::UnknownName, j.child_loc,
+                             "unknown body '" + j.child + "'" +
+                                 diag::did_you_mean(j.child, body_names));
+                continue;
+            }
+            int par = -1;
+            if (j.parent.body != "ground") {
+                par = index_of(j.parent.body);
+                if (par < 0) {
+                    auto names = body_names;
+                    names.push_back("ground");
+                    diags_.error(Kind::UnknownName, j.parent.loc,
+                                 "unknown body '" + j.parent.body + "'" +
+                                     diag::did_you_mean(j.parent.body, names));
+                    continue;
+                }
+            } else if (j.parent.kind != ast::PointRef::Kind::origin) {
+                diags_.error(Kind::InvalidValue, j.parent.loc, "ground has no tip or nodes");
+                continue;
+            }
+            if (j.parent.kind != ast::PointRef::Kind::origin && par >= 0) {
+                bool flexible = static_cast<std::size_t>(par) >= file_.rigid_bodies.size();
+                diags_.error(flexible ? Kind::NotSupported : Kind::InvalidValue, j.parent.loc,
+                             flexible
+                                 ? "joints on nodes of flexible bodies are not supported yet"
+                                 : "rigid body '" + j.parent.body +
+                                       "' has no tip or nodes (they belong to flexible bodies)");
+                continue;
+            }
+            if (par == child) {
+                diags_.error(Kind::BodyTree, j.loc, "body '" + j.child + "' is joined to itself");
+                continue;
+            }
+            if (joint_of[static_cast<std::size_t>(child)]) {
+                diags_.error(Kind::BodyTree, j.loc,
+                             "body '" + j.child +
+                                 "' already has a joint: a body hangs from exactly one parent");
+                diags_.note(joint_of[static_cast<std::size_t>(child)]->loc,
+                            "the first joint is here");
+                continue;
+            }
+            joint_of[static_cast<std::size_t>(child)] = &j;
+            parent[static_cast<std::size_t>(child)] = par;
+        }
+        for (std::size_t i = 0; i < declared.size(); ++i) {
+            if (!joint_of[i]) {
+                const Loc& loc = i < file_.rigid_bodies.size()
+                                     ? file_.rigid_bodies[i].loc
+                                     : file_.flexible_bodies[i - file_.rigid_bodies.size()].loc;
+                diags_.error(Kind::BodyTree, loc,
+                             "body '" + body_names[i] + "' has no joint (add `joint PARENT -> " +
+                                 body_names[i] + "`)");
+            }
+        }
+        // Order parents before children; bodies on a cycle never reach ground.
+        std::vector<int> order;
+        std::vector<int> state(declared.size(), 0); // 0 new, 1 visiting, 2 done, 3 cyclic
+        std::function<bool(int)> visit = [&](int i) -> bool {
+            auto ui = static_cast<std::size_t>(i);
+            if (state[ui] == 2) return true;
+            if (state[ui] == 1 || state[ui] == 3) return false;
+            state[ui] = 1;
+            bool ok = parent[ui] < 0 || visit(parent[ui]);
+            state[ui] = ok ? 2 : 3;
+            if (ok) order.push_back(i);
+            return ok;
+        };
+        for (std::size_t i = 0; i < declared.size(); ++i) {
+            if (!joint_of[i]) continue;
+            if (!visit(static_cast<int>(i)) && state[i] == 3 && parent[i] >= -1) {
+                diags_.error(Kind::BodyTree, joint_of[i]->loc,
+                             "body '" + body_names[i] +
+                                 "' is on a cycle of joints that never reaches ground");
+                state[i] = 4;
+            }
+        }
+        std::vector<int> new_index(declared.size(), -1);
+        for (int i : order) {
+            auto ui = static_cast<std::size_t>(i);
+            if (!declared[ui]) continue;
+            int par = parent[ui];
+            if (par >= 0 && new_index[static_cast<std::size_t>(par)] < 0) continue;
+            Body b = *declared[ui];
+            b.parent = par < 0 ? -1 : new_index[static_cast<std::size_t>(par)];
+            joint_steps(*joint_of[ui], b);
+            new_index[ui] = static_cast<int>(model_.bodies.size());
+            model_.bodies.push_back(std::move(b));
+        }
+        for (const auto& p : file_.points) {
+            Point pt;
+            pt.name = p.id.name;
+            pt.loc = p.id.loc;
+            pt.body = body_ref(p.body, p.body_loc, "a point");
+            if (auto v =
+                    exprs_.vector(p.at, constant_ctx("the position of point '" + p.id.name + "'")))
+                pt.at = *v;
+            model_.points.push_back(pt);
+        }
+    }
+
+    /// Index of a body named in a load/point (-1 for ground when allowed, -2 on error).
+    int body_ref(const std::string& name, const Loc& loc, const std::string& what,
+                 bool ground_ok = false) {
+        if (name == "ground") {
+            if (ground_ok) return -1;
+            diags_.error(Kind::InvalidValue, loc, what + " cannot be on ground");
+            return -2;
+        }
+        int i = model_.body_index(name);
+        if (i >= 0) return i;
+        auto it = names_.find(name);
+        if (it != names_.end() && it->second.kind == NameKind::body) return -2; // reported already
+        std::vector<std::string> bodies;
+        for (const auto& b : file_.rigid_bodies) bodies.push_back(b.name);
+        if (ground_ok) bodies.push_back("ground");
+        diags_.error(Kind::UnknownName, loc,
+                     "unknown body '" + name + "'" + diag::did_you_mean(name, bodies));
+        return -2;
+    }
+
+    int frame_ref(const std::optional<ast::Named>& frame, int default_frame) {
+        if (!frame) return default_frame;
+        return body_ref(frame->name, frame->loc, "a frame", true);
+    }
+
+    // ---- loads and outputs ------------------------------------------------------------
+    ExprContext load_ctx(std::string what) const {
+        ExprContext ctx{std::move(what)};
+        ctx.dofs = true;
+        ctx.dof_primes = 2;
+        ctx.inputs = true;
+        ctx.time = true;
+        return ctx;
+    }
+
+    int dof_ref(const ast::Named& d, const std::string& what) {
+        auto it = names_.find(d.name);
+        if (it == names_.end() || it->second.kind != NameKind::dof) {
+            std::vector<std::string> dofs;
+            for (const auto& x : model_.dofs) dofs.push_back(x.name);
+            diags_.error(it == names_.end() ? Kind::UnknownName : Kind::WrongKind, d.loc,
+                         what + " needs a DOF, '" + d.name + "' is " +
+                             (it == names_.end() ? "not declared" : "not a DOF") +
+                             diag::did_you_mean(d.name, dofs));
+            return -1;
+        }
+        return it->second.index;
+    }
+
+    void check_loads() {
+        for (const auto& f : file_.forces) {
+            Force out;
+            out.loc = f.loc;
+            out.body = body_ref(f.body, f.body_loc, "a force");
+            out.frame = frame_ref(f.frame, out.body);
+            out.at = zero_vec(f.loc);
+            if (f.at) {
+                if (auto v =
+                        exprs_.vector(*f.at, constant_ctx("the point of application of a force")))
+                    out.at = *v;
+            }
+            auto v = exprs_.vector(f.value, load_ctx("a force"));
+            if (out.body >= 0 && out.frame >= -1 && v) {
+                out.value = *v;
+                model_.forces.push_back(out);
+            }
+        }
+        for (const auto& tq : file_.torques) {
+            Torque out;
+            out.loc = tq.loc;
+            out.body = body_ref(tq.body, tq.body_loc, "a torque");
+            out.frame = frame_ref(tq.frame, out.body);
+            auto v = exprs_.vector(tq.value, load_ctx("a torque"));
+            if (out.body >= 0 && out.frame >= -1 && v) {
+                out.value = *v;
+                model_.torques.push_back(out);
+            }
+        }
+        for (const auto& s : file_.springs) {
+            Spring out;
+            out.loc = s.loc;
+            out.dof = dof_ref(s.dof, "a spring");
+            ExprContext ctx = load_ctx("a spring coefficient");
+            ctx.dofs = false;
+            bool ok = out.dof >= 0;
+            if (s.stiffness) ok = exprs_.scalar(*s.stiffness, ctx) && ok;
+            if (s.damping) ok = exprs_.scalar(*s.damping, ctx) && ok;
+            out.stiffness = s.stiffness;
+            out.damping = s.damping;
+            if (ok) model_.springs.push_back(out);
+        }
+        for (const auto& g : file_.genforces) {
+            GenForce out;
+            out.loc = g.loc;
+            out.dof = dof_ref(g.dof, "genforce");
+            bool ok = exprs_.scalar(g.value, load_ctx("a generalized force")) && out.dof >= 0;
+            out.value = g.value;
+            if (ok) model_.genforces.push_back(out);
+        }
+    }
+
+    void check_outputs() {
+        std::set<std::string> seen;
+        for (const auto& o : file_.outputs) {
+            Output out;
+            out.name = o.id.name;
+            out.doc = o.id.doc;
+            out.loc = o.id.loc;
+            std::string why = reserved_reason(o.id.name);
+            if (!why.empty())
+                diags_.error(Kind::ReservedName, o.id.loc, "'" + o.id.name + "' " + why);
+            if (!seen.insert(o.id.name).second)
+                diags_.error(Kind::DuplicateName, o.id.loc,
+                             "output '" + o.id.name + "' is already declared");
+            ExprContext ctx{"output '" + o.id.name + "'"};
+            ctx.dofs = true;
+            ctx.dof_primes = 1;
+            ctx.inputs = true;
+            ctx.time = true;
+            ctx.kinematics = true;
+            out.frame = frame_ref(o.frame, -1);
+            bool ok = exprs_.scalar(o.value, ctx) && out.frame >= -1;
+            out.value = o.value;
+            if (ok) model_.outputs.push_back(out);
+        }
+    }
+
+    // Every DOF must drive exactly one joint step (flexible modes come later).
+    void check_dof_usage() {
+        std::vector<std::vector<Loc>> uses(model_.dofs.size());
+        for (const auto& b : model_.bodies) {
+            for (const auto& s : b.steps) {
+                if (s.kind == Step::Kind::offset) continue;
+                std::vector<const Expr*> names;
+                collect_names(s.arg, names);
+                std::set<int> in_step;
+                for (const Expr* n : names) {
+                    auto it = names_.find(n->text);
+                    if (it != names_.end() && it->second.kind == NameKind::dof &&
+                        in_step.insert(it->second.index).second)
+                        uses[static_cast<std::size_t>(it->second.index)].push_back(n->loc);
+                }
+            }
+        }
+        if (diags_.has_errors()) return; // bodies may be missing: usage would mislead
+        for (std::size_t i = 0; i < model_.dofs.size(); ++i) {
+            const Dof& d = model_.dofs[i];
+            if (uses[i].empty()) {
+                diags_.error(Kind::DofUsage, d.loc,
+                             "DOF '" + d.name +
+                                 "' moves nothing: use it in a joint step "
+                                 "(rotate/translate/free)");
+            } else if (uses[i].size() > 1) {
+                diags_.error(Kind::DofUsage, uses[i][1],
+                             "DOF '" + d.name +
+                                 "' is used by two joint steps; each DOF drives one");
+                diags_.note(uses[i][0], "first used here");
+            }
+        }
+    }
+
+    void report_unsupported() {
+        for (const auto& a : file_.approximations)
+            diags_.error(Kind::NotSupported, a.loc,
+                         "approx: small-angle approximations are not supported yet");
+        if (file_.linearize)
+            diags_.error(Kind::NotSupported, file_.linearize->loc,
+                         "linearize: symbolic linearization is not supported yet (use `yamsc lin "
+                         "--at ...` for a numeric one)");
+    }
+
+    const ast::ModelFile& file_;
+    diag::Diagnostics& diags_;
+    Model model_;
+    SymbolTable names_;
+    ExprChecker exprs_;
+};
+
+} // namespace
+
+std::optional<Model> check(const ast::ModelFile& file, diag::Diagnostics& diags) {
+    return Checker(file, diags).run();
+}
+
+} // namespace yamsc::model

@@ -1,0 +1,12 @@
+#pragma once
+// The checker: AST -> checked model. Resolves every name, builds the body tree,
+// validates every expression against what may appear where, and reports all
+// errors it finds (never stops at the first one).
+#include "model/model.hpp"
+
+namespace yamsc::model {
+
+/// Returns the checked model, or nullopt when an error was reported.
+std::optional<Model> check(const ast::ModelFile& file, diag::Diagnostics& diags);
+
+} // namespace yamsc::model

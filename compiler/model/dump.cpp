@@ -1,0 +1,74 @@
+#include "model/model.hpp"
+
+#include <sstream>
+
+namespace yamsc::model {
+
+namespace {
+
+std::string vec(const Vec& v) {
+    return "(" + ast::to_string(v[0]) + ", " + ast::to_string(v[1]) + ", " + ast::to_string(v[2]) +
+           ")";
+}
+
+std::string frame_name(const Model& m, int frame) {
+    return frame < 0 ? "ground" : m.bodies[static_cast<std::size_t>(frame)].name;
+}
+
+} // namespace
+
+std::string dump(const Model& m) {
+    std::ostringstream out;
+    out << "model " << m.name << "\n";
+    for (const auto& p : m.params) {
+        out << "  param " << p.name;
+        if (p.value) out << " = " << *p.value;
+        out << "\n";
+    }
+    for (const auto& i : m.inputs) out << "  input " << i.name << " order " << i.order << "\n";
+    for (std::size_t i = 0; i < m.dofs.size(); ++i)
+        out << "  dof " << i << " " << m.dofs[i].name << "\n";
+    out << "  gravity " << vec(m.gravity) << "\n";
+    for (const auto& b : m.bodies) {
+        out << "  body " << b.name << " <- " << frame_name(m, b.parent) << "\n";
+        out << "    mass " << ast::to_string(b.mass) << " com " << vec(b.com) << " inertia (";
+        for (std::size_t i = 0; i < 6; ++i) out << (i ? ", " : "") << ast::to_string(b.inertia[i]);
+        out << ")\n";
+        for (const auto& s : b.steps) {
+            switch (s.kind) {
+            case Step::Kind::offset:
+                out << "    at " << vec(s.vector) << "\n";
+                break;
+            case Step::Kind::translate:
+            case Step::Kind::rotate:
+                out << "    " << (s.kind == Step::Kind::rotate ? "rotate " : "translate ")
+                    << vec(s.vector) << " " << ast::to_string(s.arg) << "\n";
+                break;
+            }
+        }
+    }
+    for (const auto& p : m.points)
+        out << "  point " << p.name << " on " << frame_name(m, p.body) << " at " << vec(p.at)
+            << "\n";
+    for (const auto& f : m.forces)
+        out << "  force on " << frame_name(m, f.body) << " at " << vec(f.at) << " in "
+            << frame_name(m, f.frame) << " = " << vec(f.value) << "\n";
+    for (const auto& t : m.torques)
+        out << "  torque on " << frame_name(m, t.body) << " in " << frame_name(m, t.frame) << " = "
+            << vec(t.value) << "\n";
+    for (const auto& s : m.springs) {
+        out << "  spring " << m.dofs[static_cast<std::size_t>(s.dof)].name;
+        if (s.stiffness) out << " stiffness " << ast::to_string(*s.stiffness);
+        if (s.damping) out << " damping " << ast::to_string(*s.damping);
+        out << "\n";
+    }
+    for (const auto& g : m.genforces)
+        out << "  genforce " << m.dofs[static_cast<std::size_t>(g.dof)].name << " = "
+            << ast::to_string(g.value) << "\n";
+    for (const auto& o : m.outputs)
+        out << "  output " << o.name << " = " << ast::to_string(o.value) << " in "
+            << frame_name(m, o.frame) << "\n";
+    return out.str();
+}
+
+} // namespace yamsc::model

@@ -1,0 +1,127 @@
+#pragma once
+// The checked model: every name resolved, the body tree built and ordered
+// (parents before children), joints reduced to elementary steps, loads attached
+// to bodies. Expressions are still ast::Expr, but every name in them is known to
+// be declared and allowed where it stands (see checker.hpp). Plain data.
+#include "ast/ast.hpp"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace yamsc::model {
+
+using ast::Expr;
+using Loc = diag::Location;
+using Vec = std::array<Expr, 3>;
+
+/// What a name denotes.
+enum class NameKind { param, input, dof, body, point, time };
+
+struct Param {
+    std::string name, doc;
+    std::optional<double> value; // default, evaluated
+    Loc loc;
+};
+
+struct Input {
+    std::string name, doc;
+    int order = 0; // derivatives u', u'' ... that are inputs too
+    Loc loc;
+};
+
+struct Dof {
+    std::string name, doc;
+    Loc loc;
+};
+
+/// One elementary motion of a joint, applied in the current (moving) frame.
+struct Step {
+    enum class Kind { offset, translate, rotate };
+    Kind kind = Kind::offset;
+    Vec vector;          // offset: the displacement; translate/rotate: the axis (not normalised)
+    int axis_index = -1; // 0..2 when the axis is a signed coordinate axis, else -1
+    int axis_sign = 1;
+    Expr arg; // translate/rotate: distance or angle, a function of q, u, t, p
+    Loc loc;
+};
+
+struct Body {
+    enum class Kind { rigid, flexible };
+    std::string name;
+    Kind kind = Kind::rigid;
+    int parent = -1;         // index into Model::bodies, -1 for ground
+    std::vector<Step> steps; // from the parent's origin to this body's frame
+    Expr mass;
+    Vec com;                     // centre of mass in body axes
+    std::array<Expr, 6> inertia; // about the COM: Ixx, Iyy, Izz, Ixy, Iyz, Ixz (tensor entries)
+    Loc loc;
+};
+
+/// A point fixed in a body.
+struct Point {
+    std::string name;
+    int body = -1;
+    Vec at;
+    Loc loc;
+};
+
+/// A force on a body at a point (body axes), components in a frame (-1: ground).
+struct Force {
+    int body = -1;
+    Vec at;
+    int frame = -1;
+    Vec value;
+    Loc loc;
+};
+
+struct Torque {
+    int body = -1;
+    int frame = -1;
+    Vec value;
+    Loc loc;
+};
+
+struct Spring {
+    int dof = -1;
+    std::optional<Expr> stiffness, damping;
+    Loc loc;
+};
+
+struct GenForce {
+    int dof = -1;
+    Expr value;
+    Loc loc;
+};
+
+struct Output {
+    std::string name, doc;
+    Expr value;     // scalar; may use position(), velocity(), angular_velocity() of bodies/points
+    int frame = -1; // frame of kinematic vectors (-1: ground)
+    Loc loc;
+};
+
+struct Model {
+    std::string name, title;
+    std::shared_ptr<const diag::SourceFile> source;
+    std::vector<Param> params;
+    std::vector<Input> inputs;
+    std::vector<Dof> dofs;
+    Vec gravity;              // ground axes; zeros if none
+    std::vector<Body> bodies; // topological order: parent index < own index
+    std::vector<Point> points;
+    std::vector<Force> forces;
+    std::vector<Torque> torques;
+    std::vector<Spring> springs;
+    std::vector<GenForce> genforces;
+    std::vector<Output> outputs;
+
+    int body_index(const std::string& name) const;
+    int point_index(const std::string& name) const;
+};
+
+/// A readable dump, for `yamsc --dump=model`.
+std::string dump(const Model& model);
+
+} // namespace yamsc::model

@@ -1,0 +1,253 @@
+#include "symbolic/derive.hpp"
+
+#include "symbolic/kinematics.hpp"
+
+namespace yamsc::symbolic {
+
+using namespace GiNaC;
+
+namespace {
+
+/// Inertia tensor about the COM, body axes, from (Ixx, Iyy, Izz, Ixy, Iyz, Ixz).
+Mat3 inertia_tensor(const model::Body& b, const Symbols& s) {
+    std::array<ex, 6> I;
+    for (std::size_t i = 0; i < 6; ++i) I[i] = to_ginac(b.inertia[i], s);
+    Mat3 J;
+    J.m = {{{I[0], I[3], I[5]}, {I[3], I[1], I[4]}, {I[5], I[4], I[2]}}};
+    return J;
+}
+
+/// Components in `frame`'s axes of a vector whose components are in `from`'s axes
+/// (-1 is ground).
+Vec3 change_axes(const Vec3& v, int from, int to, const std::vector<FrameState>& frames) {
+    if (from == to) return v;
+    Vec3 g = from < 0 ? v : frames[static_cast<std::size_t>(from)].R * v;
+    return to < 0 ? g : transpose_times(frames[static_cast<std::size_t>(to)].R, g);
+}
+
+/// Resultant force and moment about the body origin, body axes.
+struct Wrench {
+    Vec3 force, moment;
+};
+
+class Kane {
+public:
+    Kane(const model::Model& m, diag::Diagnostics& diags) : m_(m), diags_(diags), sym_(m) {}
+
+    std::optional<Equations> run() {
+        frames_ = body_frames(m_, sym_);
+        const std::size_t nq = m_.dofs.size();
+        eq_.M.assign(nq, Row(nq, 0));
+        std::vector<exvector> F_terms(nq);
+        std::vector<exvector> load_terms(nq); // may contain q'': moved into M below
+
+        Vec3 g = to_ginac(m_.gravity, sym_);
+        std::vector<Wrench> applied = applied_wrenches();
+        for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
+            const model::Body& body = m_.bodies[b];
+            const FrameState& f = frames_[b];
+            ex mass = to_ginac(body.mass, sym_);
+            Vec3 c = to_ginac(body.com, sym_);
+            Mat3 J = inertia_tensor(body, sym_);
+
+            // Partial velocities of the COM (eq. 8).
+            std::map<int, Vec3> JvG;
+            for (const auto& [r, jv] : f.Jv) JvG[r] = jv;
+            for (const auto& [r, jw] : f.Jw) {
+                auto it = JvG.find(r);
+                Vec3 add = cross(jw, c);
+                if (it == JvG.end())
+                    JvG.emplace(r, add);
+                else
+                    it->second = it->second + add;
+            }
+            // Mass matrix: Σ m JvG_r·JvG_s + Jω_r·(J Jω_s), upper triangle mirrored.
+            for (auto it_r = JvG.begin(); it_r != JvG.end(); ++it_r) {
+                for (auto it_s = it_r; it_s != JvG.end(); ++it_s) {
+                    auto r = static_cast<std::size_t>(it_r->first);
+                    auto s = static_cast<std::size_t>(it_s->first);
+                    ex term = mass * dot(it_r->second, it_s->second);
+                    auto wr = f.Jw.find(it_r->first), ws = f.Jw.find(it_s->first);
+                    if (wr != f.Jw.end() && ws != f.Jw.end())
+                        term += dot(wr->second, J * ws->second);
+                    eq_.M[r][s] += term;
+                }
+            }
+            // Inertial force at the COM and torque (eq. 6), plus gravity, as a wrench
+            // about the origin; f_r* + f_r = Jv_r·F + Jω_r·T (eq. 7, 9).
+            Vec3 aG = f.a + cross(f.alpha, c) + cross(f.w, cross(f.w, c));
+            Vec3 g_local = transpose_times(f.R, g);
+            Vec3 force = mass * g_local - mass * aG;
+            Vec3 torque = -(J * f.alpha) - cross(f.w, J * f.w);
+            Vec3 moment = cross(c, force) + torque;
+            for (const auto& [r, jv] : f.Jv)
+                F_terms[static_cast<std::size_t>(r)].push_back(dot(jv, force));
+            for (const auto& [r, jw] : f.Jw)
+                F_terms[static_cast<std::size_t>(r)].push_back(dot(jw, moment));
+            // Applied loads.
+            const Wrench& w = applied[b];
+            for (const auto& [r, jv] : f.Jv)
+                load_terms[static_cast<std::size_t>(r)].push_back(dot(jv, w.force));
+            for (const auto& [r, jw] : f.Jw)
+                load_terms[static_cast<std::size_t>(r)].push_back(dot(jw, w.moment));
+        }
+        for (std::size_t r = 0; r < nq; ++r)
+            for (std::size_t s = 0; s < r; ++s) eq_.M[r][s] = eq_.M[s][r];
+        generalized_loads(load_terms);
+        if (!move_accelerations_into_mass(load_terms)) return std::nullopt;
+        eq_.F.resize(nq);
+        for (std::size_t r = 0; r < nq; ++r) {
+            exvector all = F_terms[r];
+            all.insert(all.end(), load_terms[r].begin(), load_terms[r].end());
+            eq_.F[r] = all.empty() ? ex(0) : ex(add(all));
+        }
+        outputs();
+        eq_.model_name = m_.name;
+        eq_.title = m_.title;
+        eq_.t = sym_.t();
+        eq_.dofs = sym_.dofs();
+        eq_.inputs = sym_.inputs();
+        eq_.params = sym_.params();
+        return std::move(eq_);
+    }
+
+private:
+    std::vector<Wrench> applied_wrenches() {
+        std::vector<Wrench> w(m_.bodies.size());
+        for (const auto& f : m_.forces) {
+            auto b = static_cast<std::size_t>(f.body);
+            Vec3 value = change_axes(to_ginac(f.value, sym_), f.frame, f.body, frames_);
+            Vec3 at = to_ginac(f.at, sym_);
+            w[b].force = w[b].force + value;
+            w[b].moment = w[b].moment + cross(at, value);
+        }
+        for (const auto& t : m_.torques) {
+            auto b = static_cast<std::size_t>(t.body);
+            w[b].moment =
+                w[b].moment + change_axes(to_ginac(t.value, sym_), t.frame, t.body, frames_);
+        }
+        return w;
+    }
+
+    void generalized_loads(std::vector<exvector>& load_terms) {
+        const auto& dofs = sym_.dofs();
+        for (const auto& s : m_.springs) {
+            auto r = static_cast<std::size_t>(s.dof);
+            if (s.stiffness) load_terms[r].push_back(-to_ginac(*s.stiffness, sym_) * dofs[r].q);
+            if (s.damping) load_terms[r].push_back(-to_ginac(*s.damping, sym_) * dofs[r].qd);
+        }
+        for (const auto& g : m_.genforces)
+            load_terms[static_cast<std::size_t>(g.dof)].push_back(to_ginac(g.value, sym_));
+    }
+
+    /// Loads may use q'' (e.g. added mass): their q'' part belongs to M. They must be
+    /// linear in q''.
+    bool move_accelerations_into_mass(std::vector<exvector>& load_terms) {
+        const auto& dofs = sym_.dofs();
+        std::vector<symbol> qdd;
+        for (const auto& d : dofs) qdd.push_back(d.qdd);
+        DependsOn uses_qdd(qdd);
+        exmap zero;
+        for (const auto& d : dofs) zero[d.qdd] = 0;
+        Substituter drop_qdd(zero);
+        bool ok = true;
+        for (std::size_t r = 0; r < load_terms.size(); ++r) {
+            ex G = load_terms[r].empty() ? ex(0) : ex(add(load_terms[r]));
+            if (!uses_qdd(G)) continue;
+            for (std::size_t s = 0; s < dofs.size(); ++s) {
+                ex coeff = sym_.diff(G, dofs[s].qdd);
+                if (coeff.is_zero()) continue;
+                if (uses_qdd(coeff)) {
+                    diags_.error(diag::Kind::InvalidValue, m_.dofs[r].loc,
+                                 "the loads on DOF '" + m_.dofs[r].name +
+                                     "' are nonlinear in accelerations (q'')");
+                    ok = false;
+                    continue;
+                }
+                eq_.M[r][s] -= coeff;
+            }
+            load_terms[r] = {drop_qdd(G)};
+        }
+        return ok;
+    }
+
+    // ---- outputs ------------------------------------------------------------------------
+    Vec3 kinematic(const std::string& fn, const std::string& target, int frame) {
+        Vec3 r, v, w;
+        int body = m_.body_index(target);
+        if (target == "ground") {
+            // All zeros: ground does not move.
+        } else if (body >= 0) {
+            const FrameState& f = frames_[static_cast<std::size_t>(body)];
+            r = f.r;
+            v = f.R * f.v;
+            w = f.R * f.w;
+        } else {
+            const model::Point& p = m_.points[static_cast<std::size_t>(m_.point_index(target))];
+            const FrameState& f = frames_[static_cast<std::size_t>(p.body)];
+            Vec3 at = to_ginac(p.at, sym_);
+            r = f.r + f.R * at;
+            v = f.R * (f.v + cross(f.w, at));
+        }
+        if (fn == "position") {
+            if (frame >= 0) {
+                const FrameState& k = frames_[static_cast<std::size_t>(frame)];
+                return transpose_times(k.R, r - k.r);
+            }
+            return r;
+        }
+        const Vec3& g = fn == "velocity" ? v : w;
+        return frame >= 0 ? transpose_times(frames_[static_cast<std::size_t>(frame)].R, g) : g;
+    }
+
+    void outputs() {
+        for (const auto& o : m_.outputs) {
+            KinematicsHook hook = [&](const std::string& fn, const std::string& target) {
+                return kinematic(fn, target, o.frame);
+            };
+            eq_.outputs.push_back({o.name, o.doc, to_ginac(o.value, sym_, hook)});
+        }
+    }
+
+    const model::Model& m_;
+    diag::Diagnostics& diags_;
+    Symbols sym_;
+    std::vector<FrameState> frames_;
+    Equations eq_;
+};
+
+} // namespace
+
+std::optional<Equations> derive(const model::Model& m, diag::Diagnostics& diags) {
+    return Kane(m, diags).run();
+}
+
+void derive_jacobians(Equations& eq) {
+    const std::size_t nq = eq.dofs.size(), nu = eq.inputs.size();
+    eq.dF_dq.assign(nq, Row(nq, 0));
+    eq.dF_dqd.assign(nq, Row(nq, 0));
+    eq.dF_du.assign(nq, Row(nu, 0));
+    eq.dMa_dq.assign(nq, Row(nq, 0));
+    eq.a.clear();
+    for (std::size_t s = 0; s < nq; ++s) eq.a.emplace_back("a_" + eq.dofs[s].name);
+    std::vector<ex> Ma(nq);
+    for (std::size_t r = 0; r < nq; ++r) {
+        exvector terms;
+        for (std::size_t s = 0; s < nq; ++s) terms.push_back(eq.M[r][s] * eq.a[s]);
+        Ma[r] = add(terms);
+    }
+    for (std::size_t k = 0; k < nq; ++k) {
+        Differentiator dq(eq.dofs[k].q), dqd(eq.dofs[k].qd);
+        for (std::size_t r = 0; r < nq; ++r) {
+            eq.dF_dq[r][k] = dq(eq.F[r]);
+            eq.dF_dqd[r][k] = dqd(eq.F[r]);
+            eq.dMa_dq[r][k] = dq(Ma[r]);
+        }
+    }
+    for (std::size_t k = 0; k < nu; ++k) {
+        Differentiator du(eq.inputs[k].sym);
+        for (std::size_t r = 0; r < nq; ++r) eq.dF_du[r][k] = du(eq.F[r]);
+    }
+}
+
+} // namespace yamsc::symbolic

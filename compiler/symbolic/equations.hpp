@@ -1,0 +1,76 @@
+#pragma once
+// The symbolic system: M(q) q'' = F(q, q', u, t), its Jacobians and the outputs,
+// as GiNaC expressions over the symbols listed here. Produced by symbolic/ (Kane's
+// method), consumed by codegen/ and by the numeric evaluator.
+//
+// Expressions are DAGs: subexpressions are shared, never expanded. Walk them
+// with the memoised operations of symbolic/dag.hpp, never with GiNaC's own
+// recursive subs/diff/evalf (exponential on shared trees).
+#include <ginac/ginac.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace yamsc::symbolic {
+
+using Row = std::vector<GiNaC::ex>;
+using Matrix = std::vector<Row>; // row-major, rows of equal length
+
+struct Dof {
+    std::string name;
+    std::string doc;
+    GiNaC::symbol q, qd, qdd; // the coordinate, its rate, its acceleration
+};
+
+/// One entry of the input vector u. An input declared `order 2` gives three
+/// channels: `theta_p`, `theta_p'`, `theta_p''`.
+struct InputChannel {
+    std::string name;   // as the user writes it: theta_p''
+    std::string c_name; // identifier for code: theta_p_dd
+    std::string doc;
+    GiNaC::symbol sym;
+};
+
+struct Parameter {
+    std::string name;
+    std::string doc;
+    std::optional<double> value; // the default; none: must be set at run time
+    GiNaC::symbol sym;
+};
+
+struct Output {
+    std::string name;
+    std::string doc;
+    GiNaC::ex value; // function of t, q, q', u, p
+};
+
+struct Equations {
+    std::string model_name;
+    std::string title;
+    std::string source_path;   // as given on the command line
+    std::string source_digest; // hex digest of the model source (and files it read)
+
+    GiNaC::symbol t;
+    std::vector<Dof> dofs;
+    std::vector<InputChannel> inputs;
+    std::vector<Parameter> params;
+    std::vector<Output> outputs;
+
+    Matrix M; // nq x nq, symmetric, depends on q and p (and u, t for prescribed motion)
+    Row F;    // nq
+
+    // Exact Jacobians of F (filled by derive_jacobians in symbolic/jacobians.hpp).
+    Matrix dF_dq, dF_dqd, dF_du; // nq x nq, nq x nq, nq x nu
+    // d(M(q) a)/dq for a vector of symbols `a` (nq x nq): with a = q'' it completes
+    // the Jacobian of the first-order system x' = f(x) = [q', M^-1 F].
+    std::vector<GiNaC::symbol> a;
+    Matrix dMa_dq;
+
+    int nq() const { return static_cast<int>(dofs.size()); }
+    int nu() const { return static_cast<int>(inputs.size()); }
+    int np() const { return static_cast<int>(params.size()); }
+    int ny() const { return static_cast<int>(outputs.size()); }
+};
+
+} // namespace yamsc::symbolic

@@ -1,0 +1,65 @@
+#pragma once
+// How the runtime sees a model: sizes, names, and the generated functions with
+// the parameters already bound. The runtime never parses anything and never
+// depends on a particular model: a view is made either from a generated C++
+// model type at compile time (from_generated) or from a model compiled on the
+// fly into a shared library (load_shared_model in dynamic_model.hpp).
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace yamsc::runtime {
+
+struct ModelView {
+    int nq = 0, nu = 0, ny = 0;
+    std::vector<std::string> dof_names, input_names, output_names;
+
+    // x = [q, q'] (2 nq), xdot = [q', q''].
+    std::function<void(double t, const double* x, const double* u, double* xdot)> rhs;
+    // Row-major 2nq x 2nq Jacobian of rhs with respect to x (exact, generated).
+    std::function<void(double t, const double* x, const double* u, double* J)> rhs_jacobian;
+    // M may depend on t and u when joints follow prescribed motion.
+    std::function<void(double t, const double* q, const double* u, double* M)> mass_matrix;
+    std::function<void(double t, const double* q, const double* qd, const double* u, double* F)>
+        forcing;
+    std::function<void(double t, const double* q, const double* qd, const double* u, double* dF_dq,
+                       double* dF_dqd, double* dF_du)>
+        jacobians;
+    std::function<void(double t, const double* q, const double* qd, const double* u, double* y)>
+        outputs;
+
+    int nx() const { return 2 * nq; }
+};
+
+/// A view of a generated C++ model. `Model` is the `<namespace>::Model` bundle the
+/// C++ emitter writes; the parameters are copied into the view.
+template <class Model> ModelView from_generated(const typename Model::Params& params) {
+    ModelView v;
+    v.nq = Model::nq;
+    v.nu = Model::nu;
+    v.ny = Model::ny;
+    for (int i = 0; i < Model::nq; ++i) v.dof_names.emplace_back(Model::dof_names[i]);
+    for (int i = 0; i < Model::nu; ++i) v.input_names.emplace_back(Model::input_names[i]);
+    for (int i = 0; i < Model::ny; ++i) v.output_names.emplace_back(Model::output_names[i]);
+    const typename Model::Params p = params;
+    v.rhs = [p](double t, const double* x, const double* u, double* xdot) {
+        Model::rhs(t, x, u, p, xdot);
+    };
+    v.rhs_jacobian = [p](double t, const double* x, const double* u, double* J) {
+        Model::rhs_jacobian(t, x, u, p, J);
+    };
+    v.mass_matrix = [p](double t, const double* q, const double* u, double* M) {
+        Model::mass_matrix(t, q, u, p, M);
+    };
+    v.forcing = [p](double t, const double* q, const double* qd, const double* u, double* F) {
+        Model::forcing(t, q, qd, u, p, F);
+    };
+    v.jacobians = [p](double t, const double* q, const double* qd, const double* u, double* a,
+                      double* b, double* c) { Model::jacobians(t, q, qd, u, p, a, b, c); };
+    v.outputs = [p](double t, const double* q, const double* qd, const double* u, double* y) {
+        Model::outputs(t, q, qd, u, p, y);
+    };
+    return v;
+}
+
+} // namespace yamsc::runtime

@@ -1,0 +1,155 @@
+#include "yamsc/dynamic_model.hpp"
+
+#include "yamsc/abi_export.hpp"
+
+#include <dlfcn.h>
+
+#include <cmath>
+
+namespace yamsc::runtime {
+
+// The open library and its resolved entry points. Views share it, so the
+// library is closed only when the last of them is gone.
+struct SharedModel::Library {
+    void* handle = nullptr;
+    yamsc_sizes_fn sizes = nullptr;
+    yamsc_name_fn name = nullptr;
+    yamsc_default_params_fn default_params = nullptr;
+    yamsc_rhs_fn rhs = nullptr;
+    yamsc_rhs_jacobian_fn rhs_jacobian = nullptr;
+    yamsc_mass_matrix_fn mass_matrix = nullptr;
+    yamsc_forcing_fn forcing = nullptr;
+    yamsc_jacobians_fn jacobians = nullptr;
+    yamsc_outputs_fn outputs = nullptr;
+
+    Library() = default;
+    Library(const Library&) = delete;
+    Library& operator=(const Library&) = delete;
+    ~Library() {
+        if (handle) dlclose(handle);
+    }
+};
+
+namespace {
+
+template <class Function>
+Function resolve(void* handle, const char* symbol, const std::string& path) {
+    dlerror(); // clear a stale error
+    void* address = dlsym(handle, symbol);
+    if (!address) {
+        const char* why = dlerror();
+        throw SharedModelError("'" + path + "' is not a yamsc model: symbol " + symbol +
+                               " is missing" + (why ? std::string(" (") + why + ")" : ""));
+    }
+    // POSIX guarantees that object pointers from dlsym convert to function pointers.
+    return reinterpret_cast<Function>(address);
+}
+
+std::vector<std::string> names_of(yamsc_name_fn name, int kind, int count,
+                                  const std::string& path) {
+    std::vector<std::string> names;
+    for (int i = 0; i < count; ++i) {
+        const char* n = name(kind, i);
+        if (!n)
+            throw SharedModelError("'" + path + "' has no name for entry " + std::to_string(i) +
+                                   " of kind " + std::to_string(kind));
+        names.emplace_back(n);
+    }
+    return names;
+}
+
+} // namespace
+
+SharedModel::SharedModel(const std::string& path) : path_(path) {
+    auto library = std::make_shared<Library>();
+    // RTLD_LOCAL: several models export the same symbol names and must not see
+    // each other's.
+    library->handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!library->handle) {
+        const char* why = dlerror();
+        throw SharedModelError("cannot load model library '" + path +
+                               "': " + (why ? why : "unknown error"));
+    }
+    void* h = library->handle;
+    const auto version = resolve<yamsc_abi_version_fn>(h, "yamsc_abi_version", path)();
+    if (version != YAMSC_ABI_VERSION)
+        throw SharedModelError("'" + path + "' was built for model ABI version " +
+                               std::to_string(version) + ", this runtime needs version " +
+                               std::to_string(YAMSC_ABI_VERSION) + "; recompile the model");
+    library->sizes = resolve<yamsc_sizes_fn>(h, "yamsc_sizes", path);
+    library->name = resolve<yamsc_name_fn>(h, "yamsc_name", path);
+    library->default_params = resolve<yamsc_default_params_fn>(h, "yamsc_default_params", path);
+    library->rhs = resolve<yamsc_rhs_fn>(h, "yamsc_rhs", path);
+    library->rhs_jacobian = resolve<yamsc_rhs_jacobian_fn>(h, "yamsc_rhs_jacobian", path);
+    library->mass_matrix = resolve<yamsc_mass_matrix_fn>(h, "yamsc_mass_matrix", path);
+    library->forcing = resolve<yamsc_forcing_fn>(h, "yamsc_forcing", path);
+    library->jacobians = resolve<yamsc_jacobians_fn>(h, "yamsc_jacobians", path);
+    library->outputs = resolve<yamsc_outputs_fn>(h, "yamsc_outputs", path);
+
+    library->sizes(&nq_, &nu_, &np_, &ny_);
+    if (nq_ < 0 || nu_ < 0 || np_ < 0 || ny_ < 0)
+        throw SharedModelError("'" + path + "' reports negative sizes");
+    dof_names_ = names_of(library->name, yamsc_name_dof, nq_, path);
+    input_names_ = names_of(library->name, yamsc_name_input, nu_, path);
+    param_names_ = names_of(library->name, yamsc_name_param, np_, path);
+    output_names_ = names_of(library->name, yamsc_name_output, ny_, path);
+    library_ = std::move(library);
+}
+
+std::vector<double> SharedModel::default_params() const {
+    // One spare slot: a model without parameters may still write nothing to a
+    // non-null pointer.
+    std::vector<double> p(static_cast<std::size_t>(np_) + 1);
+    library_->default_params(p.data());
+    p.pop_back();
+    return p;
+}
+
+int SharedModel::param_index(const std::string& name) const {
+    for (std::size_t i = 0; i < param_names_.size(); ++i)
+        if (param_names_[i] == name) return static_cast<int>(i);
+    return -1;
+}
+
+ModelView SharedModel::view(std::vector<double> params) const {
+    if (params.size() != static_cast<std::size_t>(np_))
+        throw std::invalid_argument("got " + std::to_string(params.size()) +
+                                    " parameter values, the model has " + std::to_string(np_));
+    for (std::size_t i = 0; i < params.size(); ++i)
+        if (std::isnan(params[i]))
+            throw std::invalid_argument("parameter '" + param_names_[i] +
+                                        "' has no value (no default and not set)");
+
+    ModelView v;
+    v.nq = nq_;
+    v.nu = nu_;
+    v.ny = ny_;
+    v.dof_names = dof_names_;
+    v.input_names = input_names_;
+    v.output_names = output_names_;
+    // Each function holds the library and its own copy of the parameters.
+    const auto lib = library_;
+    const auto p = std::make_shared<const std::vector<double>>(std::move(params));
+    v.rhs = [lib, p](double t, const double* x, const double* u, double* xdot) {
+        lib->rhs(t, x, u, p->data(), xdot);
+    };
+    v.rhs_jacobian = [lib, p](double t, const double* x, const double* u, double* J) {
+        lib->rhs_jacobian(t, x, u, p->data(), J);
+    };
+    v.mass_matrix = [lib, p](double t, const double* q, const double* u, double* M) {
+        lib->mass_matrix(t, q, u, p->data(), M);
+    };
+    v.forcing = [lib, p](double t, const double* q, const double* qd, const double* u, double* F) {
+        lib->forcing(t, q, qd, u, p->data(), F);
+    };
+    v.jacobians = [lib, p](double t, const double* q, const double* qd, const double* u,
+                           double* dF_dq, double* dF_dqd, double* dF_du) {
+        lib->jacobians(t, q, qd, u, p->data(), dF_dq, dF_dqd, dF_du);
+    };
+    v.outputs = [lib, p](double t, const double* q, const double* qd, const double* u, double* y) {
+        lib->outputs(t, q, qd, u, p->data(), y);
+    };
+    return v;
+}
+
+} // namespace yamsc::runtime

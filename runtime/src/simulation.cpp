@@ -1,0 +1,110 @@
+#include "yamsc/simulation.hpp"
+
+#include "yamsc/cvode.hpp"
+#include "yamsc/rk4.hpp"
+
+#include <stdexcept>
+
+namespace yamsc::runtime {
+
+std::optional<Method> parse_method(const std::string& name) {
+    if (name == "rk4") return Method::rk4;
+    if (name == "cvode") return Method::cvode;
+    return std::nullopt;
+}
+
+const char* method_name(Method method) {
+    return method == Method::rk4 ? "rk4" : "cvode";
+}
+
+double SimulationResult::value(std::size_t row, std::size_t column) const {
+    if (column == 0) return time[row];
+    const std::size_t state_column = column - 1;
+    if (state_column < static_cast<std::size_t>(nx)) return state_row(row)[state_column];
+    return output_row(row)[state_column - static_cast<std::size_t>(nx)];
+}
+
+std::vector<std::string> column_names(const ModelView& view) {
+    std::vector<std::string> names{"time"};
+    for (int i = 0; i < view.nx(); ++i) names.push_back(state_name(view, i));
+    for (int i = 0; i < view.ny; ++i)
+        names.push_back(static_cast<std::size_t>(i) < view.output_names.size()
+                            ? view.output_names[static_cast<std::size_t>(i)]
+                            : "y" + std::to_string(i));
+    return names;
+}
+
+namespace {
+
+// Throttles progress reports to about one per percent of the run.
+class ProgressReporter {
+public:
+    ProgressReporter(const ProgressCallback& callback, double t_start, double t_end)
+        : callback_(callback), t_start_(t_start), t_end_(t_end),
+          interval_((t_end - t_start) / 100.0), next_(t_start + interval_) {}
+
+    bool report(double t) {
+        if (!callback_) return true;
+        if (t < next_ && t < t_end_) return true;
+        while (next_ <= t) next_ += interval_ > 0.0 ? interval_ : t_end_ - t_start_ + 1.0;
+        return callback_(t, t_end_);
+    }
+
+private:
+    const ProgressCallback& callback_;
+    double t_start_, t_end_, interval_, next_;
+};
+
+void check_view(const ModelView& view) {
+    if (!view.rhs) throw std::invalid_argument("the model view has no right-hand side");
+    if (view.ny > 0 && !view.outputs)
+        throw std::invalid_argument("the model view declares outputs but cannot compute them");
+}
+
+} // namespace
+
+SimulationResult simulate(const ModelView& view, const SimulationOptions& options,
+                          const ProgressCallback& progress) {
+    check_view(view);
+    check_initial_state(view, options.x0);
+    if (!options.u_of_t) check_input_size(view, options.u);
+    const TimeGrid grid(options.t_start, options.t_end, options.dt);
+    const InputFunction inputs = options.u_of_t ? options.u_of_t : constant_input(options.u);
+
+    SimulationResult result;
+    result.columns = column_names(view);
+    result.nx = view.nx();
+    result.ny = view.ny;
+    result.time.reserve(grid.size());
+    result.states.reserve(grid.size() * static_cast<std::size_t>(result.nx));
+    result.outputs.reserve(grid.size() * static_cast<std::size_t>(result.ny));
+
+    const auto nq = static_cast<std::size_t>(view.nq);
+    std::vector<double> u(static_cast<std::size_t>(view.nu));
+    std::vector<double> y(static_cast<std::size_t>(view.ny));
+    ProgressReporter reporter(progress, options.t_start, options.t_end);
+    const StateObserver record = [&](double t, const double* x) {
+        result.time.push_back(t);
+        result.states.insert(result.states.end(), x, x + result.nx);
+        if (view.ny > 0) {
+            if (view.nu > 0) inputs(t, u.data());
+            view.outputs(t, x, x + nq, u.data(), y.data());
+            result.outputs.insert(result.outputs.end(), y.begin(), y.end());
+        }
+        result.completed = reporter.report(t);
+        return result.completed;
+    };
+
+    if (options.method == Method::rk4) {
+        simulate_rk4(view, options.x0, inputs, options.t_end, options.dt, record, options.t_start);
+    } else {
+        CvodeOptions cvode;
+        cvode.rtol = options.rtol;
+        cvode.atol = options.atol;
+        simulate_cvode(view, options.x0, inputs, options.t_end, options.dt, record, cvode,
+                       options.t_start);
+    }
+    return result;
+}
+
+} // namespace yamsc::runtime

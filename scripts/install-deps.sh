@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs the Debian packages yamsc needs, only those that are missing.
+set -euo pipefail
+packages=(build-essential cmake pkg-config libginac-dev libcln-dev tao-pegtl-dev libeigen3-dev
+          libfmt-dev libsundials-dev doctest-dev python3 python3-sympy python3-numpy)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "installing: ${missing[*]}"
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
+fi

@@ -1,0 +1,92 @@
+#pragma once
+// Test support: derive a model file's equations in-process, evaluate them with
+// the exact DAG evaluator, and load its generated code compiled on the fly.
+#include "driver/jit.hpp"
+#include "driver/pipeline.hpp"
+#include "symbolic/dag.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+namespace yamsc::test {
+
+inline std::string source_path(const std::string& relative) {
+    return std::string(YAMSC_SOURCE_DIR) + "/" + relative;
+}
+
+inline symbolic::Equations derive_file(const std::string& relative) {
+    diag::Diagnostics diags;
+    driver::FrontEnd fe =
+        driver::run_front_end(source_path(relative), driver::Until::jacobians, diags);
+    INFO(diags.render());
+    REQUIRE_FALSE(diags.has_errors());
+    REQUIRE(fe.equations);
+    return std::move(*fe.equations);
+}
+
+/// M and F of the symbolic equations at a state, parameters at their defaults
+/// unless overridden by name.
+struct Evaluated {
+    std::vector<std::vector<double>> M;
+    std::vector<double> F;
+};
+
+inline Evaluated evaluate(const symbolic::Equations& eq, const std::vector<double>& q,
+                          const std::vector<double>& qd, const std::vector<double>& u = {},
+                          const std::map<std::string, double>& params = {}, double t = 0) {
+    symbolic::Evaluator::Values v;
+    v[eq.t] = t;
+    for (std::size_t i = 0; i < eq.dofs.size(); ++i) {
+        v[eq.dofs[i].q] = q.at(i);
+        v[eq.dofs[i].qd] = qd.at(i);
+    }
+    for (std::size_t i = 0; i < eq.inputs.size(); ++i)
+        v[eq.inputs[i].sym] = u.empty() ? 0.0 : u.at(i);
+    for (const auto& p : eq.params) {
+        auto it = params.find(p.name);
+        v[p.sym] = it != params.end() ? it->second : p.value.value_or(NAN);
+    }
+    symbolic::Evaluator e(v);
+    Evaluated out;
+    const std::size_t n = eq.dofs.size();
+    out.M.assign(n, std::vector<double>(n));
+    for (std::size_t r = 0; r < n; ++r) {
+        for (std::size_t s = 0; s < n; ++s) out.M[r][s] = e(eq.M[r][s]);
+        out.F.push_back(e(eq.F[r]));
+    }
+    return out;
+}
+
+/// The generated code of a model, compiled into a shared library (cached in the
+/// test build folder) and bound to its default parameters (overridable).
+struct Compiled {
+    std::unique_ptr<runtime::SharedModel> library;
+    runtime::ModelView view;
+};
+
+inline Compiled compile_model(const symbolic::Equations& eq,
+                              const std::map<std::string, double>& params = {}) {
+    driver::JitOptions o;
+    o.cache_dir = std::string(YAMSC_TEST_BINARY_DIR) + "/jit-cache";
+    Compiled c;
+    c.library = driver::load_compiled_model(eq, o);
+    std::vector<double> p = c.library->default_params();
+    for (const auto& [name, value] : params) {
+        int i = c.library->param_index(name);
+        REQUIRE(i >= 0);
+        p[static_cast<std::size_t>(i)] = value;
+    }
+    c.view = c.library->view(p);
+    return c;
+}
+
+inline double max_abs(const std::vector<double>& v) {
+    double m = 0;
+    for (double x : v) m = std::max(m, std::fabs(x));
+    return m;
+}
+
+} // namespace yamsc::test
