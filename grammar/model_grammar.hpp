@@ -1,5 +1,5 @@
 #pragma once
-// The grammar of the model language (`.mbd`, /work/shared/spec/dsl.md) as PEGTL rule types.
+// The grammar of the model language (`.mbd`, see docs/language.md) as PEGTL rule types.
 // Types only: the actions that build the AST, the error messages (keyed by the rule given to
 // `must<>`) and the error recovery live in compiler/parse/.
 //
