@@ -37,6 +37,7 @@ std::string quote(const std::string& s) {
 
 std::string number(double v) {
     if (!std::isfinite(v)) return "null";
+    if (v == 0) return "0"; // no "-0"
     char buf[32];
     for (int precision = 15; precision <= 17; ++precision) {
         std::snprintf(buf, sizeof buf, "%.*g", precision, v);
