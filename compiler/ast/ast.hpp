@@ -115,11 +115,11 @@ struct PointRef {
 struct JointStep {
     enum class Kind { at, translate, rotate, free, option };
     Kind kind = Kind::at;
-    Expr vector;                   // at: the offset
-    Axis axis;                     // translate, rotate
-    Expr arg;                      // translate, rotate: DOF name or expression
-    std::vector<ModeEntry> dofs;   // free: six DOF names (mode empty)
-    Property option;               // option: `elastic_rotation = small|exact`
+    Expr vector;                 // at: the offset
+    Axis axis;                   // translate, rotate
+    Expr arg;                    // translate, rotate: DOF name or expression
+    std::vector<ModeEntry> dofs; // free: six DOF names (mode empty)
+    Property option;             // option: `elastic_rotation = small|exact`
     Loc loc;
 };
 

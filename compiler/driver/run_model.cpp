@@ -162,7 +162,8 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
                           "-", dof.c_str());
         else
             std::snprintf(line, sizeof line, "%4zu  %14.6g  %13.4g  %s%s\n", i + 1, m.freq_hz,
-                          std::fabs(m.damping_ratio) < 1e-12 ? 0.0 : m.damping_ratio, dof.c_str(), m.real ? " (non-oscillating)" : "");
+                          std::fabs(m.damping_ratio) < 1e-12 ? 0.0 : m.damping_ratio, dof.c_str(),
+                          m.real ? " (non-oscillating)" : "");
         out << line;
     }
     return 0;

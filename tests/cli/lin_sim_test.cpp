@@ -46,7 +46,8 @@ TEST_CASE("sim: writes the CSV header of cli.md and the initial state") {
     std::string csv = std::string(YAMSC_TEST_BINARY_DIR) + "/dp.csv";
     std::remove(csv.c_str());
     capture("sim " + std::string(YAMSC_SOURCE_DIR) +
-            "/models/double_pendulum.mbd --tmax 0.1 --dt 0.01 --ic \"th1=30deg,th2'=0.5\" -o " + csv);
+            "/models/double_pendulum.mbd --tmax 0.1 --dt 0.01 --ic \"th1=30deg,th2'=0.5\" -o " +
+            csv);
     std::ifstream in(csv);
     std::string header, first;
     std::getline(in, header);
