@@ -23,6 +23,11 @@ std::string function_name(const ex& e) {
 
 } // namespace
 
+// GiNaC's comparison of two equal expressions re-points one handle to the other's
+// object (ex::share). Comparing a node of the DAG directly could therefore change a
+// parent's operand while it is memoised by address; every comparison here goes
+// through a copy of the handle instead (`ex(e)`).
+
 ex map_operands(const ex& e, const std::function<ex(const ex&)>& f) {
     LambdaMap m(f);
     return e.map(m);
@@ -37,7 +42,7 @@ ex Differentiator::operator()(const ex& e) {
 }
 
 ex Differentiator::compute(const ex& e) {
-    if (is_a<symbol>(e)) return e.is_equal(s_) ? 1 : 0;
+    if (is_a<symbol>(e)) return ex(e).is_equal(s_) ? 1 : 0; // compare a copy: see above
     if (is_a<numeric>(e) || is_a<constant>(e)) return 0;
     if (is_a<add>(e)) {
         exvector terms;
@@ -116,7 +121,7 @@ ex Substituter::operator()(const ex& e) {
     if (const ex* hit = memo_.find(e)) return *hit;
     ex r;
     if (is_a<symbol>(e)) {
-        auto it = map_.find(e);
+        auto it = map_.find(ex(e));
         r = it == map_.end() ? e : it->second;
     } else if (e.nops() == 0) {
         r = e;
@@ -135,7 +140,7 @@ bool DependsOn::operator()(const ex& e) {
     bool r = false;
     if (is_a<symbol>(e)) {
         for (const auto& s : symbols_)
-            if (e.is_equal(s)) r = true;
+            if (ex(e).is_equal(s)) r = true;
     } else {
         for (std::size_t i = 0; i < e.nops() && !r; ++i) r = (*this)(e.op(i));
     }
@@ -148,7 +153,7 @@ double Evaluator::operator()(const ex& e) {
     if (const double* hit = memo_.find(e)) return *hit;
     double r = 0;
     if (is_a<symbol>(e)) {
-        auto it = values_.find(e);
+        auto it = values_.find(ex(e));
         if (it == values_.end())
             throw diag::InternalError("no value for symbol " + ex_to<symbol>(e).get_name());
         r = it->second;
