@@ -24,6 +24,8 @@ const char* usage_text = R"(usage:
   yamsc lin MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--json]
   yamsc sim MODEL.mbd --tmax T --dt DT [--ic name=v,..] [--u name=v,..] [--set name=v,..]
                       [--method rk4|cvode] [--rtol R] [--atol A] [-o out.csv] [-v]
+  yamsc sid --elastodyn-tower FILE | --elastodyn-blade FILE --length L [--modes fa1,ss1,..]
+            [--stations N] [-o body.sid]
   yamsc --version | --help
 Values accept `deg`: --set theta_t=5deg. Exit status: 0 ok, 1 error in the model or
 its inputs, 2 usage error, 70 internal error.
@@ -124,6 +126,26 @@ int run(int argc, char** argv) {
         o.set = a.assignments("--set");
         o.json = a.has("--json");
         return lin(o, std::cout, std::cerr);
+    }
+    if (cmd == "sid") {
+        Args a(
+            argc, argv, 2,
+            {"--elastodyn-tower", "--elastodyn-blade", "--length", "--modes", "--stations", "-o"},
+            {});
+        SidOptions o;
+        o.tower = a.get("--elastodyn-tower");
+        o.blade = a.get("--elastodyn-blade");
+        o.length = a.number("--length", 0);
+        o.stations = static_cast<int>(a.number("--stations", 50));
+        o.output = a.get("-o");
+        std::string modes = a.get("--modes");
+        for (std::size_t start = 0; !modes.empty() && start <= modes.size();) {
+            std::size_t comma = modes.find(',', start);
+            if (comma == std::string::npos) comma = modes.size();
+            o.modes.push_back(modes.substr(start, comma - start));
+            start = comma + 1;
+        }
+        return sid(o, std::cout, std::cerr);
     }
     if (cmd == "sim") {
         Args a(argc, argv, 2,

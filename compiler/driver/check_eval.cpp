@@ -36,10 +36,21 @@ void check_text(const model::Model& m, std::ostream& out) {
         for (const auto& s : b.steps) {
             if (s.kind == model::Step::Kind::offset)
                 out << " at";
+            else if (s.kind == model::Step::Kind::node)
+                out << " node "
+                    << m.bodies[static_cast<std::size_t>(b.parent)]
+                           .flex->sid->nodes[static_cast<std::size_t>(s.node)]
+                           .id;
             else
                 out << (s.kind == model::Step::Kind::rotate ? " rotate " : " translate ")
                     << ast::to_string(s.arg);
             out << ";";
+        }
+        if (b.flex) {
+            out << " modes";
+            for (std::size_t k = 0; k < b.flex->dofs.size(); ++k)
+                out << " " << m.dofs[static_cast<std::size_t>(b.flex->dofs[k])].name;
+            out << " (" << b.flex->description << ")";
         }
         out << "\n";
     }

@@ -52,10 +52,19 @@ struct SimOptions {
     bool verbose = false;
 };
 
+struct SidOptions {
+    std::string tower, blade;       // --elastodyn-tower / --elastodyn-blade
+    double length = 0;              // --length [m]
+    std::vector<std::string> modes; // --modes fa1,ss1 (default: all first modes)
+    int stations = 50;              // --stations: integration stations and SID nodes
+    std::string output;             // -o; empty or "-": stdout
+};
+
 int compile(const CompileOptions& o, std::ostream& out, std::ostream& err);
 int check(const CheckOptions& o, std::ostream& out, std::ostream& err);
 int eval(const EvalOptions& o, std::ostream& out, std::ostream& err);
 int lin(const LinOptions& o, std::ostream& out, std::ostream& err);
 int sim(const SimOptions& o, std::ostream& out, std::ostream& err);
+int sid(const SidOptions& o, std::ostream& out, std::ostream& err);
 
 } // namespace yamsc::driver

@@ -66,15 +66,18 @@ void check_namespace(const std::string& ns, const std::string& lang) {
     }
 }
 
-/// Make-style dependency file: the output depends on the model file.
-std::string depfile_text(const CompileOptions& o) {
+/// Make-style dependency file: the outputs depend on the model file and on every
+/// data file it read (SID, ElastoDyn).
+std::string depfile_text(const CompileOptions& o, const std::vector<std::string>& data_files) {
     auto escape = [](const std::string& s) {
         std::string out;
         for (char c : s) out += (c == ' ' ? "\\ " : std::string(1, c));
         return out;
     };
     std::string targets = escape(o.output) + (o.header.empty() ? "" : " " + escape(o.header));
-    return targets + ": " + escape(o.model) + "\n";
+    std::string deps = escape(o.model);
+    for (const auto& f : data_files) deps += " " + escape(f);
+    return targets + ": " + deps + "\n";
 }
 
 } // namespace
@@ -127,7 +130,8 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
     // Write the header first: a source is never left referring to a missing header.
     if (!o.header.empty()) runtime::write_file_atomically(o.header, files.header);
     runtime::write_file_atomically(o.output, files.source);
-    if (!o.depfile.empty()) runtime::write_file_atomically(o.depfile, depfile_text(o));
+    if (!o.depfile.empty())
+        runtime::write_file_atomically(o.depfile, depfile_text(o, fe.model->files_read));
     progress("wrote " + o.output + (o.header.empty() ? "" : " and " + o.header) + " (" +
              std::to_string(files.source.size() + files.header.size()) + " bytes)");
     return 0;

@@ -47,7 +47,13 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
     fe.equations = symbolic::derive(*fe.model, diags);
     if (!fe.equations || diags.has_errors()) return fe;
     fe.equations->source_path = path;
-    fe.equations->source_digest = digest(fe.source->text());
+    // The digest covers the data files too: generated code changes when they do.
+    std::string all = fe.source->text();
+    for (const auto& f : fe.model->files_read) {
+        diag::Diagnostics ignored;
+        if (auto data = read_source(f, ignored)) all += "\n" + data->text();
+    }
+    fe.equations->source_digest = digest(all);
     say(timed("derived the equations of motion", clock.seconds()));
     if (until == Until::jacobians) {
         symbolic::derive_jacobians(*fe.equations);

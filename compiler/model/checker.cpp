@@ -1,6 +1,7 @@
 #include "model/checker.hpp"
 
 #include "model/expr_check.hpp"
+#include "model/flexible.hpp"
 
 #include <algorithm>
 #include <functional>
@@ -200,6 +201,84 @@ private:
         return b;
     }
 
+    std::optional<Body> flexible_body(const ast::FlexibleBody& fb) {
+        NameValues values;
+        for (const auto& p : model_.params)
+            if (p.value) values[p.name] = *p.value;
+        std::string base;
+        if (file_.source) {
+            const std::string& path = file_.source->path();
+            auto slash = path.rfind('/');
+            if (slash != std::string::npos) base = path.substr(0, slash + 1);
+        }
+        FlexibleInputs in{names_, values, base, diags_, model_.files_read};
+        auto flex = check_flexible(fb, in);
+        if (!flex) return std::nullopt;
+        Body b;
+        b.name = fb.name;
+        b.kind = Body::Kind::flexible;
+        b.loc = fb.loc;
+        b.mass = number("0", fb.loc);
+        b.com = zero_vec(fb.loc);
+        for (auto& e : b.inertia) e = number("0", fb.loc);
+        b.flex = std::move(flex);
+        return b;
+    }
+
+    /// A joint on `parent.tip` or `parent.node(k)` starts at that node of the parent.
+    bool node_step(const ast::Joint& j, const Body* parent, Body& b) {
+        if (j.parent.kind == ast::PointRef::Kind::origin) return true;
+        if (!parent || !parent->flex) return false; // reported with the joint
+        const auto& nodes = parent->flex->sid->nodes;
+        Step st;
+        st.kind = Step::Kind::node;
+        st.loc = j.parent.loc;
+        if (j.parent.kind == ast::PointRef::Kind::tip) {
+            if (nodes.empty()) {
+                diags_.error(Kind::InvalidValue, j.parent.loc,
+                             "flexible body '" + parent->name + "' has no nodes in its SID");
+                return false;
+            }
+            st.node = static_cast<int>(nodes.size()) - 1;
+        } else {
+            std::string why;
+            auto k = evaluate_constant(*j.parent.node, why);
+            for (std::size_t i = 0; k && i < nodes.size(); ++i)
+                if (nodes[i].id == *k) st.node = static_cast<int>(i);
+            if (st.node < 0) {
+                std::string ids;
+                for (const auto& n : nodes) ids += (ids.empty() ? "" : ", ") + std::to_string(n.id);
+                diags_.error(Kind::InvalidValue, j.parent.node->loc,
+                             "flexible body '" + parent->name + "' has no node " +
+                                 (k ? std::to_string(static_cast<long long>(*k)) : "like that") +
+                                 " (its nodes: " + (ids.empty() ? "none" : ids) + ")");
+                return false;
+            }
+        }
+        b.steps.push_back(st);
+        return true;
+    }
+
+    void elastic_rotation(const ast::JointStep& s, Body& b) {
+        if (b.steps.empty() || b.steps.front().kind != Step::Kind::node) {
+            diags_.error(Kind::InvalidValue, s.loc,
+                         "elastic_rotation applies to joints on a node of a flexible body "
+                         "(`joint tower.tip -> " +
+                             b.name + "`)");
+            return;
+        }
+        const ast::Value& v = s.option.value;
+        std::string word =
+            v.kind == ast::Value::Kind::expr && v.expr.kind == Expr::Kind::name ? v.expr.text : "";
+        if (word != "small" && word != "exact") {
+            diags_.error(Kind::InvalidValue, v.loc,
+                         "elastic_rotation is `small` or `exact`" +
+                             diag::did_you_mean(word, {"small", "exact"}));
+            return;
+        }
+        b.steps.front().exact_rotation = word == "exact";
+    }
+
     bool axis_of(const ast::Axis& axis, Step& step, const std::string& body) {
         if (axis.vector) {
             auto v =
@@ -302,9 +381,7 @@ private:
             }
             case ast::JointStep::Kind::option:
                 if (s.option.key == "elastic_rotation") {
-                    diags_.error(Kind::NotSupported, s.loc,
-                                 "elastic_rotation applies to joints on flexible bodies, which are "
-                                 "not supported yet");
+                    elastic_rotation(s, b);
                 } else {
                     diags_.error(Kind::UnknownProperty, s.loc,
                                  "joints have no option '" + s.option.key + "'" +
@@ -324,9 +401,7 @@ private:
             body_names.push_back(rb.name);
         }
         for (const auto& fb : file_.flexible_bodies) {
-            diags_.error(Kind::NotSupported, fb.loc,
-                         "flexible body '" + fb.name + "': flexible bodies are not supported yet");
-            declared.push_back(std::nullopt);
+            declared.push_back(flexible_body(fb));
             body_names.push_back(fb.name);
         }
         auto index_of = [&](const std::string& name) {
@@ -364,12 +439,12 @@ private:
             }
             if (j.parent.kind != ast::PointRef::Kind::origin && par >= 0) {
                 bool flexible = static_cast<std::size_t>(par) >= file_.rigid_bodies.size();
-                diags_.error(flexible ? Kind::NotSupported : Kind::InvalidValue, j.parent.loc,
-                             flexible
-                                 ? "joints on nodes of flexible bodies are not supported yet"
-                                 : "rigid body '" + j.parent.body +
-                                       "' has no tip or nodes (they belong to flexible bodies)");
-                continue;
+                if (!flexible) {
+                    diags_.error(Kind::InvalidValue, j.parent.loc,
+                                 "rigid body '" + j.parent.body +
+                                     "' has no tip or nodes (they belong to flexible bodies)");
+                    continue;
+                }
             }
             if (par == child) {
                 diags_.error(Kind::BodyTree, j.loc, "body '" + j.child + "' is joined to itself");
@@ -426,6 +501,9 @@ private:
             if (par >= 0 && new_index[static_cast<std::size_t>(par)] < 0) continue;
             Body b = *declared[ui];
             b.parent = par < 0 ? -1 : new_index[static_cast<std::size_t>(par)];
+            if (!node_step(*joint_of[ui],
+                           par < 0 ? nullptr : &*declared[static_cast<std::size_t>(par)], b))
+                continue;
             joint_steps(*joint_of[ui], b);
             new_index[ui] = static_cast<int>(model_.bodies.size());
             model_.bodies.push_back(std::move(b));
@@ -569,12 +647,14 @@ private:
         }
     }
 
-    // Every DOF must drive exactly one joint step (flexible modes come later).
+    // Every DOF must drive exactly one joint step or one mode of a flexible body.
     void check_dof_usage() {
         std::vector<std::vector<Loc>> uses(model_.dofs.size());
         for (const auto& b : model_.bodies) {
+            if (b.flex)
+                for (int d : b.flex->dofs) uses[static_cast<std::size_t>(d)].push_back(b.loc);
             for (const auto& s : b.steps) {
-                if (s.kind == Step::Kind::offset) continue;
+                if (s.kind == Step::Kind::offset || s.kind == Step::Kind::node) continue;
                 std::vector<const Expr*> names;
                 collect_names(s.arg, names);
                 std::set<int> in_step;

@@ -31,9 +31,20 @@ std::string dump(const Model& m) {
     out << "  gravity " << vec(m.gravity) << "\n";
     for (const auto& b : m.bodies) {
         out << "  body " << b.name << " <- " << frame_name(m, b.parent) << "\n";
-        out << "    mass " << ast::to_string(b.mass) << " com " << vec(b.com) << " inertia (";
-        for (std::size_t i = 0; i < 6; ++i) out << (i ? ", " : "") << ast::to_string(b.inertia[i]);
-        out << ")\n";
+        if (b.flex) {
+            const sid::Sid& sid = *b.flex->sid;
+            out << "    flexible from " << b.flex->description << ": mass " << sid.mass << ", "
+                << sid.nodes.size() << " nodes, taylor " << b.flex->taylor << ", modes (";
+            for (std::size_t k = 0; k < b.flex->dofs.size(); ++k)
+                out << (k ? ", " : "") << sid.mode_names[k] << " -> "
+                    << m.dofs[static_cast<std::size_t>(b.flex->dofs[k])].name;
+            out << ")\n";
+        } else {
+            out << "    mass " << ast::to_string(b.mass) << " com " << vec(b.com) << " inertia (";
+            for (std::size_t i = 0; i < 6; ++i)
+                out << (i ? ", " : "") << ast::to_string(b.inertia[i]);
+            out << ")\n";
+        }
         for (const auto& s : b.steps) {
             switch (s.kind) {
             case Step::Kind::offset:
@@ -43,6 +54,10 @@ std::string dump(const Model& m) {
             case Step::Kind::rotate:
                 out << "    " << (s.kind == Step::Kind::rotate ? "rotate " : "translate ")
                     << vec(s.vector) << " " << ast::to_string(s.arg) << "\n";
+                break;
+            case Step::Kind::node:
+                out << "    node " << s.node << " of " << frame_name(m, b.parent)
+                    << (s.exact_rotation ? " (exact rotation)" : " (small rotation)") << "\n";
                 break;
             }
         }

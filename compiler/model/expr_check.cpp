@@ -286,8 +286,8 @@ std::optional<Vec> ExprChecker::vector(const Expr& e, const ExprContext& ctx) {
 
 namespace {
 
-std::optional<double> eval(const Expr& e, std::string& why) {
-    auto arg = [&](std::size_t i) { return eval(e.args[i], why); };
+std::optional<double> eval(const Expr& e, std::string& why, const NameValues* names) {
+    auto arg = [&](std::size_t i) { return eval(e.args[i], why, names); };
     switch (e.kind) {
     case K::number: {
         char* end = nullptr;
@@ -304,6 +304,10 @@ std::optional<double> eval(const Expr& e, std::string& why) {
     }
     case K::name:
         if (e.text == "pi" && e.primes == 0) return M_PI;
+        if (names && e.primes == 0) {
+            auto it = names->find(e.text);
+            if (it != names->end()) return it->second;
+        }
         why = "uses '" + e.text + "'";
         return std::nullopt;
     case K::neg: {
@@ -378,7 +382,11 @@ std::optional<double> eval(const Expr& e, std::string& why) {
 } // namespace
 
 std::optional<double> evaluate_constant(const Expr& e, std::string& why) {
-    return eval(e, why);
+    return eval(e, why, nullptr);
+}
+
+std::optional<double> evaluate_with(const Expr& e, const NameValues& names, std::string& why) {
+    return eval(e, why, &names);
 }
 
 void collect_names(const Expr& e, std::vector<const Expr*>& out) {

@@ -4,6 +4,7 @@
 // expressions (parameter defaults).
 #include "model/names.hpp"
 
+#include <map>
 #include <optional>
 
 namespace yamsc::model {
@@ -46,6 +47,12 @@ private:
 /// Value of a constant expression (numbers, pi, deg, functions); nullopt when it uses
 /// a name or is not finite. `why` receives a reason.
 std::optional<double> evaluate_constant(const Expr& e, std::string& why);
+
+/// Values of names (parameter defaults) for evaluate_with.
+using NameValues = std::map<std::string, double>;
+
+/// Like evaluate_constant, but names found in `names` stand for their values.
+std::optional<double> evaluate_with(const Expr& e, const NameValues& names, std::string& why);
 
 /// The names of a given kind that appear in `e` (for DOF-usage analysis).
 void collect_names(const Expr& e, std::vector<const Expr*>& out);

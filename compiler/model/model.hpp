@@ -4,6 +4,7 @@
 // to bodies. Expressions are still ast::Expr, but every name in them is known to
 // be declared and allowed where it stands (see checker.hpp). Plain data.
 #include "ast/ast.hpp"
+#include "sid/sid.hpp"
 
 #include <array>
 #include <optional>
@@ -37,14 +38,27 @@ struct Dof {
 };
 
 /// One elementary motion of a joint, applied in the current (moving) frame.
+/// `node` moves to a node of the parent's flexible body and follows its elastic
+/// displacement and rotation (paper section 4.4, Appendix D2).
 struct Step {
-    enum class Kind { offset, translate, rotate };
+    enum class Kind { offset, translate, rotate, node };
     Kind kind = Kind::offset;
     Vec vector;          // offset: the displacement; translate/rotate: the axis (not normalised)
     int axis_index = -1; // 0..2 when the axis is a signed coordinate axis, else -1
     int axis_sign = 1;
-    Expr arg; // translate/rotate: distance or angle, a function of q, u, t, p
+    Expr arg;                    // translate/rotate: distance or angle, a function of q, u, t, p
+    int node = -1;               // node: index into the parent's SID nodes
+    bool exact_rotation = false; // node: rotation matrices of the slopes, not I + skew(psi q)
     Loc loc;
+};
+
+/// The elastic description of a flexible body: its SID reduced to the modes in use,
+/// mode k driven by DOF dofs[k].
+struct Flexible {
+    std::shared_ptr<const sid::Sid> sid;
+    std::vector<int> dofs;
+    int taylor = 1;          // order of the shape-integral expansion used (0 or 1)
+    std::string description; // where the data came from, for dumps and headers
 };
 
 struct Body {
@@ -54,8 +68,9 @@ struct Body {
     int parent = -1;         // index into Model::bodies, -1 for ground
     std::vector<Step> steps; // from the parent's origin to this body's frame
     Expr mass;
-    Vec com;                     // centre of mass in body axes
-    std::array<Expr, 6> inertia; // about the COM: Ixx, Iyy, Izz, Ixy, Iyz, Ixz (tensor entries)
+    Vec com;                      // centre of mass in body axes
+    std::array<Expr, 6> inertia;  // about the COM: Ixx, Iyy, Izz, Ixy, Iyz, Ixz (tensor entries)
+    std::optional<Flexible> flex; // kind == flexible
     Loc loc;
 };
 
@@ -104,6 +119,7 @@ struct Output {
 
 struct Model {
     std::string name, title;
+    std::vector<std::string> files_read; // data files (SID, ElastoDyn), for digests and depfiles
     std::shared_ptr<const diag::SourceFile> source;
     std::vector<Param> params;
     std::vector<Input> inputs;

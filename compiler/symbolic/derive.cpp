@@ -1,5 +1,6 @@
 #include "symbolic/derive.hpp"
 
+#include "symbolic/flexible_body.hpp"
 #include "symbolic/kinematics.hpp"
 
 namespace yamsc::symbolic {
@@ -46,6 +47,11 @@ public:
         for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
             const model::Body& body = m_.bodies[b];
             const FrameState& f = frames_[b];
+            add_applied_loads(f, applied[b], load_terms);
+            if (body.flex) {
+                add_flexible_body(body, f, transpose_times(f.R, g), sym_, eq_.M, F_terms);
+                continue;
+            }
             ex mass = to_ginac(body.mass, sym_);
             Vec3 c = to_ginac(body.com, sym_);
             Mat3 J = inertia_tensor(body, sym_);
@@ -84,12 +90,6 @@ public:
                 F_terms[static_cast<std::size_t>(r)].push_back(dot(jv, force));
             for (const auto& [r, jw] : f.Jw)
                 F_terms[static_cast<std::size_t>(r)].push_back(dot(jw, moment));
-            // Applied loads.
-            const Wrench& w = applied[b];
-            for (const auto& [r, jv] : f.Jv)
-                load_terms[static_cast<std::size_t>(r)].push_back(dot(jv, w.force));
-            for (const auto& [r, jw] : f.Jw)
-                load_terms[static_cast<std::size_t>(r)].push_back(dot(jw, w.moment));
         }
         for (std::size_t r = 0; r < nq; ++r)
             for (std::size_t s = 0; s < r; ++s) eq_.M[r][s] = eq_.M[s][r];
@@ -112,6 +112,15 @@ public:
     }
 
 private:
+    /// Applied forces and moments about the body origin (eq. 7, 9, 19).
+    static void add_applied_loads(const FrameState& f, const Wrench& w,
+                                  std::vector<exvector>& load_terms) {
+        for (const auto& [r, jv] : f.Jv)
+            load_terms[static_cast<std::size_t>(r)].push_back(dot(jv, w.force));
+        for (const auto& [r, jw] : f.Jw)
+            load_terms[static_cast<std::size_t>(r)].push_back(dot(jw, w.moment));
+    }
+
     std::vector<Wrench> applied_wrenches() {
         std::vector<Wrench> w(m_.bodies.size());
         for (const auto& f : m_.forces) {
@@ -220,34 +229,6 @@ private:
 
 std::optional<Equations> derive(const model::Model& m, diag::Diagnostics& diags) {
     return Kane(m, diags).run();
-}
-
-void derive_jacobians(Equations& eq) {
-    const std::size_t nq = eq.dofs.size(), nu = eq.inputs.size();
-    eq.dF_dq.assign(nq, Row(nq, 0));
-    eq.dF_dqd.assign(nq, Row(nq, 0));
-    eq.dF_du.assign(nq, Row(nu, 0));
-    eq.dMa_dq.assign(nq, Row(nq, 0));
-    eq.a.clear();
-    for (std::size_t s = 0; s < nq; ++s) eq.a.emplace_back("a_" + eq.dofs[s].name);
-    std::vector<ex> Ma(nq);
-    for (std::size_t r = 0; r < nq; ++r) {
-        exvector terms;
-        for (std::size_t s = 0; s < nq; ++s) terms.push_back(eq.M[r][s] * eq.a[s]);
-        Ma[r] = add(terms);
-    }
-    for (std::size_t k = 0; k < nq; ++k) {
-        Differentiator dq(eq.dofs[k].q), dqd(eq.dofs[k].qd);
-        for (std::size_t r = 0; r < nq; ++r) {
-            eq.dF_dq[r][k] = dq(eq.F[r]);
-            eq.dF_dqd[r][k] = dqd(eq.F[r]);
-            eq.dMa_dq[r][k] = dq(Ma[r]);
-        }
-    }
-    for (std::size_t k = 0; k < nu; ++k) {
-        Differentiator du(eq.inputs[k].sym);
-        for (std::size_t r = 0; r < nq; ++r) eq.dF_du[r][k] = du(eq.F[r]);
-    }
 }
 
 } // namespace yamsc::symbolic

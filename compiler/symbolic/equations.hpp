@@ -60,7 +60,7 @@ struct Equations {
     Matrix M; // nq x nq, symmetric, depends on q and p (and u, t for prescribed motion)
     Row F;    // nq
 
-    // Exact Jacobians of F (filled by derive_jacobians in symbolic/jacobians.hpp).
+    // Exact Jacobians of F (filled by derive_jacobians in symbolic/jacobians.cpp).
     Matrix dF_dq, dF_dqd, dF_du; // nq x nq, nq x nq, nq x nu
     // d(M(q) a)/dq for a vector of symbols `a` (nq x nq): with a = q'' it completes
     // the Jacobian of the first-order system x' = f(x) = [q', M^-1 F].

@@ -1,5 +1,7 @@
 #include "symbolic/kinematics.hpp"
 
+#include "symbolic/sid_terms.hpp"
+
 namespace yamsc::symbolic {
 
 using namespace GiNaC;
@@ -43,62 +45,101 @@ void add_partial(std::map<int, Vec3>& J, int r, const Vec3& v) {
         it->second = it->second + v;
 }
 
+/// Partials ∂s/∂q_r of a scalar joint argument, for every DOF it uses.
+std::map<int, Vec3> partials_along(const ex& s, const Vec3& e, Symbols& symbols) {
+    std::map<int, Vec3> out;
+    const auto& dofs = symbols.dofs();
+    for (std::size_t r = 0; r < dofs.size(); ++r) {
+        ex ds = symbols.diff(s, dofs[r].q);
+        if (!ds.is_zero()) out.emplace(static_cast<int>(r), ds * e);
+    }
+    return out;
+}
+
+/// Elementary rotation about the unit axis e by the angle th (a function of q, u, t).
+FrameState rotate_about(const FrameState& f, const Vec3& e, const ex& th, Symbols& symbols) {
+    ex thd = symbols.time_derivative(th, false);
+    ex thdd = symbols.time_derivative(thd, false);
+    return rotate_frame(f, rotation(e, cos(th), sin(th)), thd * e, thdd * e,
+                        partials_along(th, e, symbols));
+}
+
 } // namespace
 
-FrameState apply_step(const FrameState& f, const model::Step& step, Symbols& symbols) {
+FrameState move_origin(const FrameState& f, const Vec3& p, const Vec3& pd, const Vec3& pdd,
+                       const std::map<int, Vec3>& dp_dq) {
     FrameState n = f;
-    const auto& dofs = symbols.dofs();
+    n.r = f.r + f.R * p;
+    n.v = f.v + cross(f.w, p) + pd;
+    n.a = f.a + cross(f.alpha, p) + cross(f.w, cross(f.w, p)) + 2 * cross(f.w, pd) + pdd;
+    for (const auto& [r, jw] : f.Jw) add_partial(n.Jv, r, cross(jw, p));
+    for (const auto& [r, jv] : dp_dq) add_partial(n.Jv, r, jv);
+    return n;
+}
+
+FrameState rotate_frame(const FrameState& f, const Mat3& rot, const Vec3& w_rel,
+                        const Vec3& alpha_rel, const std::map<int, Vec3>& dw_dqd) {
+    FrameState n;
+    auto to_new = [&](const Vec3& x) { return transpose_times(rot, x); };
+    n.R = f.R * rot;
+    n.r = f.r;
+    Vec3 w_old_new = to_new(f.w);
+    n.w = w_old_new + w_rel;
+    n.v = to_new(f.v);
+    n.alpha = to_new(f.alpha) + alpha_rel + cross(w_old_new, w_rel);
+    n.a = to_new(f.a);
+    for (const auto& [r, jw] : f.Jw) n.Jw.emplace(r, to_new(jw));
+    for (const auto& [r, jv] : f.Jv) n.Jv.emplace(r, to_new(jv));
+    for (const auto& [r, jw] : dw_dqd) add_partial(n.Jw, r, jw);
+    return n;
+}
+
+FrameState apply_step(const FrameState& f, const model::Step& step, Symbols& symbols,
+                      const model::Body* parent) {
     switch (step.kind) {
     case model::Step::Kind::offset: {
-        Vec3 c = to_ginac(step.vector, symbols);
-        n.r = f.r + f.R * c;
-        n.v = f.v + cross(f.w, c);
-        n.a = f.a + cross(f.alpha, c) + cross(f.w, cross(f.w, c));
-        for (const auto& [r, jw] : f.Jw) add_partial(n.Jv, r, cross(jw, c));
-        return n;
+        Vec3 zero;
+        return move_origin(f, to_ginac(step.vector, symbols), zero, zero, {});
     }
     case model::Step::Kind::translate: {
         Vec3 e = unit_axis(step, symbols);
         ex s = to_ginac(step.arg, symbols);
         ex sd = symbols.time_derivative(s, false);
         ex sdd = symbols.time_derivative(sd, false);
-        Vec3 d = s * e;
-        n.r = f.r + f.R * d;
-        n.v = f.v + cross(f.w, d) + sd * e;
-        n.a = f.a + cross(f.alpha, d) + cross(f.w, cross(f.w, d)) + (2 * sd) * cross(f.w, e) +
-              sdd * e;
-        for (const auto& [r, jw] : f.Jw) add_partial(n.Jv, r, cross(jw, d));
-        for (std::size_t r = 0; r < dofs.size(); ++r) {
-            ex ds = symbols.diff(s, dofs[r].q);
-            if (!ds.is_zero()) add_partial(n.Jv, static_cast<int>(r), ds * e);
-        }
-        return n;
+        return move_origin(f, s * e, sd * e, sdd * e, partials_along(s, e, symbols));
     }
-    case model::Step::Kind::rotate: {
-        Vec3 e = unit_axis(step, symbols);
-        ex th = to_ginac(step.arg, symbols);
-        ex thd = symbols.time_derivative(th, false);
-        ex thdd = symbols.time_derivative(thd, false);
-        Mat3 rot = rotation(e, cos(th), sin(th));
-        auto to_new = [&](const Vec3& x) { return transpose_times(rot, x); };
-        n.R = f.R * rot;
-        Vec3 w_old_new = to_new(f.w);
-        n.w = w_old_new + thd * e;
-        n.v = to_new(f.v);
-        n.alpha = to_new(f.alpha) + thdd * e + thd * cross(w_old_new, e);
-        n.a = to_new(f.a);
-        n.Jw.clear();
-        n.Jv.clear();
-        for (const auto& [r, jw] : f.Jw) n.Jw.emplace(r, to_new(jw));
-        for (const auto& [r, jv] : f.Jv) n.Jv.emplace(r, to_new(jv));
-        for (std::size_t r = 0; r < dofs.size(); ++r) {
-            ex dth = symbols.diff(th, dofs[r].q);
-            if (!dth.is_zero()) add_partial(n.Jw, static_cast<int>(r), dth * e);
+    case model::Step::Kind::rotate:
+        return rotate_about(f, unit_axis(step, symbols), to_ginac(step.arg, symbols), symbols);
+    case model::Step::Kind::node: {
+        if (!parent || !parent->flex)
+            throw diag::InternalError("a node step without a flexible parent body");
+        NodeMotion node = node_motion(*parent->flex, step.node, symbols);
+        FrameState n = move_origin(f, node.p, node.pd, node.pdd, node.dp_dq);
+        if (step.exact_rotation) {
+            // Rotation matrices of the slopes: about x, then y, then z.
+            for (std::size_t i = 0; i < 3; ++i) {
+                if (node.theta[i].is_zero()) continue;
+                Vec3 e;
+                e[i] = 1;
+                n = rotate_about(n, e, node.theta[i], symbols);
+            }
+        } else {
+            // Linearised rotation I + skew(θ), θ = ψ q (paper Appendix D2).
+            Mat3 rot = Mat3::identity();
+            const Vec3& th = node.theta;
+            rot.m[0][1] = -th[2];
+            rot.m[0][2] = th[1];
+            rot.m[1][0] = th[2];
+            rot.m[1][2] = -th[0];
+            rot.m[2][0] = -th[1];
+            rot.m[2][1] = th[0];
+            n = rotate_frame(n, rot, node.thetad, Vec3{}, node.dtheta_dq);
         }
+        if (node.orientation) n = rotate_frame(n, *node.orientation, Vec3{}, Vec3{}, {});
         return n;
     }
     }
-    return n;
+    return f;
 }
 
 std::vector<FrameState> body_frames(const model::Model& m, Symbols& symbols) {
@@ -107,7 +148,9 @@ std::vector<FrameState> body_frames(const model::Model& m, Symbols& symbols) {
     for (const auto& b : m.bodies) {
         FrameState f =
             b.parent < 0 ? FrameState::ground() : frames[static_cast<std::size_t>(b.parent)];
-        for (const auto& step : b.steps) f = apply_step(f, step, symbols);
+        const model::Body* parent =
+            b.parent < 0 ? nullptr : &m.bodies[static_cast<std::size_t>(b.parent)];
+        for (const auto& step : b.steps) f = apply_step(f, step, symbols, parent);
         frames.push_back(std::move(f));
     }
     return frames;

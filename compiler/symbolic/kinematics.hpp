@@ -29,7 +29,19 @@ struct FrameState {
 /// The frame of each body of the model, in the model's body order.
 std::vector<FrameState> body_frames(const model::Model& m, Symbols& symbols);
 
-/// Applies one joint step to a frame.
-FrameState apply_step(const FrameState& f, const model::Step& step, Symbols& symbols);
+/// Applies one joint step to a frame; `parent` is the body the joint hangs from
+/// (needed by node steps).
+FrameState apply_step(const FrameState& f, const model::Step& step, Symbols& symbols,
+                      const model::Body* parent = nullptr);
+
+/// Moves the origin by p (current axes) with rate pd, bias acceleration pdd (no q''
+/// terms) and partials ∂p/∂q_r.
+FrameState move_origin(const FrameState& f, const Vec3& p, const Vec3& pd, const Vec3& pdd,
+                       const std::map<int, Vec3>& dp_dq);
+
+/// Turns the frame by `rot` (columns: new axes in current axes) while it spins with
+/// w_rel (new axes) and bias angular acceleration alpha_rel; ∂w_rel/∂q'_r given.
+FrameState rotate_frame(const FrameState& f, const Mat3& rot, const Vec3& w_rel,
+                        const Vec3& alpha_rel, const std::map<int, Vec3>& dw_dqd);
 
 } // namespace yamsc::symbolic

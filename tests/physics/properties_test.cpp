@@ -10,9 +10,14 @@ using namespace yamsc;
 
 namespace {
 
-const char* const models[] = {"models/pendulum.mbd", "models/double_pendulum.mbd",
-                              "models/heavy_top.mbd", "models/nrel5mw_spar_rigid.mbd",
-                              "tests/physics/models/tumbling.mbd"};
+const std::string models[] = {"models/pendulum.mbd",
+                              "models/double_pendulum.mbd",
+                              "models/heavy_top.mbd",
+                              "models/nrel5mw_spar_rigid.mbd",
+                              "models/nrel5mw_land_2dof.mbd",
+                              "models/nrel5mw_blade.mbd",
+                              "tests/physics/models/tumbling.mbd",
+                              "tests/physics/models/free_beam.mbd"};
 
 struct State {
     std::vector<double> q, qd, u;
@@ -36,7 +41,7 @@ double rel_err(double a, double b, double scale) {
 } // namespace
 
 TEST_CASE("generated code agrees with the symbolic equations; M is SPD") {
-    for (const char* path : models) {
+    for (const std::string& path : models) {
         CAPTURE(path);
         auto eq = test::derive_file(path);
         auto c = test::compile_model(eq);
@@ -66,7 +71,7 @@ TEST_CASE("generated code agrees with the symbolic equations; M is SPD") {
 }
 
 TEST_CASE("analytic Jacobians agree with central finite differences") {
-    for (const char* path : models) {
+    for (const std::string& path : models) {
         CAPTURE(path);
         auto eq = test::derive_file(path);
         auto c = test::compile_model(eq);

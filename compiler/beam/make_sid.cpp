@@ -1,0 +1,106 @@
+#include "beam/make_sid.hpp"
+
+#include "beam/geometric_stiffness.hpp"
+#include "beam/shape_integrals.hpp"
+#include "beam/sid_nodes.hpp"
+#include "diag/diagnostics.hpp"
+
+#include <cmath>
+
+namespace yamsc::beam {
+
+std::optional<std::string> check_beam(const Beam& beam) {
+    if (!(beam.length > 0) || !std::isfinite(beam.length)) return "the beam length must be > 0";
+    if (beam.integration_stations < 2) return "a beam needs at least 2 integration stations";
+    if (beam.integration_stations > 100000) return "too many integration stations (at most 100000)";
+    if (beam.stations.empty()) return "a beam needs at least one station";
+    for (std::size_t i = 0; i < beam.stations.size(); ++i) {
+        const Station& s = beam.stations[i];
+        if (!(s.s >= 0 && s.s <= 1)) return "station fractions must lie in [0, 1]";
+        if (i > 0 && !(s.s > beam.stations[i - 1].s))
+            return "station fractions must be strictly increasing";
+        if (!(s.mass_per_length >= 0) || !(s.EI_x >= 0) || !(s.EI_y >= 0) ||
+            !std::isfinite(s.mass_per_length + s.EI_x + s.EI_y + s.twist))
+            return "masses and stiffnesses must be finite and >= 0";
+    }
+    for (const Mode& m : beam.modes) {
+        if (m.direction != 0 && m.direction != 1)
+            return "mode '" + m.name + "': the direction must be x or y";
+        if (m.coeffs.empty()) return "mode '" + m.name + "' has no shape coefficients";
+        for (double c : m.coeffs)
+            if (!std::isfinite(c)) return "mode '" + m.name + "' has a non-finite coefficient";
+        if (!(m.damping_ratio >= 0) || !(m.stiffness_tuner > 0))
+            return "mode '" + m.name + "': damping must be >= 0 and the stiffness tuner > 0";
+    }
+    return std::nullopt;
+}
+
+namespace {
+
+/// Ke per eq. B2, with the curvature split on the twisted principal axes:
+/// EI_y resists curvature along the first axis (x without twist), EI_x along the second.
+/// ElastoDyn's stiffness tuners scale Ke(j,k) by sqrt(t_j t_k).
+void add_stiffness_and_damping(const Beam& beam, const SampledBeam& b, sid::Sid& sid) {
+    const int nq = sid.nq;
+    sid.Ke = sid::Taylor::zeros(0, nq, nq, nq, 2);
+    sid.De = sid::Taylor::zeros(0, nq, nq, nq, 1);
+    std::vector<double> f(b.grid.size());
+    for (int j = 0; j < nq; ++j)
+        for (int k = j; k < nq; ++k) {
+            const auto& cj = b.modes[static_cast<std::size_t>(j)].curvature;
+            const auto& ck = b.modes[static_cast<std::size_t>(k)].curvature;
+            for (std::size_t i = 0; i < f.size(); ++i) {
+                const double c = std::cos(b.twist[i]), s = std::sin(b.twist[i]);
+                const Vec3 e1{c, s, 0}, e2{-s, c, 0};
+                f[i] = b.EI_y[i] * dot(e1, cj[i]) * dot(e1, ck[i]) +
+                       b.EI_x[i] * dot(e2, cj[i]) * dot(e2, ck[i]);
+            }
+            const double tune = std::sqrt(beam.modes[static_cast<std::size_t>(j)].stiffness_tuner *
+                                          beam.modes[static_cast<std::size_t>(k)].stiffness_tuner);
+            sid.Ke.at0(j, k) = sid.Ke.at0(k, j) = tune * b.grid.integrate(f);
+        }
+    // Modal damping (paper B4): D_jj = 2 zeta_j sqrt(K_jj M_jj) = 2 zeta_j M_jj omega_j.
+    for (int j = 0; j < nq; ++j)
+        sid.De.at0(j, j) = 2 * beam.modes[static_cast<std::size_t>(j)].damping_ratio *
+                           std::sqrt(sid.Ke.at0(j, j) * sid.Me.at0(j, j));
+}
+
+/// The unit geometric stiffness matrices go into the first-order terms (paper D3):
+/// Ct1 = K_gt, Cr1 += K_gr, Oe1 += K_gw in the 6-column layout of eq. A14.
+void add_geometric_stiffness(const SampledBeam& b, sid::Sid& sid) {
+    const GeometricStiffness K = geometric_stiffness(b);
+    const int cols[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+    for (int j = 0; j < sid.nq; ++j)
+        for (int k = 0; k < sid.nq; ++k) {
+            const auto jj = static_cast<std::size_t>(j), kk = static_cast<std::size_t>(k);
+            for (std::size_t a = 0; a < 3; ++a) {
+                sid.Ct.at1(j, static_cast<int>(a), k) = K.gt[a][jj][kk];
+                sid.Cr.at1(j, static_cast<int>(a), k) += K.gr[a][jj][kk];
+            }
+            for (int c = 0; c < 6; ++c) {
+                const auto a = static_cast<std::size_t>(cols[c][0]);
+                const auto d = static_cast<std::size_t>(cols[c][1]);
+                double v = K.gw[a][d][jj][kk];
+                if (a != d) v += K.gw[d][a][jj][kk];
+                sid.Oe.at1(j, c, k) += v;
+            }
+        }
+}
+
+} // namespace
+
+sid::Sid make_sid(const Beam& beam) {
+    if (auto problem = check_beam(beam)) throw diag::InternalError("make_sid: " + *problem);
+    const SampledBeam b = sample_beam(beam);
+    sid::Sid sid;
+    sid.nq = static_cast<int>(beam.modes.size());
+    for (const Mode& m : beam.modes) sid.mode_names.push_back(m.name);
+    add_inertia_integrals(b, sid);
+    add_stiffness_and_damping(beam, b, sid);
+    add_geometric_stiffness(b, sid);
+    sid.ksigma = sid::Taylor::zeros(0, sid.nq, 1, sid.nq, 0); // stiffening is in the 1-terms
+    add_nodes(b, sid);
+    return sid;
+}
+
+} // namespace yamsc::beam

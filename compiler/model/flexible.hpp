@@ -1,0 +1,27 @@
+#pragma once
+// Flexible bodies of the checked model: their SID from a file, from a beam
+// description (inline or an ElastoDyn file) computed by beam/, reduced to the modes
+// the model uses, and the mode -> DOF map.
+#include "model/expr_check.hpp"
+
+namespace yamsc::model {
+
+struct FlexibleInputs {
+    const SymbolTable& names;
+    const NameValues& param_values; // defaults, for beam dimensions
+    std::string base_dir;           // relative file names start here
+    diag::Diagnostics& diags;
+    std::vector<std::string>& files_read;
+};
+
+/// Checks a `flexible NAME { ... }` block; nullopt after reporting errors.
+std::optional<Flexible> check_flexible(const ast::FlexibleBody& body, FlexibleInputs& in);
+
+/// The SID restricted to the modes `keep` (indices into sid's modes, in the new order).
+sid::Sid select_modes(const sid::Sid& sid, const std::vector<int>& keep);
+
+/// A polynomial in z from a mode-shape expression: coefficient of z^p at index p.
+std::optional<std::vector<double>> polynomial_in_z(const Expr& e, const NameValues& values,
+                                                   std::string& why);
+
+} // namespace yamsc::model

@@ -1,0 +1,53 @@
+#pragma once
+// A flexible body's Standard Input Data as GiNaC expressions of its elastic
+// coordinates: Taylor blocks T(q) = T0 + Σ T1_k q_k (paper eq. D2) and the motion
+// of its nodes, which bodies attached to the node follow.
+#include "model/model.hpp"
+#include "symbolic/expressions.hpp"
+
+#include <map>
+#include <optional>
+
+namespace yamsc::symbolic {
+
+class ElasticTerms {
+public:
+    ElasticTerms(const model::Flexible& flex, const Symbols& symbols);
+
+    int nq() const { return static_cast<int>(q_.size()); }
+    /// Whether first-order Taylor terms are used (`taylor = 1`).
+    bool first_order() const { return flex_.taylor >= 1; }
+    const sid::Sid& sid() const { return *flex_.sid; }
+    /// DOF index of mode k.
+    int dof(int k) const { return flex_.dofs[static_cast<std::size_t>(k)]; }
+    const GiNaC::ex& q(int k) const { return q_[static_cast<std::size_t>(k)]; }
+    const GiNaC::ex& qd(int k) const { return qd_[static_cast<std::size_t>(k)]; }
+
+    /// Entry (i, j) of a Taylor block at the current q (its first-order part only
+    /// when the body uses Taylor order 1).
+    GiNaC::ex at(const sid::Taylor& t, int i, int j) const;
+    /// The constant part only.
+    static GiNaC::ex at0(const sid::Taylor& t, int i, int j);
+
+private:
+    const model::Flexible& flex_;
+    std::vector<GiNaC::ex> q_, qd_;
+};
+
+/// An exact GiNaC number for a double read from data (shortest round-trip decimal).
+GiNaC::ex data_number(double v);
+
+/// How a node moves relative to its body: p = origin + Φ q + ½ qᵀ Φ¹ q (the
+/// second-order term carries the geometric stiffening of loads at the node),
+/// small rotation θ = Ψ q, and the node frame's constant orientation.
+struct NodeMotion {
+    Vec3 p, pd, pdd;               // position, rate, bias acceleration (body axes)
+    std::map<int, Vec3> dp_dq;     // ∂p/∂q_r
+    Vec3 theta, thetad;            // elastic rotation and its rate
+    std::map<int, Vec3> dtheta_dq; // ∂θ/∂q_r
+    std::optional<Mat3> orientation;
+};
+
+NodeMotion node_motion(const model::Flexible& flex, int node, const Symbols& symbols);
+
+} // namespace yamsc::symbolic
