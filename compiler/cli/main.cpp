@@ -27,7 +27,8 @@ const char* usage_text = R"(usage:
   yamsc sid --elastodyn-tower FILE | --elastodyn-blade FILE --length L [--modes fa1,ss1,..]
             [--stations N] [-o body.sid]
   yamsc --version | --help
-Values accept `deg`: --set theta_t=5deg. Exit status: 0 ok, 1 error in the model or
+eval, lin and sim take --sid body=file.sid: the shape integrals of a flexible body
+declared with `symbolic modes`, read from a SID file. Values accept `deg`: --set theta_t=5deg. Exit status: 0 ok, 1 error in the model or
 its inputs, 2 usage error, 70 internal error.
 )";
 
@@ -107,23 +108,25 @@ int run(int argc, char** argv) {
         return check({a.model(), a.has("--json")}, std::cout, std::cerr);
     }
     if (cmd == "eval") {
-        Args a(argc, argv, 2, {"--q", "--qd", "--u", "--set", "--t"}, {"--json"});
+        Args a(argc, argv, 2, {"--q", "--qd", "--u", "--set", "--sid", "--t"}, {"--json"});
         EvalOptions o;
         o.model = a.model();
         if (a.has("--q")) o.q = parse_list(a.get("--q"), "--q");
         if (a.has("--qd")) o.qd = parse_list(a.get("--qd"), "--qd");
         o.u = a.assignments("--u");
         o.set = a.assignments("--set");
+        o.sid = a.get("--sid");
         o.t = a.number("--t", 0.0);
         return eval(o, std::cout, std::cerr);
     }
     if (cmd == "lin") {
-        Args a(argc, argv, 2, {"--at", "--u", "--set"}, {"--json"});
+        Args a(argc, argv, 2, {"--at", "--u", "--set", "--sid"}, {"--json"});
         LinOptions o;
         o.model = a.model();
         o.at = a.assignments("--at");
         o.u = a.assignments("--u");
         o.set = a.assignments("--set");
+        o.sid = a.get("--sid");
         o.json = a.has("--json");
         return lin(o, std::cout, std::cerr);
     }
@@ -149,7 +152,8 @@ int run(int argc, char** argv) {
     }
     if (cmd == "sim") {
         Args a(argc, argv, 2,
-               {"--tmax", "--dt", "--ic", "--u", "--set", "--method", "-o", "--rtol", "--atol"},
+               {"--tmax", "--dt", "--ic", "--u", "--set", "--sid", "--method", "-o", "--rtol",
+                "--atol"},
                {"-v"});
         SimOptions o;
         o.model = a.model();
@@ -160,6 +164,7 @@ int run(int argc, char** argv) {
         o.ic = a.assignments("--ic");
         o.u = a.assignments("--u");
         o.set = a.assignments("--set");
+        o.sid = a.get("--sid");
         o.method = a.get("--method", "rk4");
         if (o.method != "rk4" && o.method != "cvode")
             throw UsageError("--method must be rk4 or cvode, not '" + o.method + "'");

@@ -3,6 +3,7 @@
 #include "driver/commands.hpp"
 #include "driver/json.hpp"
 #include "driver/pipeline.hpp"
+#include "driver/sid_values.hpp"
 #include "symbolic/dag.hpp"
 
 #include <ostream>
@@ -104,6 +105,9 @@ int eval(const EvalOptions& o, std::ostream& out, std::ostream& err) {
     err << diags.render();
     if (diags.has_errors() || !fe.equations) return 1;
     const symbolic::Equations& eq = *fe.equations;
+    std::vector<Assignment> set =
+        o.sid.empty() ? std::vector<Assignment>{} : sid_parameter_values(*fe.model, o.sid);
+    set.insert(set.end(), o.set.begin(), o.set.end());
     const auto nq = static_cast<std::size_t>(eq.nq());
 
     std::vector<std::string> pnames, unames, dofs;
@@ -114,7 +118,7 @@ int eval(const EvalOptions& o, std::ostream& out, std::ostream& err) {
     }
     for (const auto& u : eq.inputs) unames.push_back(u.name);
     for (const auto& d : eq.dofs) dofs.push_back(d.name);
-    std::vector<double> p = bind_named(pnames, pdefaults, o.set, "parameter");
+    std::vector<double> p = bind_named(pnames, pdefaults, set, "parameter");
     std::vector<double> u =
         bind_named(unames, std::vector<std::optional<double>>(unames.size(), 0.0), o.u, "input");
     std::vector<double> q = o.q.empty() ? std::vector<double>(nq, 0.0) : sized(o.q, nq, "--q");

@@ -32,6 +32,7 @@ struct EvalOptions {
     std::string model;
     std::vector<double> q, qd;      // empty: zeros
     std::vector<Assignment> u, set; // --u, --set
+    std::string sid;                // --sid body=file.sid,..
     double t = 0;
     bool json = true;
 };
@@ -39,6 +40,7 @@ struct EvalOptions {
 struct LinOptions {
     std::string model;
     std::vector<Assignment> at, set, u;
+    std::string sid; // --sid body=file.sid,..
     bool json = false;
 };
 
@@ -46,6 +48,7 @@ struct SimOptions {
     std::string model;
     double tmax = 0, dt = 0;
     std::vector<Assignment> ic, u, set;
+    std::string sid;            // --sid body=file.sid,..
     std::string method = "rk4"; // rk4 | cvode
     std::string output;         // CSV path; empty: summary only
     double rtol = 1e-8, atol = 1e-10;

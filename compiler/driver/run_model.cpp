@@ -5,6 +5,7 @@
 #include "driver/jit.hpp"
 #include "driver/json.hpp"
 #include "driver/pipeline.hpp"
+#include "driver/sid_values.hpp"
 
 #include <yamsc/csv.hpp>
 #include <yamsc/modal.hpp>
@@ -27,7 +28,7 @@ struct Loaded {
 };
 
 std::optional<Loaded> load(const std::string& path, const std::vector<Assignment>& set,
-                           bool verbose, std::ostream& err) {
+                           const std::string& sid_spec, bool verbose, std::ostream& err) {
     diag::Diagnostics diags;
     auto progress = [&](const std::string& s) {
         if (verbose) err << "yamsc: " << s << "\n";
@@ -42,7 +43,11 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
     std::vector<std::optional<double>> defaults;
     for (double v : l.library->default_params())
         defaults.push_back(std::isnan(v) ? std::nullopt : std::optional<double>(v));
-    l.params = bind_named(l.library->param_names(), defaults, set, "parameter");
+    // --sid values first, so that --set still overrides them.
+    std::vector<Assignment> all =
+        sid_spec.empty() ? std::vector<Assignment>{} : sid_parameter_values(*fe.model, sid_spec);
+    all.insert(all.end(), set.begin(), set.end());
+    l.params = bind_named(l.library->param_names(), defaults, all, "parameter");
     l.view = l.library->view(l.params);
     return l;
 }
@@ -65,7 +70,7 @@ std::vector<std::vector<double>> rows(const Dense& m) {
 } // namespace
 
 int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
-    auto loaded = load(o.model, o.set, o.verbose, err);
+    auto loaded = load(o.model, o.set, o.sid, o.verbose, err);
     if (!loaded) return 1;
     const runtime::ModelView& v = loaded->view;
     std::vector<double> q, qd;
@@ -96,7 +101,7 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
 }
 
 int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
-    auto loaded = load(o.model, o.set, false, err);
+    auto loaded = load(o.model, o.set, o.sid, false, err);
     if (!loaded) return 1;
     const runtime::ModelView& v = loaded->view;
     const int nq = v.nq, nu = v.nu;

@@ -222,6 +222,15 @@ private:
         b.com = zero_vec(fb.loc);
         for (auto& e : b.inertia) e = number("0", fb.loc);
         b.flex = std::move(flex);
+        if (b.flex->symbolic) {
+            for (const auto& sp : shape_parameters(b.name, *b.flex)) {
+                if (!declare(sp.name, NameKind::param, static_cast<int>(model_.params.size()),
+                             fb.loc))
+                    return std::nullopt;
+                model_.params.push_back(
+                    {sp.name, "shape integral of flexible body " + b.name, sp.value, fb.loc});
+            }
+        }
         return b;
     }
 

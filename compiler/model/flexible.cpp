@@ -31,6 +31,33 @@ std::shared_ptr<const diag::SourceFile> read_data_file(const std::string& name, 
     return std::make_shared<diag::SourceFile>(path, text.str());
 }
 
+/// A SID of nq modes whose order-0 entries are all unknown (NaN): the shape of a
+/// symbolic body given without data.
+sid::Sid unknown_sid(int nq) {
+    const double unknown = std::nan("");
+    auto block = [&](int nrow, int ncol, double v = std::nan("")) {
+        sid::Taylor t = sid::Taylor::zeros(0, nrow, ncol, nq);
+        for (double& x : t.m0) x = v;
+        return t;
+    };
+    sid::Sid s;
+    s.mass = unknown;
+    s.nq = nq;
+    for (int k = 0; k < nq; ++k) s.mode_names.push_back("mode " + std::to_string(k + 1));
+    s.md_cm = block(3, 1);
+    s.J = block(3, 3);
+    s.Ct = block(nq, 3);
+    s.Cr = block(nq, 3);
+    s.Me = block(nq, nq);
+    s.Gr = block(3, 3 * nq);
+    s.Ge = block(nq, 3 * nq);
+    s.Oe = block(nq, 6);
+    s.ksigma = block(nq, 1, 0.0);
+    s.Ke = block(nq, nq);
+    s.De = block(nq, nq);
+    return s;
+}
+
 class FlexibleChecker {
 public:
     FlexibleChecker(const ast::FlexibleBody& body, FlexibleInputs& in) : b_(body), in_(in) {}
@@ -63,22 +90,24 @@ public:
                           diag::did_you_mean(p.key, {"sid", "modes", "taylor"}));
             }
         }
-        if (b_.symbolic) {
-            error(Kind::NotSupported, b_.loc,
-                  "flexible body '" + b_.name +
-                      "': symbolic shape integrals are not supported yet (use `sid = \"file\"` "
-                      "or a `beam` block)");
-            return std::nullopt;
-        }
         int sources = (sid_file ? 1 : 0) + (b_.beam ? 1 : 0);
+        Flexible flex;
+        flex.taylor = taylor;
+        flex.symbolic = b_.symbolic;
+        if (b_.symbolic && sources == 0) {
+            // No data: every order-0 shape integral is a parameter without a default.
+            data = unknown_sid(static_cast<int>(modes.size()));
+            flex.description = "symbolic shape integrals";
+            if (!modes_of_sid(modes, b_.loc, *data, flex)) return std::nullopt;
+            flex.sid = std::make_shared<const sid::Sid>(std::move(*data));
+            return flex;
+        }
         if (sources != 1) {
             error(sources ? Kind::InvalidValue : Kind::MissingProperty, b_.loc,
                   "flexible body '" + b_.name + "' needs exactly one of `sid = \"file\"` and " +
                       "a `beam` block");
             return std::nullopt;
         }
-        Flexible flex;
-        flex.taylor = taylor;
         if (sid_file) {
             auto file = read_data_file(sid_file->value.str, sid_file->value.loc, in_);
             if (!file) return std::nullopt;
@@ -99,7 +128,10 @@ public:
             if (!beam) return std::nullopt;
             data = beam::make_sid(*beam);
             flex.dofs.clear();
-            for (const auto& m : beam_modes_) flex.dofs.push_back(dof_index(m));
+            for (const auto& m : beam_modes_) {
+                flex.sid_modes.push_back(static_cast<int>(flex.dofs.size()));
+                flex.dofs.push_back(dof_index(m));
+            }
             if (std::count(flex.dofs.begin(), flex.dofs.end(), -1)) return std::nullopt;
         }
         flex.sid = std::make_shared<const sid::Sid>(std::move(*data));
@@ -153,6 +185,7 @@ private:
             int d = dof_index(modes[k]);
             ok = d >= 0 && ok;
             keep.push_back(static_cast<int>(k));
+            flex.sid_modes.push_back(static_cast<int>(k));
             flex.dofs.push_back(d);
         }
         if (ok) data = select_modes(data, keep);

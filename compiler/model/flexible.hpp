@@ -4,6 +4,9 @@
 // the model uses, and the mode -> DOF map.
 #include "model/expr_check.hpp"
 
+#include <functional>
+#include <set>
+
 namespace yamsc::model {
 
 struct FlexibleInputs {
@@ -19,6 +22,18 @@ std::optional<Flexible> check_flexible(const ast::FlexibleBody& body, FlexibleIn
 
 /// The SID restricted to the modes `keep` (indices into sid's modes, in the new order).
 sid::Sid select_modes(const sid::Sid& sid, const std::vector<int>& keep);
+
+/// Calls f(term, node id or -1, block) for every Taylor block of a SID, nodes first.
+void for_each_block(const sid::Sid& s,
+                    const std::function<void(const std::string&, int, const sid::Taylor&)>& f);
+
+/// The parameters of a symbolic flexible body: one per non-zero SID entry (NaN in
+/// the SID: no default).
+struct ShapeParameter {
+    std::string name;
+    std::optional<double> value;
+};
+std::vector<ShapeParameter> shape_parameters(const std::string& body, const Flexible& flex);
 
 /// A polynomial in z from a mode-shape expression: coefficient of z^p at index p.
 std::optional<std::vector<double>> polynomial_in_z(const Expr& e, const NameValues& values,

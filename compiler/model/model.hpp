@@ -59,7 +59,18 @@ struct Flexible {
     std::vector<int> dofs;
     int taylor = 1;          // order of the shape-integral expansion used (0 or 1)
     std::string description; // where the data came from, for dumps and headers
+    /// `symbolic modes`: every non-zero entry of the SID is the parameter named by
+    /// shape_parameter_name(); the SID holds their defaults (NaN: no default).
+    bool symbolic = false;
+    std::vector<int> sid_modes; // index in the original SID of each mode kept
 };
+
+/// The parameter of a SID entry of body `body` (1-based indices, as in SID files):
+/// `tower_Me_1_1`, first-order terms `tower_Ct1_1_3_1` (row, column, mode), node
+/// terms `tower_n50_phi_1_1`, the mass `tower_mass`. Symmetric blocks (J, Me, Ke, De)
+/// name (i, j) and (j, i) alike, smaller index first.
+std::string shape_parameter_name(const std::string& body, const std::string& term, int i, int j,
+                                 int k = -1, int node_id = -1);
 
 struct Body {
     enum class Kind { rigid, flexible };

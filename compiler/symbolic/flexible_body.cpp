@@ -28,37 +28,36 @@ Blocks evaluate(const ElasticTerms& e) {
     const sid::Sid& s = e.sid();
     const int nq = e.nq();
     Blocks b;
-    b.mass = data_number(s.mass);
+    b.mass = e.mass();
     for (int i = 0; i < 3; ++i) {
         // md(q) = md⁰ + md¹ q + ½ qᵀ Ct¹ q: the second-order part is the axial
         // shortening whose derivative Ct(q) = ∂md/∂q carries K_gt (see docs/theory.md).
-        exvector md{e.at(s.md_cm, i, 0)};
-        if (e.first_order() && s.Ct.order >= 1 && !s.Ct.m1.empty())
-            for (int k = 0; k < e.nq(); ++k)
-                for (int l = 0; l < e.nq(); ++l) {
-                    double c = s.Ct.at1(k, i, l);
-                    if (c != 0.0) md.push_back(data_number(0.5 * c) * e.q(k) * e.q(l));
-                }
+        exvector md{e.at("mdCM", s.md_cm, i, 0)};
+        for (int k = 0; k < e.nq(); ++k)
+            for (int l = 0; l < e.nq(); ++l) {
+                ex c = e.at1("Ct", s.Ct, k, i, l);
+                if (!c.is_zero()) md.push_back(numeric(1, 2) * c * e.q(k) * e.q(l));
+            }
         b.md[static_cast<std::size_t>(i)] = sum(md);
         for (int j = 0; j < 3; ++j)
-            b.J.m[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = e.at(s.J, i, j);
+            b.J.m[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = e.at("J", s.J, i, j);
     }
     b.Ct.resize(static_cast<std::size_t>(nq));
     b.Cr.resize(static_cast<std::size_t>(nq));
     for (int k = 0; k < nq; ++k) {
         auto uk = static_cast<std::size_t>(k);
         for (int a = 0; a < 3; ++a) {
-            b.Ct[uk][static_cast<std::size_t>(a)] = e.at(s.Ct, k, a);
-            b.Cr[uk][static_cast<std::size_t>(a)] = e.at(s.Cr, k, a);
+            b.Ct[uk][static_cast<std::size_t>(a)] = e.at("Ct", s.Ct, k, a);
+            b.Cr[uk][static_cast<std::size_t>(a)] = e.at("Cr", s.Cr, k, a);
         }
-        b.ksigma.push_back(e.at(s.ksigma, k, 0));
+        b.ksigma.push_back(e.at("ksigma", s.ksigma, k, 0));
         b.Me.emplace_back();
         b.Ke.emplace_back();
         b.De.emplace_back();
         for (int l = 0; l < nq; ++l) {
-            b.Me.back().push_back(e.at(s.Me, k, l));
-            b.Ke.back().push_back(e.at(s.Ke, k, l));
-            b.De.back().push_back(e.at(s.De, k, l));
+            b.Me.back().push_back(e.at("Me", s.Me, k, l));
+            b.Ke.back().push_back(e.at("Ke", s.Ke, k, l));
+            b.De.back().push_back(e.at("De", s.De, k, l));
         }
     }
     return b;
@@ -75,8 +74,7 @@ struct Rows {
 
 void add_flexible_body(const model::Body& body, const FrameState& f, const Vec3& g,
                        const Symbols& symbols, Matrix& M, std::vector<exvector>& F) {
-    const model::Flexible& flex = *body.flex;
-    ElasticTerms el(flex, symbols);
+    ElasticTerms el(body, symbols);
     const sid::Sid& s = el.sid();
     const int nq = el.nq();
     const auto un = static_cast<std::size_t>(nq);
@@ -146,16 +144,15 @@ void add_flexible_body(const model::Body& body, const FrameState& f, const Vec3&
     for (int k = 0; k < nq; ++k) ctq = ctq + el.qd(k) * b.Ct[static_cast<std::size_t>(k)];
     // d/dt(Ct)ᵀ q' = Σ_kl Ct¹_k,l q'_k q'_l completes the acceleration of the mass centre.
     Vec3 ct_dot;
-    if (el.first_order() && s.Ct.order >= 1 && !s.Ct.m1.empty())
-        for (int a = 0; a < 3; ++a) {
-            exvector t;
-            for (int k = 0; k < nq; ++k)
-                for (int l = 0; l < nq; ++l) {
-                    double c = s.Ct.at1(k, a, l);
-                    if (c != 0.0) t.push_back(data_number(c) * el.qd(k) * el.qd(l));
-                }
-            ct_dot[static_cast<std::size_t>(a)] = sum(t);
-        }
+    for (int a = 0; a < 3; ++a) {
+        exvector t;
+        for (int k = 0; k < nq; ++k)
+            for (int l = 0; l < nq; ++l) {
+                ex c = el.at1("Ct", s.Ct, k, a, l);
+                if (!c.is_zero()) t.push_back(c * el.qd(k) * el.qd(l));
+            }
+        ct_dot[static_cast<std::size_t>(a)] = sum(t);
+    }
     Vec3 k_wx = 2 * cross(w, ctq) + cross(w, cross(w, b.md)) + ct_dot;
     // Σ_j Gr_j q'_j and Σ_j Ge_j q'_j (Gr: 3 x 3nq, Ge: nq x 3nq, block j = columns 3j..3j+2).
     Mat3 gr;
@@ -163,12 +160,12 @@ void add_flexible_body(const model::Body& body, const FrameState& f, const Vec3&
     for (int j = 0; j < nq; ++j)
         for (int c = 0; c < 3; ++c) {
             for (int i = 0; i < 3; ++i) {
-                ex x = el.at(s.Gr, i, 3 * j + c);
+                ex x = el.at("Gr", s.Gr, i, 3 * j + c);
                 auto& cell = gr.m[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)];
                 if (!x.is_zero()) cell = cell + x * el.qd(j);
             }
             for (int k = 0; k < nq; ++k) {
-                ex x = el.at(s.Ge, k, 3 * j + c);
+                ex x = el.at("Ge", s.Ge, k, 3 * j + c);
                 auto& cell = ge_rows[static_cast<std::size_t>(k)][static_cast<std::size_t>(c)];
                 if (!x.is_zero()) cell = cell + x * el.qd(j);
             }
@@ -184,7 +181,7 @@ void add_flexible_body(const model::Body& body, const FrameState& f, const Vec3&
         exvector t{dot(b.Ct[uk], g - f.a), -dot(b.Cr[uk], f.alpha), -dot(ge_rows[uk], w),
                    -b.ksigma[uk]};
         for (std::size_t c = 0; c < 6; ++c) {
-            ex oe = el.at(s.Oe, k, static_cast<int>(c));
+            ex oe = el.at("Oe", s.Oe, k, static_cast<int>(c));
             if (!oe.is_zero()) t.push_back(-oe * omega2[c]);
         }
         for (int l = 0; l < nq; ++l) {

@@ -113,7 +113,7 @@ FrameState apply_step(const FrameState& f, const model::Step& step, Symbols& sym
     case model::Step::Kind::node: {
         if (!parent || !parent->flex)
             throw diag::InternalError("a node step without a flexible parent body");
-        NodeMotion node = node_motion(*parent->flex, step.node, symbols);
+        NodeMotion node = node_motion(*parent, step.node, symbols);
         FrameState n = move_origin(f, node.p, node.pd, node.pdd, node.dp_dq);
         if (step.exact_rotation) {
             // Rotation matrices of the slopes: about x, then y, then z.

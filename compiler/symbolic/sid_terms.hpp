@@ -12,25 +12,35 @@ namespace yamsc::symbolic {
 
 class ElasticTerms {
 public:
-    ElasticTerms(const model::Flexible& flex, const Symbols& symbols);
+    ElasticTerms(const model::Body& body, const Symbols& symbols);
 
     int nq() const { return static_cast<int>(q_.size()); }
+    const sid::Sid& sid() const { return *flex_.sid; }
     /// Whether first-order Taylor terms are used (`taylor = 1`).
     bool first_order() const { return flex_.taylor >= 1; }
-    const sid::Sid& sid() const { return *flex_.sid; }
     /// DOF index of mode k.
     int dof(int k) const { return flex_.dofs[static_cast<std::size_t>(k)]; }
     const GiNaC::ex& q(int k) const { return q_[static_cast<std::size_t>(k)]; }
     const GiNaC::ex& qd(int k) const { return qd_[static_cast<std::size_t>(k)]; }
 
-    /// Entry (i, j) of a Taylor block at the current q (its first-order part only
-    /// when the body uses Taylor order 1).
-    GiNaC::ex at(const sid::Taylor& t, int i, int j) const;
-    /// The constant part only.
-    static GiNaC::ex at0(const sid::Taylor& t, int i, int j);
+    /// The body's mass: a number, or its parameter for `symbolic modes`.
+    GiNaC::ex mass() const;
+    /// Entry (i, j) of SID block `term` (of node `node` if >= 0) at the current q:
+    /// T0 + Σ T1_k q_k, the first-order part only with `taylor = 1`.
+    GiNaC::ex at(const std::string& term, const sid::Taylor& t, int i, int j, int node = -1) const;
+    /// The constant part T0(i, j), and a first-order coefficient T1(i, j, k) (zero
+    /// when the body uses order 0).
+    GiNaC::ex at0(const std::string& term, const sid::Taylor& t, int i, int j, int node = -1) const;
+    GiNaC::ex at1(const std::string& term, const sid::Taylor& t, int i, int j, int k,
+                  int node = -1) const;
 
 private:
+    /// A data value as a number, or as its parameter for symbolic bodies.
+    GiNaC::ex value(double v, const std::string& name) const;
+
+    const model::Body& body_;
     const model::Flexible& flex_;
+    const Symbols& symbols_;
     std::vector<GiNaC::ex> q_, qd_;
 };
 
@@ -48,6 +58,6 @@ struct NodeMotion {
     std::optional<Mat3> orientation;
 };
 
-NodeMotion node_motion(const model::Flexible& flex, int node, const Symbols& symbols);
+NodeMotion node_motion(const model::Body& body, int node, const Symbols& symbols);
 
 } // namespace yamsc::symbolic
