@@ -83,6 +83,18 @@ inline Compiled compile_model(const symbolic::Equations& eq,
     return c;
 }
 
+/// Kinetic energy q'ᵀ M(q) q' / 2 of a scleronomic model at x = [q, q'].
+inline double kinetic_energy(const runtime::ModelView& v, double t, const double* x) {
+    const int nq = v.nq;
+    std::vector<double> M(static_cast<std::size_t>(nq * nq));
+    v.mass_matrix(t, x, nullptr, M.data());
+    double T = 0;
+    for (int i = 0; i < nq; ++i)
+        for (int j = 0; j < nq; ++j)
+            T += 0.5 * x[nq + i] * M[static_cast<std::size_t>(i * nq + j)] * x[nq + j];
+    return T;
+}
+
 inline double max_abs(const std::vector<double>& v) {
     double m = 0;
     for (double x : v) m = std::max(m, std::fabs(x));
