@@ -17,7 +17,8 @@ const std::string models[] = {"models/pendulum.mbd",
                               "models/nrel5mw_land_2dof.mbd",
                               "models/nrel5mw_blade.mbd",
                               "tests/physics/models/tumbling.mbd",
-                              "tests/physics/models/free_beam.mbd"};
+                              "tests/physics/models/free_beam.mbd",
+                              "tests/physics/models/tower_top_mass.mbd"};
 
 struct State {
     std::vector<double> q, qd, u;
