@@ -29,10 +29,10 @@
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
 //   mass_matrix   3 adds, 12 muls, 0 divs, 2 calls
 //   forcing       16 adds, 36 muls, 0 divs, 4 calls
-//   jacobians     23 adds, 76 muls, 0 divs, 4 calls
+//   jacobians     26 adds, 85 muls, 0 divs, 4 calls
 //   outputs       7 adds, 15 muls, 0 divs, 4 calls
 //   rhs           22 adds, 52 muls, 3 divs, 4 calls
-//   rhs_jacobian  50 adds, 135 muls, 11 divs, 4 calls
+//   rhs_jacobian  54 adds, 137 muls, 11 divs, 4 calls
 
 #include "double_pendulum.hpp"
 
@@ -148,20 +148,21 @@ void jacobians(double t, const double* q, const double* qd, const double* u, con
     const double t8 = p.m2*p.g*t4;
     const double t9 = t8 - qd[0]*qd[0]*p.m2*p.L1*t3;
     const double t10 = p.L2*t9;
-    const double t11 = qd[0] + qd[1];
-    const double t12 = p.L2*t4;
+    const double t11 = p.L1*t1*(p.m2*p.g*t6 + qd[0]*qd[0]*p.m2*p.L1*t1);
+    const double t12 = qd[0] + qd[1];
+    const double t13 = p.L2*t4;
     dF_dq[0] = u[1]*p.L1*t1*t4 + t5 + u[1]*p.L1*t3*t6 + p.m2*p.L1*p.g*t3*t4 + t7 - p.m1*p.L1*p.g*t0 - p.m2*p.L1*p.g*t1*t6;
-    dF_dq[1] = t10 + t7 + p.L1*t3*t9 - p.L1*t3*(t8 - p.m2*(qd[0]*qd[0]*p.L1*t3 + p.L2*t11*t11));
+    dF_dq[1] = t10 + t7 + t11 + p.L1*t3*t9 - t11 - p.L1*t3*(t8 - p.m2*(qd[0]*qd[0]*p.L1*t3 + p.L2*t12*t12));
     dF_dq[2] = t5 + t7;
     dF_dq[3] = t10 + t7 - p.k;
-    dF_dqd[0] = 2.0*p.m2*p.L1*t1*(p.L2*t11 + qd[0]*p.L1*t3) - 2.0*qd[0]*p.m2*p.L1*p.L2*t1 - 2.0*qd[0]*p.m2*p.L1*p.L1*t3*t1;
-    dF_dqd[1] = 2.0*p.m2*p.L1*p.L2*t1*t11;
+    dF_dqd[0] = p.m2*p.L1*t1*(2.0*p.L2*t12 + 2.0*qd[0]*p.L1*t3) - 2.0*qd[0]*p.m2*p.L1*p.L2*t1 - 2.0*qd[0]*p.m2*p.L1*p.L1*t3*t1;
+    dF_dqd[1] = 2.0*p.m2*p.L1*p.L2*t1*t12;
     dF_dqd[2] = -2.0*qd[0]*p.m2*p.L1*p.L2*t1;
     dF_dqd[3] = -p.c;
     dF_du[0] = 1.0;
-    dF_du[1] = t12 + p.L1*t3*t4 - p.L1*t1*t6;
+    dF_du[1] = t13 + p.L1*t3*t4 - p.L1*t1*t6;
     dF_du[2] = 0.0;
-    dF_du[3] = t12;
+    dF_du[3] = t13;
 }
 
 // the model's outputs y(q, q', u, t)
@@ -240,14 +241,17 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     ldlt_solve(M, 2, qdd, 1);
     const double t13 = p.m2*p.L2*p.g*t5;
     const double t14 = u[1]*p.L2*t10;
-    const double t15 = t7 - x[2]*x[2]*p.m2*p.L1*t0;
-    const double t16 = p.L2*t15;
+    const double t15 = p.m2*p.L1*p.L2*qdd[0]*t2;
+    const double t16 = p.m2*p.L1*p.L1*qdd[0]*t0*t2;
+    const double t17 = t7 - x[2]*x[2]*p.m2*p.L1*t0;
+    const double t18 = p.L2*t17;
+    const double t19 = p.L1*t2*t11;
     J[8] = u[1]*p.L1*t2*t5 + t13 + u[1]*p.L1*t0*t10 + p.m2*p.L1*p.g*t0*t5 + t14 - p.m1*p.L1*p.g*t4 - p.m2*p.L1*p.g*t2*t10;
-    J[9] = t16 + t14 + p.L1*t0*t15 + p.m2*p.L1*p.L2*qdd[1]*t2 + 2.0*p.m2*qdd[0]*(p.L1*t2*t1 - p.L1*p.L1*t0*t2) - p.L1*t0*t9;
-    J[10] = 2.0*p.m2*p.L1*t2*(p.L2*t8 + x[2]*p.L1*t0) - 2.0*x[2]*p.m2*p.L1*p.L2*t2 - 2.0*x[2]*p.m2*p.L1*p.L1*t0*t2;
+    J[9] = t15 + p.m2*p.L1*t2*(qdd[0]*t1 + p.L2*qdd[1]) + t16 + t18 + t14 + t19 + p.L1*t0*t17 - 2.0*t16 - t19 - p.L1*t0*t9;
+    J[10] = p.m2*p.L1*t2*(2.0*p.L2*t8 + 2.0*x[2]*p.L1*t0) - 2.0*x[2]*p.m2*p.L1*p.L2*t2 - 2.0*x[2]*p.m2*p.L1*p.L1*t0*t2;
     J[11] = 2.0*p.m2*p.L1*p.L2*t2*t8;
     J[12] = t13 + t14;
-    J[13] = p.m2*p.L1*p.L2*qdd[0]*t2 + t16 + t14 - p.k;
+    J[13] = t15 + t18 + t14 - p.k;
     J[14] = -2.0*x[2]*p.m2*p.L1*p.L2*t2;
     J[15] = -p.c;
     ldlt_solve(M, 2, J + 8, 4);

@@ -29,10 +29,10 @@
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
 //   mass_matrix   3 adds, 12 muls, 0 divs, 2 calls
 //   forcing       16 adds, 36 muls, 0 divs, 4 calls
-//   jacobians     23 adds, 76 muls, 0 divs, 4 calls
+//   jacobians     26 adds, 85 muls, 0 divs, 4 calls
 //   outputs       7 adds, 15 muls, 0 divs, 4 calls
 //   rhs           22 adds, 52 muls, 3 divs, 4 calls
-//   rhs_jacobian  50 adds, 135 muls, 11 divs, 4 calls
+//   rhs_jacobian  54 adds, 137 muls, 11 divs, 4 calls
 
 #ifndef double_pendulum_YAMSC_GENERATED_H
 #define double_pendulum_YAMSC_GENERATED_H

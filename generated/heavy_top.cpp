@@ -29,7 +29,7 @@
 //   jacobians     73 adds, 234 muls, 0 divs, 4 calls
 //   outputs       0 adds, 1 muls, 0 divs, 1 calls
 //   rhs           35 adds, 101 muls, 6 divs, 4 calls
-//   rhs_jacobian  136 adds, 357 muls, 24 divs, 4 calls
+//   rhs_jacobian  147 adds, 386 muls, 24 divs, 4 calls
 
 #include "heavy_top.hpp"
 
@@ -141,44 +141,44 @@ void jacobians(double t, const double* q, const double* qd, const double* u, con
     (void)t;
     (void)u;
     (void)dF_du;
-    const double t0 = std::cos(q[1]);
-    const double t1 = std::sin(q[1]);
-    const double t2 = std::cos(q[2]);
-    const double t3 = std::sin(q[2]);
-    const double t4 = qd[0]*qd[1]*t1*t2 + qd[0]*qd[2]*t3*t0;
-    const double t5 = qd[0]*t3*t1 + qd[1]*t2;
-    const double t6 = qd[2] + qd[0]*t0;
-    const double t7 = p.A*t4 + qd[0]*p.A*t1*t5 + qd[0]*p.C*t3*t0*t6 - qd[0]*p.C*t1*t5 - p.l*(p.m*p.g*t3*t0 - p.m*(p.l*t4 + qd[0]*p.l*t1*t5 - qd[0]*p.l*t3*t0*t6)) - qd[0]*p.A*t3*t0*t6;
-    const double t8 = qd[0]*t1*t2 - qd[1]*t3;
-    const double t9 = qd[2]*t8 + qd[0]*qd[1]*t3*t0;
-    const double t10 = qd[0]*qd[2]*t0*t2 - qd[0]*qd[1]*t3*t1;
-    const double t11 = p.l*(p.m*p.g*t0*t2 - p.m*(p.l*t10 + qd[0]*p.l*t1*t8 - qd[0]*p.l*t0*t2*t6)) + qd[0]*p.A*t0*t2*t6 + qd[0]*p.C*t1*t8 - qd[0]*p.C*t0*t2*t6 - p.A*t10 - qd[0]*p.A*t1*t8;
-    const double t12 = qd[2]*t5 - qd[0]*qd[1]*t0*t2;
-    const double t13 = qd[2]*t3*t1 - qd[1]*t0*t2;
-    const double t14 = p.A*t3*t1*t6 + p.A*t0*t5 - p.m*p.l*(p.l*t13 - p.l*t3*t1*t6 - p.l*t0*t5) - p.C*t0*t5 - p.A*t13 - p.C*t3*t1*t6;
-    const double t15 = qd[2]*t1*t2 + qd[1]*t3*t0;
-    const double t16 = p.m*p.l*(p.l*t1*t2*t6 + p.l*t0*t8 - p.l*t15) + p.A*t0*t8 + p.A*t1*t2*t6 - p.C*t1*t2*t6 - p.C*t0*t8 - p.A*t15;
-    const double t17 = qd[0]*t3*t0 - qd[2]*t3;
-    const double t18 = p.A*t3*t6 + p.m*p.l*(p.l*t3*t6 + p.l*t17) + p.A*t17 - p.C*t3*t6;
-    const double t19 = qd[2]*t2 - qd[0]*t0*t2;
-    const double t20 = p.A*t2*t6 + p.m*p.l*(p.l*t2*t6 - p.l*t19) - p.C*t2*t6 - p.A*t19;
+    const double t0 = std::sin(q[1]);
+    const double t1 = std::cos(q[2]);
+    const double t2 = std::sin(q[2]);
+    const double t3 = std::cos(q[1]);
+    const double t4 = qd[0]*qd[1]*t0*t1 + qd[0]*qd[2]*t2*t3;
+    const double t5 = qd[2] + qd[0]*t3;
+    const double t6 = qd[0]*t2*t0 + qd[1]*t1;
+    const double t7 = p.l*(p.m*p.g*t2*t3 - p.m*(p.l*t4 + qd[0]*p.l*t0*t6 - qd[0]*p.l*t2*t3*t5)) + qd[0]*p.C*t0*t6 + qd[0]*p.A*t2*t3*t5 - p.A*t4 - qd[0]*p.C*t2*t3*t5 - qd[0]*p.A*t0*t6;
+    const double t8 = qd[2]*t6 - qd[0]*qd[1]*t3*t1;
+    const double t9 = qd[0]*t0*t1 - qd[1]*t2;
+    const double t10 = qd[2]*t9 + qd[0]*qd[1]*t2*t3;
+    const double t11 = qd[0]*qd[2]*t3*t1 - qd[0]*qd[1]*t2*t0;
+    const double t12 = p.l*(p.m*(p.l*t11 + qd[0]*p.l*t0*t9 - qd[0]*p.l*t3*t1*t5) - p.m*p.g*t3*t1) + p.A*t11 + qd[0]*p.C*t3*t1*t5 + qd[0]*p.A*t0*t9 - qd[0]*p.C*t0*t9 - qd[0]*p.A*t3*t1*t5;
+    const double t13 = qd[2]*t0*t1 + qd[1]*t2*t3;
+    const double t14 = p.A*t13 + p.m*p.l*(p.l*t13 - p.l*t0*t1*t5 - p.l*t3*t9) + p.C*t0*t1*t5 + p.C*t3*t9 - p.A*t3*t9 - p.A*t0*t1*t5;
+    const double t15 = qd[2]*t2*t0 - qd[1]*t3*t1;
+    const double t16 = p.m*p.l*(p.l*t15 - p.l*t2*t0*t5 - p.l*t3*t6) + p.A*t15 + p.C*t3*t6 + p.C*t2*t0*t5 - p.A*t2*t0*t5 - p.A*t3*t6;
+    const double t17 = qd[0]*t2*t3 - qd[2]*t2;
+    const double t18 = p.A*t2*t5 + p.m*p.l*(p.l*t2*t5 + p.l*t17) + p.A*t17 - p.C*t2*t5;
+    const double t19 = qd[2]*t1 - qd[0]*t3*t1;
+    const double t20 = p.A*t1*t5 + p.m*p.l*(p.l*t1*t5 - p.l*t19) - p.C*t1*t5 - p.A*t19;
     dF_dq[0] = 0.0;
-    dF_dq[1] = qd[0]*qd[1]*p.C*t0*t0 + t1*t2*t7 + t3*t1*t11 - t3*t0*(p.l*(p.m*(p.l*t9 - p.l*t6*t8) - p.m*p.g*t1*t2) + p.A*t9 + p.C*t6*t8 - p.A*t6*t8) - qd[0]*qd[1]*p.C*t1*t1 - t0*t2*(p.A*t6*t5 + p.l*(p.m*p.g*t3*t1 + p.m*(p.l*t6*t5 - p.l*t12)) - p.C*t6*t5 - p.A*t12);
+    dF_dq[1] = qd[0]*qd[1]*p.C*t3*t3 - t0*t1*t7 - t3*t1*(p.A*t5*t6 + p.l*(p.m*p.g*t2*t0 + p.m*(p.l*t5*t6 - p.l*t8)) - p.C*t5*t6 - p.A*t8) - t2*t3*(p.l*(p.m*(p.l*t10 - p.l*t5*t9) - p.m*p.g*t0*t1) + p.A*t10 + p.C*t5*t9 - p.A*t5*t9) - t2*t0*t12 - qd[0]*qd[1]*p.C*t0*t0;
     dF_dq[2] = 0.0;
     dF_dq[3] = 0.0;
-    dF_dq[4] = t2*t11 - t3*t7;
+    dF_dq[4] = t2*t7 - t1*t12;
     dF_dq[5] = 0.0;
     dF_dq[6] = 0.0;
-    dF_dq[7] = qd[0]*qd[1]*p.C*t0;
+    dF_dq[7] = qd[0]*qd[1]*p.C*t3;
     dF_dq[8] = 0.0;
-    dF_dqd[0] = qd[1]*p.C*t0*t1 + t3*t1*t16 - t1*t2*t14;
-    dF_dqd[1] = qd[0]*p.C*t0*t1 - t3*t1*t18 - t1*t2*t20;
-    dF_dqd[2] = p.C*t1*t2*t5 - p.C*t3*t1*t8;
-    dF_dqd[3] = t3*t14 + t2*t16;
-    dF_dqd[4] = t3*t20 - t2*t18;
-    dF_dqd[5] = -p.C*t3*t5 - p.C*t2*t8;
-    dF_dqd[6] = qd[1]*p.C*t1;
-    dF_dqd[7] = qd[0]*p.C*t1;
+    dF_dqd[0] = qd[1]*p.C*t3*t0 + t0*t1*t16 - t2*t0*t14;
+    dF_dqd[1] = qd[0]*p.C*t3*t0 - t2*t0*t18 - t0*t1*t20;
+    dF_dqd[2] = p.C*t0*t1*t6 - p.C*t2*t0*t9;
+    dF_dqd[3] = -t2*t16 - t1*t14;
+    dF_dqd[4] = t2*t20 - t1*t18;
+    dF_dqd[5] = -p.C*t2*t6 - p.C*t1*t9;
+    dF_dqd[6] = qd[1]*p.C*t0;
+    dF_dqd[7] = qd[0]*p.C*t0;
     dF_dqd[8] = 0.0;
 }
 
@@ -270,28 +270,30 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     ldlt_factor(M, 3);
     ldlt_solve(M, 3, qdd, 1);
     const double t11 = x[3]*x[4]*t2*t3 + x[3]*x[5]*t1*t0;
-    const double t12 = p.A*t11 + x[3]*p.A*t2*t8 + x[3]*p.C*t1*t0*t6 - x[3]*p.C*t2*t8 - p.l*(p.m*p.g*t1*t0 - p.m*(p.l*t11 + x[3]*p.l*t2*t8 - x[3]*p.l*t1*t0*t6)) - x[3]*p.A*t1*t0*t6;
+    const double t12 = p.l*(p.m*p.g*t1*t0 - p.m*(p.l*t11 + x[3]*p.l*t2*t8 - x[3]*p.l*t1*t0*t6)) + x[3]*p.C*t2*t8 + x[3]*p.A*t1*t0*t6 - p.A*t11 - x[3]*p.C*t1*t0*t6 - x[3]*p.A*t2*t8;
     const double t13 = x[3]*x[5]*t0*t3 - x[3]*x[4]*t1*t2;
-    const double t14 = p.l*(p.m*p.g*t0*t3 - p.m*(p.l*t13 + x[3]*p.l*t2*t4 - x[3]*p.l*t0*t3*t6)) + x[3]*p.A*t0*t3*t6 + x[3]*p.C*t2*t4 - x[3]*p.C*t0*t3*t6 - p.A*t13 - x[3]*p.A*t2*t4;
-    const double t15 = x[5]*t1*t2 - x[4]*t0*t3;
-    const double t16 = p.A*t1*t2*t6 + p.A*t0*t8 - p.m*p.l*(p.l*t15 - p.l*t1*t2*t6 - p.l*t0*t8) - p.C*t0*t8 - p.A*t15 - p.C*t1*t2*t6;
+    const double t14 = p.l*(p.m*(p.l*t13 + x[3]*p.l*t2*t4 - x[3]*p.l*t0*t3*t6) - p.m*p.g*t0*t3) + p.A*t13 + x[3]*p.C*t0*t3*t6 + x[3]*p.A*t2*t4 - x[3]*p.C*t2*t4 - x[3]*p.A*t0*t3*t6;
+    const double t15 = p.m*p.l*p.l*qdd[0]*t0*t3 + p.A*qdd[0]*t0*t3;
+    const double t16 = p.A*qdd[0]*t1*t0 + p.m*p.l*p.l*qdd[0]*t1*t0;
     const double t17 = x[5]*t2*t3 + x[4]*t1*t0;
-    const double t18 = p.m*p.l*(p.l*t2*t3*t6 + p.l*t0*t4 - p.l*t17) + p.A*t0*t4 + p.A*t2*t3*t6 - p.C*t2*t3*t6 - p.C*t0*t4 - p.A*t17;
-    const double t19 = x[3]*t1*t0 - x[5]*t1;
-    const double t20 = p.A*t1*t6 + p.m*p.l*(p.l*t1*t6 + p.l*t19) + p.A*t19 - p.C*t1*t6;
-    const double t21 = x[5]*t3 - x[3]*t0*t3;
-    const double t22 = p.A*t3*t6 + p.m*p.l*(p.l*t3*t6 - p.l*t21) - p.C*t3*t6 - p.A*t21;
+    const double t18 = p.A*t17 + p.m*p.l*(p.l*t17 - p.l*t2*t3*t6 - p.l*t0*t4) + p.C*t2*t3*t6 + p.C*t0*t4 - p.A*t0*t4 - p.A*t2*t3*t6;
+    const double t19 = x[5]*t1*t2 - x[4]*t0*t3;
+    const double t20 = p.m*p.l*(p.l*t19 - p.l*t1*t2*t6 - p.l*t0*t8) + p.A*t19 + p.C*t0*t8 + p.C*t1*t2*t6 - p.A*t1*t2*t6 - p.A*t0*t8;
+    const double t21 = x[3]*t1*t0 - x[5]*t1;
+    const double t22 = p.A*t1*t6 + p.m*p.l*(p.l*t1*t6 + p.l*t21) + p.A*t21 - p.C*t1*t6;
+    const double t23 = x[5]*t3 - x[3]*t0*t3;
+    const double t24 = p.A*t3*t6 + p.m*p.l*(p.l*t3*t6 - p.l*t23) - p.C*t3*t6 - p.A*t23;
     J[18] = 0.0;
-    J[19] = x[3]*x[4]*p.C*t0*t0 + t2*t3*t12 + t1*t2*t14 + p.C*qdd[2]*t2 - t1*t0*t7 - x[3]*x[4]*p.C*t2*t2 - t0*t3*t10 - 2.0*qdd[0]*(p.A*t0*t2*t3*t3 + p.A*t1*t1*t0*t2 + p.m*(p.l*p.l*t1*t1*t0*t2 + p.l*p.l*t0*t2*t3*t3) - p.C*t0*t2);
+    J[19] = x[3]*x[4]*p.C*t0*t0 + p.C*qdd[0]*t0*t2 + p.C*t2*(qdd[2] + qdd[0]*t0) - t2*t3*t12 - t0*t3*t10 - t1*t0*t7 - t1*t2*t14 - x[3]*x[4]*p.C*t2*t2 - t0*t3*(p.m*p.l*(p.l*qdd[0]*t2*t3 - p.l*qdd[1]*t1) - p.A*(qdd[1]*t1 - qdd[0]*t2*t3)) - t2*t3*t15 - t1*t0*(p.A*(qdd[0]*t1*t2 + qdd[1]*t3) + p.m*p.l*(p.l*qdd[0]*t1*t2 + p.l*qdd[1]*t3)) - t1*t2*t16;
     J[20] = 0.0;
-    J[21] = x[4]*p.C*t0*t2 + t1*t2*t18 - t2*t3*t16;
-    J[22] = x[3]*p.C*t0*t2 - t1*t2*t20 - t2*t3*t22;
+    J[21] = x[4]*p.C*t0*t2 + t2*t3*t20 - t1*t2*t18;
+    J[22] = x[3]*p.C*t0*t2 - t1*t2*t22 - t2*t3*t24;
     J[23] = p.C*t2*t3*t8 - p.C*t1*t2*t4;
     J[24] = 0.0;
-    J[25] = t3*t14 - t1*t12;
+    J[25] = t1*t15 + t1*t12 - t3*t16 - t3*t14;
     J[26] = 0.0;
-    J[27] = t1*t16 + t3*t18;
-    J[28] = t1*t22 - t3*t20;
+    J[27] = -t1*t20 - t3*t18;
+    J[28] = t1*t24 - t3*t22;
     J[29] = -p.C*t1*t8 - p.C*t3*t4;
     J[30] = 0.0;
     J[31] = p.C*qdd[0]*t2 + x[3]*x[4]*p.C*t0;

@@ -29,7 +29,7 @@
 //   jacobians     73 adds, 234 muls, 0 divs, 4 calls
 //   outputs       0 adds, 1 muls, 0 divs, 1 calls
 //   rhs           35 adds, 101 muls, 6 divs, 4 calls
-//   rhs_jacobian  136 adds, 357 muls, 24 divs, 4 calls
+//   rhs_jacobian  147 adds, 386 muls, 24 divs, 4 calls
 
 #ifndef heavy_top_YAMSC_GENERATED_H
 #define heavy_top_YAMSC_GENERATED_H

@@ -26,10 +26,10 @@
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
 //   mass_matrix   0 adds, 0 muls, 0 divs, 0 calls
 //   forcing       30 adds, 51 muls, 0 divs, 0 calls
-//   jacobians     12 adds, 15 muls, 0 divs, 0 calls
+//   jacobians     14 adds, 17 muls, 0 divs, 0 calls
 //   outputs       1 adds, 0 muls, 0 divs, 0 calls
 //   rhs           40 adds, 65 muls, 6 divs, 0 calls
-//   rhs_jacobian  88 adds, 116 muls, 24 divs, 0 calls
+//   rhs_jacobian  90 adds, 118 muls, 24 divs, 0 calls
 
 #pragma once
 

@@ -34,10 +34,10 @@
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
 //   mass_matrix   16 adds, 36 muls, 0 divs, 4 calls
 //   forcing       30 adds, 88 muls, 0 divs, 4 calls
-//   jacobians     51 adds, 171 muls, 0 divs, 4 calls
+//   jacobians     50 adds, 167 muls, 0 divs, 4 calls
 //   outputs       0 adds, 1 muls, 0 divs, 0 calls
 //   rhs           44 adds, 117 muls, 3 divs, 4 calls
-//   rhs_jacobian  90 adds, 244 muls, 11 divs, 4 calls
+//   rhs_jacobian  92 adds, 263 muls, 11 divs, 4 calls
 
 #pragma once
 

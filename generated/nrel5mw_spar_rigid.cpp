@@ -42,10 +42,10 @@
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
 //   mass_matrix   27 adds, 55 muls, 0 divs, 6 calls
 //   forcing       31 adds, 80 muls, 0 divs, 6 calls
-//   jacobians     49 adds, 174 muls, 0 divs, 6 calls
+//   jacobians     53 adds, 177 muls, 0 divs, 6 calls
 //   outputs       1 adds, 3 muls, 0 divs, 1 calls
 //   rhs           64 adds, 144 muls, 6 divs, 6 calls
-//   rhs_jacobian  146 adds, 334 muls, 24 divs, 6 calls
+//   rhs_jacobian  170 adds, 395 muls, 24 divs, 6 calls
 
 #include "nrel5mw_spar_rigid.hpp"
 
@@ -199,43 +199,45 @@ void forcing(double t, const double* q, const double* qd, const double* u, const
 void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du) {
     (void)t;
     const double t0 = std::cos(q[1]);
-    const double t1 = qd[1]*qd[1]*p.L_T;
-    const double t2 = std::sin(q[2]);
-    const double t3 = -p.theta_t;
-    const double t4 = std::sin(t3);
-    const double t5 = std::sin(q[1]);
-    const double t6 = std::cos(t3);
-    const double t7 = t0*t4 + t5*t6;
-    const double t8 = t0*t6 - t5*t4;
-    const double t9 = qd[1]*qd[1]*p.z_NR + t1;
-    const double t10 = std::cos(q[2]);
-    const double t11 = p.L_T + p.z_NR;
-    const double t12 = p.x_NR - t4*t11;
-    const double t13 = qd[1]*p.L_T;
-    const double t14 = qd[1]*p.z_NG + t13;
-    const double t15 = qd[1]*p.z_NR + t13;
-    const double t16 = qd[1]*p.x_NR - t4*t15;
+    const double t1 = -p.theta_t;
+    const double t2 = std::sin(t1);
+    const double t3 = std::sin(q[1]);
+    const double t4 = std::cos(t1);
+    const double t5 = t0*t2 + t3*t4;
+    const double t6 = std::sin(q[2]);
+    const double t7 = qd[1]*qd[1]*p.L_T;
+    const double t8 = qd[1]*qd[1]*p.z_NR + t7;
+    const double t9 = t0*t4 - t3*t2;
+    const double t10 = p.g*p.M_T*t3*t3;
+    const double t11 = p.g*p.M_P*t3*t3;
+    const double t12 = std::cos(q[2]);
+    const double t13 = p.L_T + p.z_NR;
+    const double t14 = p.x_NR - t2*t13;
+    const double t15 = qd[1]*p.L_T;
+    const double t16 = 2.0*qd[1]*p.z_NG + 2.0*t15;
+    const double t17 = 2.0*qd[1]*p.z_NR + 2.0*t15;
+    const double t18 = t2*t17 - 2.0*qd[1]*p.x_NR;
     dF_dq[0] = 0.0;
-    dF_dq[1] = p.g*p.M_P*t0*t0 + p.g*p.M_R*t2*t2*t7*t7 + p.g*p.M_R*t8*t8 + t2*(p.M_R*t2*t6*t9 - p.g*p.M_R*t2*t8)*t8 + p.g*p.M_T*t0*t0 + t0*(qd[1]*qd[1]*p.M_T*p.z_TG - p.g*p.M_T*t0) + p.g*p.M_N*t0*t0 + p.g*p.M_R*t10*t10*t7*t7 + t7*(p.M_R*(t4*t9 - qd[1]*qd[1]*p.x_NR) - p.g*p.M_R*t7) + p.g*p.M_N*t5*t5 - t0*(p.g*p.M_N*t0 - p.M_N*(qd[1]*qd[1]*p.z_NG + t1)) - t5*(qd[1]*qd[1]*p.M_N*p.x_NG + p.g*p.M_N*t5) - t0*(p.g*p.M_P*t0 - qd[1]*qd[1]*p.M_P*p.z_PG) - u[0]*t7 - t10*(p.g*p.M_R*t10*t8 - p.M_R*t6*t10*t9)*t8;
+    dF_dq[1] = p.g*p.M_R*t6*t6*t5*t5 + t6*(p.M_R*t6*t4*t8 - p.g*p.M_R*t6*t9)*t9 + p.g*p.M_T*t0*t0 + t11 + p.g*p.M_R*t12*t12*t5*t5 + t0*(qd[1]*qd[1]*p.M_T*p.z_TG - p.g*p.M_T*t0) + t10 + p.g*p.M_R*t9*t9 + t5*(p.M_R*(t2*t8 - qd[1]*qd[1]*p.x_NR) - p.g*p.M_R*t5) + p.g*p.M_N*t3*t3 + p.g*p.M_P*t0*t0 + p.g*p.M_N*t0*t0 - u[0]*t5 - t10 - t0*(p.g*p.M_P*t0 - qd[1]*qd[1]*p.M_P*p.z_PG) - t12*(p.g*p.M_R*t12*t9 - p.M_R*t4*t12*t8)*t9 - t0*(p.g*p.M_N*t0 - p.M_N*(qd[1]*qd[1]*p.z_NG + t7)) - t11 - t3*(qd[1]*qd[1]*p.M_N*p.x_NG + p.g*p.M_N*t3);
     dF_dq[2] = 0.0;
     dF_dq[3] = 0.0;
-    dF_dq[4] = p.g*p.L_T*p.M_N*t0 + p.g*p.M_N*p.z_NG*t0 + p.g*p.M_P*p.z_PG*t0 + p.g*p.M_T*p.z_TG*t0 + p.g*p.M_R*t6*t8*t11 - p.g*p.M_N*p.x_NG*t5 - p.g*p.M_R*t10*t10*t7*t12 - p.g*p.M_R*t2*t2*t7*t12;
+    dF_dq[4] = p.g*p.L_T*p.M_N*t0 + p.g*p.M_N*p.z_NG*t0 + p.g*p.M_P*p.z_PG*t0 + p.g*p.M_T*p.z_TG*t0 + p.g*p.M_R*t4*t9*t13 - p.g*p.M_N*p.x_NG*t3 - p.g*p.M_R*t12*t12*t5*t14 - p.g*p.M_R*t6*t6*t5*t14;
     dF_dq[5] = 0.0;
     dF_dq[6] = 0.0;
     dF_dq[7] = 0.0;
     dF_dq[8] = 0.0;
     dF_dqd[0] = 0.0;
-    dF_dqd[1] = 2.0*p.M_N*t5*t14 + 2.0*p.M_R*t2*t2*t6*t15*t7 + 2.0*qd[1]*p.M_N*p.x_NG*t0 + 2.0*p.M_R*t6*t10*t10*t15*t7 + 2.0*qd[1]*p.M_T*p.z_TG*t5 + 2.0*qd[1]*p.M_P*p.z_PG*t5 + 2.0*p.M_R*t16*t8;
+    dF_dqd[1] = p.M_N*t3*t16 + p.M_R*t6*t6*t4*t17*t5 + p.M_R*t4*t12*t12*t17*t5 + 2.0*qd[1]*p.M_N*p.x_NG*t0 + 2.0*qd[1]*p.M_T*p.z_TG*t3 + 2.0*qd[1]*p.M_P*p.z_PG*t3 - p.M_R*t9*t18;
     dF_dqd[2] = 0.0;
     dF_dqd[3] = 0.0;
-    dF_dqd[4] = 2.0*qd[1]*p.M_N*p.x_NG*p.z_NG + 2.0*p.M_R*t6*t16*t11 + 2.0*qd[1]*p.L_T*p.M_N*p.x_NG - 2.0*p.M_R*t2*t2*t6*t15*t12 - 2.0*p.M_N*p.x_NG*t14 - 2.0*p.M_R*t6*t10*t10*t15*t12;
+    dF_dqd[4] = 2.0*qd[1]*p.M_N*p.x_NG*p.z_NG + 2.0*qd[1]*p.L_T*p.M_N*p.x_NG - p.M_R*t4*t13*t18 - p.M_N*p.x_NG*t16 - p.M_R*t4*t12*t12*t17*t14 - p.M_R*t6*t6*t4*t17*t14;
     dF_dqd[5] = 0.0;
     dF_dqd[6] = 0.0;
     dF_dqd[7] = 0.0;
     dF_dqd[8] = 0.0;
-    dF_du[0] = t8;
+    dF_du[0] = t9;
     dF_du[1] = 0.0;
-    dF_du[2] = t6*t11;
+    dF_du[2] = t4*t13;
     dF_du[3] = 0.0;
     dF_du[4] = 0.0;
     dF_du[5] = 1.0;
@@ -347,22 +349,27 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     qdd[2] = u[1];
     ldlt_factor(M, 3);
     ldlt_solve(M, 3, qdd, 1);
-    const double t22 = p.M_P*p.z_PG*t1 + p.M_T*p.z_TG*t1 + p.M_R*(t6*t7*t11 + t8*t8*t9*t12 + t3*t3*t9*t12) + p.M_N*(t1*t10 + p.x_NG*t0);
-    const double t23 = x[4]*p.L_T;
-    const double t24 = x[4]*p.z_NG + t23;
-    const double t25 = x[4]*p.z_NR + t23;
-    const double t26 = x[4]*p.x_NR - t5*t25;
+    const double t22 = p.g*p.M_T*t1*t1;
+    const double t23 = p.g*p.M_P*t1*t1;
+    const double t24 = p.M_T*qdd[0]*t0*t1;
+    const double t25 = p.M_P*qdd[0]*t0*t1;
+    const double t26 = p.M_N*qdd[0]*t0*t1;
+    const double t27 = qdd[0]*t0;
+    const double t28 = x[4]*p.L_T;
+    const double t29 = 2.0*x[4]*p.z_NG + 2.0*t28;
+    const double t30 = 2.0*x[4]*p.z_NR + 2.0*t28;
+    const double t31 = t5*t30 - 2.0*x[4]*p.x_NR;
     J[18] = 0.0;
-    J[19] = p.g*p.M_P*t0*t0 + p.g*p.M_R*t3*t3*t7*t7 + p.g*p.M_R*t9*t9 + t3*t15*t9 + p.g*p.M_T*t0*t0 + t0*t19 + p.g*p.M_N*t0*t0 + p.g*p.M_R*t8*t8*t7*t7 + t7*t18 + p.g*p.M_N*t1*t1 + qdd[1]*t22 - t0*t16 - t1*t21 - t0*t20 - u[0]*t7 - t8*t17*t9 - 2.0*p.M_R*qdd[0]*(t3*t3*t9*t7 + t8*t8*t9*t7 - t9*t7);
+    J[19] = p.g*p.M_R*t3*t3*t7*t7 + t3*t15*t9 + p.g*p.M_T*t0*t0 + t23 + p.g*p.M_R*t8*t8*t7*t7 + t0*t19 + t22 + p.g*p.M_R*t9*t9 + t7*t18 + p.g*p.M_N*t1*t1 + p.g*p.M_P*t0*t0 + p.g*p.M_N*t0*t0 + t24 + p.M_T*t1*(t27 + p.z_TG*qdd[1]) + p.M_P*t1*(p.z_PG*qdd[1] + t27) + t25 + t26 + p.M_N*t1*(qdd[1]*t10 + t27) + p.M_R*t8*t9*(qdd[1]*t8*t12 - qdd[0]*t8*t7) + p.M_R*qdd[0]*t9*t7 + p.M_R*(qdd[0]*t9 + qdd[1]*t6*t11)*t7 - u[0]*t7 - t22 - t0*t20 - t8*t17*t9 - t0*t16 - t23 - t1*t21 - 2.0*t24 - 2.0*t25 - p.M_N*t0*(qdd[0]*t1 - p.x_NG*qdd[1]) - t26 - p.M_R*qdd[0]*t3*t3*t9*t7 - p.M_R*t3*t9*(qdd[0]*t3*t7 - qdd[1]*t3*t12) - p.M_R*qdd[0]*t8*t8*t9*t7;
     J[20] = 0.0;
     J[21] = 0.0;
-    J[22] = 2.0*p.M_N*t1*t24 + 2.0*p.M_R*t3*t3*t6*t25*t7 + 2.0*x[4]*p.M_N*p.x_NG*t0 + 2.0*p.M_R*t6*t8*t8*t25*t7 + 2.0*x[4]*p.M_T*p.z_TG*t1 + 2.0*x[4]*p.M_P*p.z_PG*t1 + 2.0*p.M_R*t26*t9;
+    J[22] = p.M_N*t1*t29 + p.M_R*t3*t3*t6*t30*t7 + p.M_R*t6*t8*t8*t30*t7 + 2.0*x[4]*p.M_N*p.x_NG*t0 + 2.0*x[4]*p.M_T*p.z_TG*t1 + 2.0*x[4]*p.M_P*p.z_PG*t1 - p.M_R*t9*t31;
     J[23] = 0.0;
     J[24] = 0.0;
-    J[25] = qdd[0]*t22 + p.g*p.L_T*p.M_N*t0 + p.g*p.M_N*p.z_NG*t0 + p.g*p.M_P*p.z_PG*t0 + p.g*p.M_T*p.z_TG*t0 + p.g*p.M_R*t6*t9*t11 - p.g*p.M_N*p.x_NG*t1 - p.g*p.M_R*t8*t8*t7*t12 - p.g*p.M_R*t3*t3*t7*t12;
+    J[25] = p.g*p.L_T*p.M_N*t0 + p.g*p.M_N*p.z_NG*t0 + p.g*p.M_P*p.z_PG*t0 + p.g*p.M_T*p.z_TG*t0 + p.g*p.M_R*t6*t9*t11 + p.M_P*p.z_PG*qdd[0]*t1 + p.M_R*qdd[0]*t6*t7*t11 + p.M_R*qdd[0]*t3*t3*t9*t12 + p.L_T*p.M_N*qdd[0]*t1 + p.M_T*p.z_TG*qdd[0]*t1 + p.M_N*p.x_NG*qdd[0]*t0 + p.M_N*p.z_NG*qdd[0]*t1 + p.M_R*qdd[0]*t8*t8*t9*t12 - p.g*p.M_N*p.x_NG*t1 - p.g*p.M_R*t8*t8*t7*t12 - p.g*p.M_R*t3*t3*t7*t12;
     J[26] = 0.0;
     J[27] = 0.0;
-    J[28] = 2.0*x[4]*p.M_N*p.x_NG*p.z_NG + 2.0*p.M_R*t6*t26*t11 + 2.0*x[4]*p.L_T*p.M_N*p.x_NG - 2.0*p.M_R*t3*t3*t6*t25*t12 - 2.0*p.M_N*p.x_NG*t24 - 2.0*p.M_R*t6*t8*t8*t25*t12;
+    J[28] = 2.0*x[4]*p.M_N*p.x_NG*p.z_NG + 2.0*x[4]*p.L_T*p.M_N*p.x_NG - p.M_R*t6*t11*t31 - p.M_N*p.x_NG*t29 - p.M_R*t6*t8*t8*t30*t12 - p.M_R*t3*t3*t6*t30*t12;
     J[29] = 0.0;
     J[30] = 0.0;
     J[31] = 0.0;

@@ -42,10 +42,10 @@
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
 //   mass_matrix   27 adds, 55 muls, 0 divs, 6 calls
 //   forcing       31 adds, 80 muls, 0 divs, 6 calls
-//   jacobians     49 adds, 174 muls, 0 divs, 6 calls
+//   jacobians     53 adds, 177 muls, 0 divs, 6 calls
 //   outputs       1 adds, 3 muls, 0 divs, 1 calls
 //   rhs           64 adds, 144 muls, 6 divs, 6 calls
-//   rhs_jacobian  146 adds, 334 muls, 24 divs, 6 calls
+//   rhs_jacobian  170 adds, 395 muls, 24 divs, 6 calls
 
 #pragma once
 

@@ -39,6 +39,8 @@ public:
         frames_ = body_frames(m_, sym_);
         const std::size_t nq = m_.dofs.size();
         eq_.M.assign(nq, Row(nq, 0));
+        for (const auto& d : sym_.dofs()) eq_.a.emplace_back("a_" + d.name);
+        Ma_terms_.assign(nq, exvector{});
         std::vector<exvector> F_terms(nq);
         std::vector<exvector> load_terms(nq); // may contain q'': moved into M below
 
@@ -49,7 +51,8 @@ public:
             const FrameState& f = frames_[b];
             add_applied_loads(f, applied[b], load_terms);
             if (body.flex) {
-                add_flexible_body(body, f, transpose_times(f.R, g), sym_, eq_.M, F_terms);
+                add_flexible_body(body, f, transpose_times(f.R, g), sym_, eq_.M, F_terms,
+                                  {eq_.a, Ma_terms_});
                 continue;
             }
             ex mass = to_ginac(body.mass, sym_);
@@ -79,6 +82,17 @@ public:
                     eq_.M[r][s] += term;
                 }
             }
+            // (M a)_r = Jv_r·(m A_G) + Jω_r·(c × m A_G + J A_ω), A = Σ_s J_s a_s: the
+            // q''-part of the inertia forces with q'' = a (for the Jacobians).
+            Vec3 AG, Aw;
+            for (const auto& [s, jv] : JvG) AG = AG + eq_.a[static_cast<std::size_t>(s)] * jv;
+            for (const auto& [s, jw] : f.Jw) Aw = Aw + eq_.a[static_cast<std::size_t>(s)] * jw;
+            Vec3 fa = mass * AG;
+            Vec3 ma = cross(c, fa) + J * Aw;
+            for (const auto& [r, jv] : f.Jv)
+                Ma_terms_[static_cast<std::size_t>(r)].push_back(dot(jv, fa));
+            for (const auto& [r, jw] : f.Jw)
+                Ma_terms_[static_cast<std::size_t>(r)].push_back(dot(jw, ma));
             // Inertial force at the COM and torque (eq. 6), plus gravity, as a wrench
             // about the origin; f_r* + f_r = Jv_r·F + Jω_r·T (eq. 7, 9).
             Vec3 aG = f.a + cross(f.alpha, c) + cross(f.w, cross(f.w, c));
@@ -95,6 +109,9 @@ public:
             for (std::size_t s = 0; s < r; ++s) eq_.M[r][s] = eq_.M[s][r];
         generalized_loads(load_terms);
         if (!move_accelerations_into_mass(load_terms)) return std::nullopt;
+        eq_.Ma.resize(nq);
+        for (std::size_t r = 0; r < nq; ++r)
+            eq_.Ma[r] = Ma_terms_[r].empty() ? ex(0) : ex(add(Ma_terms_[r]));
         eq_.F.resize(nq);
         for (std::size_t r = 0; r < nq; ++r) {
             exvector all = F_terms[r];
@@ -174,6 +191,7 @@ private:
                     continue;
                 }
                 eq_.M[r][s] -= coeff;
+                Ma_terms_[r].push_back(-coeff * eq_.a[s]);
             }
             load_terms[r] = {drop_qdd(G)};
         }
@@ -222,6 +240,7 @@ private:
     diag::Diagnostics& diags_;
     Symbols sym_;
     std::vector<FrameState> frames_;
+    std::vector<exvector> Ma_terms_; // terms of (M a)_r
     Equations eq_;
 };
 

@@ -66,6 +66,10 @@ struct Equations {
     // the Jacobian of the first-order system x' = f(x) = [q', M^-1 F].
     std::vector<GiNaC::symbol> a;
     Matrix dMa_dq;
+    // M(q) a assembled body by body from Kane's q''-part of the inertia forces: a DAG
+    // of O(bodies x DOFs) nodes where Σ_s M_rs a_s has O(bodies x DOFs²). Filled by
+    // derive() together with `a`; when empty, derive_jacobians forms Σ_s M_rs a_s.
+    Row Ma;
 
     int nq() const { return static_cast<int>(dofs.size()); }
     int nu() const { return static_cast<int>(inputs.size()); }

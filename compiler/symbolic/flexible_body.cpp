@@ -73,7 +73,7 @@ struct Rows {
 } // namespace
 
 void add_flexible_body(const model::Body& body, const FrameState& f, const Vec3& g,
-                       const Symbols& symbols, Matrix& M, std::vector<exvector>& F) {
+                       const Symbols& symbols, Matrix& M, std::vector<exvector>& F, MaTerms Ma) {
     ElasticTerms el(body, symbols);
     const sid::Sid& s = el.sid();
     const int nq = el.nq();
@@ -135,6 +135,22 @@ void add_flexible_body(const model::Body& body, const FrameState& f, const Vec3&
                 terms.push_back(col.e[static_cast<std::size_t>(mode->second)]);
             M[static_cast<std::size_t>(r)][static_cast<std::size_t>(it_s->first)] += sum(terms);
         }
+    }
+
+    // M a: the momentum rows weighted by the accelerations a_s, projected like M.
+    Rows A;
+    A.e.assign(un, ex(0));
+    for (const auto& [s_, row] : rows) {
+        const ex& as = Ma.a[static_cast<std::size_t>(s_)];
+        A.x = A.x + as * row.x;
+        A.theta = A.theta + as * row.theta;
+        for (std::size_t k = 0; k < un; ++k) A.e[k] = A.e[k] + as * row.e[k];
+    }
+    for (int r : coords) {
+        exvector t{dot(jv(r), A.x), dot(jw(r), A.theta)};
+        auto mode = mode_of.find(r);
+        if (mode != mode_of.end()) t.push_back(A.e[static_cast<std::size_t>(mode->second)]);
+        Ma.terms[static_cast<std::size_t>(r)].push_back(sum(t));
     }
 
     // Forces without q'': inertial (eq. 12-14 with A8-A10), gravity (A17-A19),

@@ -6,9 +6,16 @@
 
 namespace yamsc::symbolic {
 
-/// Adds the body's terms to the upper triangle (r <= s) of M and to the terms of F.
-/// `g` is gravity in the body's axes.
+/// Where the body's part of M a goes: the terms of (M a)_r for accelerations a.
+struct MaTerms {
+    const std::vector<GiNaC::symbol>& a;
+    std::vector<GiNaC::exvector>& terms;
+};
+
+/// Adds the body's terms to the upper triangle (r <= s) of M, to the terms of F and
+/// to those of M a. `g` is gravity in the body's axes.
 void add_flexible_body(const model::Body& body, const FrameState& f, const Vec3& g,
-                       const Symbols& symbols, Matrix& M, std::vector<GiNaC::exvector>& F);
+                       const Symbols& symbols, Matrix& M, std::vector<GiNaC::exvector>& F,
+                       MaTerms Ma);
 
 } // namespace yamsc::symbolic
