@@ -27,12 +27,16 @@
 //   y[2] "v_tip" "horizontal tip velocity [m/s]"
 //
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix   3 adds, 12 muls, 0 divs, 2 calls
-//   forcing       16 adds, 36 muls, 0 divs, 4 calls
-//   jacobians     26 adds, 85 muls, 0 divs, 4 calls
-//   outputs       7 adds, 15 muls, 0 divs, 4 calls
-//   rhs           22 adds, 52 muls, 3 divs, 4 calls
-//   rhs_jacobian  54 adds, 137 muls, 11 divs, 4 calls
+//   mass_matrix      3 adds, 12 muls, 0 divs, 2 calls
+//   forcing          16 adds, 36 muls, 0 divs, 4 calls
+//   jacobians        26 adds, 85 muls, 0 divs, 4 calls
+//   outputs          7 adds, 15 muls, 0 divs, 4 calls
+//   rhs              22 adds, 52 muls, 3 divs, 4 calls
+//   rhs_jacobian     54 adds, 137 muls, 11 divs, 4 calls
+//   linear           48 adds, 134 muls, 3 divs, 4 calls
+//   state_space      60 adds, 146 muls, 15 divs, 4 calls
+//   output_matrices  12 adds, 22 muls, 0 divs, 4 calls
+//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 
 #include "double_pendulum.h"
 
@@ -268,4 +272,161 @@ void double_pendulum_rhs_jacobian(double t, const double* x, const double* u, co
     J[14] = -2.0*x[2]*p->m2*p->L1*p->L2*t2;
     J[15] = -p->c;
     double_pendulum_ldlt_solve(M, 2, J + 8, 4);
+}
+
+// M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
+void double_pendulum_linear(const double* q0, const double* qd0, const double* u0, const double_pendulum_params* p, double* M0, double* C0, double* K0, double* Q0) {
+    double M[4];
+    double qdd0[2];
+    const double t0 = cos(q0[1]);
+    const double t1 = p->L2 + p->L1*t0;
+    const double t2 = sin(q0[1]);
+    const double t3 = p->m2*(t1*t1 + p->L1*p->L1*t2*t2) + p->m1*p->L1*p->L1;
+    const double t4 = p->m2*p->L2*t1;
+    const double t5 = p->m2*p->L2*p->L2;
+    const double t6 = sin(q0[0]);
+    const double t7 = cos(q0[0]);
+    const double t8 = t2*t6 - t0*t7;
+    const double t9 = u0[1]*p->L2*t8;
+    const double t10 = p->m2*p->g*t8;
+    const double t11 = qd0[0] + qd0[1];
+    const double t12 = t10 - p->m2*(qd0[0]*qd0[0]*p->L1*t0 + p->L2*t11*t11);
+    const double t13 = t0*t6 + t2*t7;
+    const double t14 = p->m2*p->g*t13 + qd0[0]*qd0[0]*p->m2*p->L1*t2;
+    const double t15 = p->L2*t14;
+    M0[0] = t3;
+    M0[2] = t4;
+    M0[3] = t5;
+    M0[1] = M0[2];
+    M[0] = t3;
+    M[2] = t4;
+    M[3] = t5;
+    qdd0[0] = u0[0] + t9 + u0[1]*p->L1*t0*t8 - p->L1*t2*t12 - p->m1*p->L1*p->g*t6 - p->L1*t0*t14 - t15 - u0[1]*p->L1*t2*t13;
+    qdd0[1] = t9 - q0[1]*p->k - qd0[1]*p->c - t15;
+    double_pendulum_ldlt_factor(M, 2);
+    double_pendulum_ldlt_solve(M, 2, qdd0, 1);
+    const double t16 = p->m2*p->L2*p->g*t8;
+    const double t17 = u0[1]*p->L2*t13;
+    const double t18 = p->m2*p->L1*p->L2*qdd0[0]*t2;
+    const double t19 = p->m2*p->L1*p->L1*qdd0[0]*t0*t2;
+    const double t20 = t10 - qd0[0]*qd0[0]*p->m2*p->L1*t0;
+    const double t21 = p->L2*t20;
+    const double t22 = p->L1*t2*t14;
+    const double t23 = p->L2*t8;
+    C0[0] = 2.0*qd0[0]*p->m2*p->L1*p->L2*t2 + 2.0*qd0[0]*p->m2*p->L1*p->L1*t0*t2 - p->m2*p->L1*t2*(2.0*p->L2*t11 + 2.0*qd0[0]*p->L1*t0);
+    C0[1] = -2.0*p->m2*p->L1*p->L2*t2*t11;
+    C0[2] = 2.0*qd0[0]*p->m2*p->L1*p->L2*t2;
+    C0[3] = p->c;
+    K0[0] = p->m1*p->L1*p->g*t7 + p->m2*p->L1*p->g*t2*t13 - u0[1]*p->L1*t2*t8 - t16 - u0[1]*p->L1*t0*t13 - p->m2*p->L1*p->g*t0*t8 - t17;
+    K0[1] = 2.0*t19 + t22 + p->L1*t0*t12 - t18 - p->m2*p->L1*t2*(qdd0[0]*t1 + p->L2*qdd0[1]) - t19 - t21 - t17 - t22 - p->L1*t0*t20;
+    K0[2] = -t16 - t17;
+    K0[3] = p->k - t18 - t21 - t17;
+    Q0[0] = 1.0;
+    Q0[1] = t23 + p->L1*t0*t8 - p->L1*t2*t13;
+    Q0[2] = 0.0;
+    Q0[3] = t23;
+}
+
+// x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
+void double_pendulum_state_space(const double* q0, const double* qd0, const double* u0, const double_pendulum_params* p, double* A, double* B) {
+    double M[4];
+    double qdd0[2];
+    const double t0 = cos(q0[1]);
+    const double t1 = p->L2 + p->L1*t0;
+    const double t2 = sin(q0[1]);
+    const double t3 = sin(q0[0]);
+    const double t4 = cos(q0[0]);
+    const double t5 = t2*t3 - t0*t4;
+    const double t6 = u0[1]*p->L2*t5;
+    const double t7 = p->m2*p->g*t5;
+    const double t8 = qd0[0] + qd0[1];
+    const double t9 = t7 - p->m2*(qd0[0]*qd0[0]*p->L1*t0 + p->L2*t8*t8);
+    const double t10 = t0*t3 + t2*t4;
+    const double t11 = p->m2*p->g*t10 + qd0[0]*qd0[0]*p->m2*p->L1*t2;
+    const double t12 = p->L2*t11;
+    A[0] = 0.0;
+    A[1] = 0.0;
+    A[2] = 1.0;
+    A[3] = 0.0;
+    A[4] = 0.0;
+    A[5] = 0.0;
+    A[6] = 0.0;
+    A[7] = 1.0;
+    B[0] = 0.0;
+    B[1] = 0.0;
+    B[2] = 0.0;
+    B[3] = 0.0;
+    M[0] = p->m2*(t1*t1 + p->L1*p->L1*t2*t2) + p->m1*p->L1*p->L1;
+    M[2] = p->m2*p->L2*t1;
+    M[3] = p->m2*p->L2*p->L2;
+    qdd0[0] = u0[0] + t6 + u0[1]*p->L1*t0*t5 - p->L1*t2*t9 - p->m1*p->L1*p->g*t3 - p->L1*t0*t11 - t12 - u0[1]*p->L1*t2*t10;
+    qdd0[1] = t6 - q0[1]*p->k - qd0[1]*p->c - t12;
+    double_pendulum_ldlt_factor(M, 2);
+    double_pendulum_ldlt_solve(M, 2, qdd0, 1);
+    const double t13 = p->m2*p->L2*p->g*t5;
+    const double t14 = u0[1]*p->L2*t10;
+    const double t15 = p->m2*p->L1*p->L2*qdd0[0]*t2;
+    const double t16 = p->m2*p->L1*p->L1*qdd0[0]*t0*t2;
+    const double t17 = t7 - qd0[0]*qd0[0]*p->m2*p->L1*t0;
+    const double t18 = p->L2*t17;
+    const double t19 = p->L1*t2*t11;
+    const double t20 = p->L2*t5;
+    A[8] = u0[1]*p->L1*t2*t5 + t13 + u0[1]*p->L1*t0*t10 + p->m2*p->L1*p->g*t0*t5 + t14 - p->m1*p->L1*p->g*t4 - p->m2*p->L1*p->g*t2*t10;
+    A[9] = t15 + p->m2*p->L1*t2*(qdd0[0]*t1 + p->L2*qdd0[1]) + t16 + t18 + t14 + t19 + p->L1*t0*t17 - 2.0*t16 - t19 - p->L1*t0*t9;
+    A[10] = p->m2*p->L1*t2*(2.0*p->L2*t8 + 2.0*qd0[0]*p->L1*t0) - 2.0*qd0[0]*p->m2*p->L1*p->L2*t2 - 2.0*qd0[0]*p->m2*p->L1*p->L1*t0*t2;
+    A[11] = 2.0*p->m2*p->L1*p->L2*t2*t8;
+    A[12] = t13 + t14;
+    A[13] = t15 + t18 + t14 - p->k;
+    A[14] = -2.0*qd0[0]*p->m2*p->L1*p->L2*t2;
+    A[15] = -p->c;
+    B[4] = 1.0;
+    B[5] = t20 + p->L1*t0*t5 - p->L1*t2*t10;
+    B[6] = 0.0;
+    B[7] = t20;
+    double_pendulum_ldlt_solve(M, 2, A + 8, 4);
+    double_pendulum_ldlt_solve(M, 2, B + 4, 2);
+}
+
+// dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
+void double_pendulum_output_matrices(const double* q0, const double* qd0, const double* u0, const double_pendulum_params* p, double* C, double* D) {
+    (void)u0;
+    const double t0 = sin(q0[1]);
+    const double t1 = sin(q0[0]);
+    const double t2 = cos(q0[1]);
+    const double t3 = cos(q0[0]);
+    const double t4 = t0*t1 - t2*t3;
+    const double t5 = p->L2*t4;
+    const double t6 = t2*t1 + t0*t3;
+    const double t7 = p->L2*t6;
+    const double t8 = t6*(p->L2*(qd0[0] + qd0[1]) + qd0[0]*p->L1*t2);
+    const double t9 = qd0[0]*p->L1*t0*t4;
+    C[0] = t5 - p->L1*t3;
+    C[1] = t5;
+    C[2] = 0.0;
+    C[3] = 0.0;
+    C[4] = p->L1*t1 + t7;
+    C[5] = t7;
+    C[6] = 0.0;
+    C[7] = 0.0;
+    C[8] = t8 + t9;
+    C[9] = t8 + t9 - t9 - qd0[0]*p->L1*t2*t6;
+    C[10] = (p->L2 + p->L1*t2)*t4 - p->L1*t0*t6;
+    C[11] = t5;
+    D[0] = 0.0;
+    D[1] = 0.0;
+    D[2] = 0.0;
+    D[3] = 0.0;
+    D[4] = 0.0;
+    D[5] = 0.0;
+}
+
+// the model's operating point (no linearize block: zeros)
+void double_pendulum_operating_point(const double_pendulum_params* p, double* q0, double* qd0, double* u0) {
+    (void)p;
+    q0[0] = 0.0;
+    q0[1] = 0.0;
+    qd0[0] = 0.0;
+    qd0[1] = 0.0;
+    u0[0] = 0.0;
+    u0[1] = 0.0;
 }

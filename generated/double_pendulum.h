@@ -27,12 +27,16 @@
 //   y[2] "v_tip" "horizontal tip velocity [m/s]"
 //
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix   3 adds, 12 muls, 0 divs, 2 calls
-//   forcing       16 adds, 36 muls, 0 divs, 4 calls
-//   jacobians     26 adds, 85 muls, 0 divs, 4 calls
-//   outputs       7 adds, 15 muls, 0 divs, 4 calls
-//   rhs           22 adds, 52 muls, 3 divs, 4 calls
-//   rhs_jacobian  54 adds, 137 muls, 11 divs, 4 calls
+//   mass_matrix      3 adds, 12 muls, 0 divs, 2 calls
+//   forcing          16 adds, 36 muls, 0 divs, 4 calls
+//   jacobians        26 adds, 85 muls, 0 divs, 4 calls
+//   outputs          7 adds, 15 muls, 0 divs, 4 calls
+//   rhs              22 adds, 52 muls, 3 divs, 4 calls
+//   rhs_jacobian     54 adds, 137 muls, 11 divs, 4 calls
+//   linear           48 adds, 134 muls, 3 divs, 4 calls
+//   state_space      60 adds, 146 muls, 15 divs, 4 calls
+//   output_matrices  12 adds, 22 muls, 0 divs, 4 calls
+//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 
 #ifndef double_pendulum_YAMSC_GENERATED_H
 #define double_pendulum_YAMSC_GENERATED_H
@@ -81,6 +85,14 @@ void double_pendulum_outputs(double t, const double* q, const double* qd, const 
 void double_pendulum_rhs(double t, const double* x, const double* u, const double_pendulum_params* p, double* xdot);
 // d(rhs)/dx, 2nq x 2nq, row-major
 void double_pendulum_rhs_jacobian(double t, const double* x, const double* u, const double_pendulum_params* p, double* J);
+// M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
+void double_pendulum_linear(const double* q0, const double* qd0, const double* u0, const double_pendulum_params* p, double* M0, double* C0, double* K0, double* Q0);
+// x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
+void double_pendulum_state_space(const double* q0, const double* qd0, const double* u0, const double_pendulum_params* p, double* A, double* B);
+// dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
+void double_pendulum_output_matrices(const double* q0, const double* qd0, const double* u0, const double_pendulum_params* p, double* C, double* D);
+// the model's operating point (no linearize block: zeros)
+void double_pendulum_operating_point(const double_pendulum_params* p, double* q0, double* qd0, double* u0);
 
 #ifdef __cplusplus
 }

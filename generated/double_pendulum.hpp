@@ -27,12 +27,16 @@
 //   y[2] "v_tip" "horizontal tip velocity [m/s]"
 //
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix   3 adds, 12 muls, 0 divs, 2 calls
-//   forcing       16 adds, 36 muls, 0 divs, 4 calls
-//   jacobians     26 adds, 85 muls, 0 divs, 4 calls
-//   outputs       7 adds, 15 muls, 0 divs, 4 calls
-//   rhs           22 adds, 52 muls, 3 divs, 4 calls
-//   rhs_jacobian  54 adds, 137 muls, 11 divs, 4 calls
+//   mass_matrix      3 adds, 12 muls, 0 divs, 2 calls
+//   forcing          16 adds, 36 muls, 0 divs, 4 calls
+//   jacobians        26 adds, 85 muls, 0 divs, 4 calls
+//   outputs          7 adds, 15 muls, 0 divs, 4 calls
+//   rhs              22 adds, 52 muls, 3 divs, 4 calls
+//   rhs_jacobian     54 adds, 137 muls, 11 divs, 4 calls
+//   linear           48 adds, 134 muls, 3 divs, 4 calls
+//   state_space      60 adds, 146 muls, 15 divs, 4 calls
+//   output_matrices  12 adds, 22 muls, 0 divs, 4 calls
+//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once
 
@@ -75,6 +79,14 @@ void outputs(double t, const double* q, const double* qd, const double* u, const
 void rhs(double t, const double* x, const double* u, const Params& p, double* xdot);
 // d(rhs)/dx, 2nq x 2nq, row-major
 void rhs_jacobian(double t, const double* x, const double* u, const Params& p, double* J);
+// M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
+void linear(const double* q0, const double* qd0, const double* u0, const Params& p, double* M0, double* C0, double* K0, double* Q0);
+// x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
+void state_space(const double* q0, const double* qd0, const double* u0, const Params& p, double* A, double* B);
+// dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
+void output_matrices(const double* q0, const double* qd0, const double* u0, const Params& p, double* C, double* D);
+// the model's operating point (no linearize block: zeros)
+void operating_point(const Params& p, double* q0, double* qd0, double* u0);
 
 // Everything above in one type, for templates (the runtime's from_generated<Model>).
 struct Model {
@@ -102,6 +114,18 @@ struct Model {
     }
     static void rhs_jacobian(double t, const double* x, const double* u, const Params& p, double* J) {
         ::double_pendulum::rhs_jacobian(t, x, u, p, J);
+    }
+    static void linear(const double* q0, const double* qd0, const double* u0, const Params& p, double* M0, double* C0, double* K0, double* Q0) {
+        ::double_pendulum::linear(q0, qd0, u0, p, M0, C0, K0, Q0);
+    }
+    static void state_space(const double* q0, const double* qd0, const double* u0, const Params& p, double* A, double* B) {
+        ::double_pendulum::state_space(q0, qd0, u0, p, A, B);
+    }
+    static void output_matrices(const double* q0, const double* qd0, const double* u0, const Params& p, double* C, double* D) {
+        ::double_pendulum::output_matrices(q0, qd0, u0, p, C, D);
+    }
+    static void operating_point(const Params& p, double* q0, double* qd0, double* u0) {
+        ::double_pendulum::operating_point(p, q0, qd0, u0);
     }
     static void params_to_array(const Params& p, double* a) {
         ::double_pendulum::params_to_array(p, a);

@@ -24,12 +24,16 @@
 //   y[1] "spin_rate" "spin rate [rad/s]"
 //
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix   7 adds, 33 muls, 0 divs, 4 calls
-//   forcing       18 adds, 54 muls, 0 divs, 4 calls
-//   jacobians     73 adds, 234 muls, 0 divs, 4 calls
-//   outputs       0 adds, 1 muls, 0 divs, 1 calls
-//   rhs           35 adds, 101 muls, 6 divs, 4 calls
-//   rhs_jacobian  147 adds, 386 muls, 24 divs, 4 calls
+//   mass_matrix      7 adds, 33 muls, 0 divs, 4 calls
+//   forcing          18 adds, 54 muls, 0 divs, 4 calls
+//   jacobians        73 adds, 234 muls, 0 divs, 4 calls
+//   outputs          0 adds, 1 muls, 0 divs, 1 calls
+//   rhs              35 adds, 101 muls, 6 divs, 4 calls
+//   rhs_jacobian     147 adds, 386 muls, 24 divs, 4 calls
+//   linear           111 adds, 350 muls, 6 divs, 4 calls
+//   state_space      147 adds, 386 muls, 24 divs, 4 calls
+//   output_matrices  0 adds, 1 muls, 0 divs, 1 calls
+//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 
 #include "heavy_top.hpp"
 
@@ -302,6 +306,193 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     J[34] = x[3]*p.C*t2;
     J[35] = 0.0;
     ldlt_solve(M, 3, J + 18, 6);
+}
+
+// M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
+void linear(const double* q0, const double* qd0, const double* u0, const Params& p, double* M0, double* C0, double* K0, double* Q0) {
+    (void)u0;
+    (void)Q0;
+    double M[9];
+    double qdd0[3];
+    const double t0 = std::cos(q0[1]);
+    const double t1 = std::sin(q0[2]);
+    const double t2 = std::sin(q0[1]);
+    const double t3 = std::cos(q0[2]);
+    const double t4 = p.C*t0*t0 + p.A*t1*t1*t2*t2 + p.A*t2*t2*t3*t3 + p.m*(p.l*p.l*t2*t2*t3*t3 + p.l*p.l*t1*t1*t2*t2);
+    const double t5 = p.m*(p.l*p.l*t3*t3 + p.l*p.l*t1*t1) + p.A*t1*t1 + p.A*t3*t3;
+    const double t6 = p.C*t0;
+    const double t7 = qd0[0]*t2*t3 - qd0[1]*t1;
+    const double t8 = qd0[2]*t7 + qd0[0]*qd0[1]*t1*t0;
+    const double t9 = qd0[2] + qd0[0]*t0;
+    const double t10 = p.l*(p.m*(p.l*t8 - p.l*t9*t7) - p.m*p.g*t2*t3) + p.A*t8 + p.C*t9*t7 - p.A*t9*t7;
+    const double t11 = qd0[0]*t1*t2 + qd0[1]*t3;
+    const double t12 = qd0[2]*t11 - qd0[0]*qd0[1]*t0*t3;
+    const double t13 = p.A*t9*t11 + p.l*(p.m*p.g*t1*t2 + p.m*(p.l*t9*t11 - p.l*t12)) - p.C*t9*t11 - p.A*t12;
+    M0[0] = t4;
+    M0[3] = 0.0;
+    M0[4] = t5;
+    M0[6] = t6;
+    M0[7] = 0.0;
+    M0[8] = p.C;
+    M0[1] = M0[3];
+    M0[2] = M0[6];
+    M0[5] = M0[7];
+    M[0] = t4;
+    M[3] = 0.0;
+    M[4] = t5;
+    M[6] = t6;
+    M[7] = 0.0;
+    M[8] = p.C;
+    qdd0[0] = qd0[0]*qd0[1]*p.C*t0*t2 - t1*t2*t10 - t2*t3*t13;
+    qdd0[1] = t1*t13 - t3*t10;
+    qdd0[2] = qd0[0]*qd0[1]*p.C*t2;
+    ldlt_factor(M, 3);
+    ldlt_solve(M, 3, qdd0, 1);
+    const double t14 = qd0[2]*t2*t3 + qd0[1]*t1*t0;
+    const double t15 = p.A*t14 + p.m*p.l*(p.l*t14 - p.l*t2*t3*t9 - p.l*t0*t7) + p.C*t2*t3*t9 + p.C*t0*t7 - p.A*t0*t7 - p.A*t2*t3*t9;
+    const double t16 = qd0[2]*t1*t2 - qd0[1]*t0*t3;
+    const double t17 = p.m*p.l*(p.l*t16 - p.l*t1*t2*t9 - p.l*t0*t11) + p.A*t16 + p.C*t0*t11 + p.C*t1*t2*t9 - p.A*t1*t2*t9 - p.A*t0*t11;
+    const double t18 = qd0[0]*t1*t0 - qd0[2]*t1;
+    const double t19 = p.A*t1*t9 + p.m*p.l*(p.l*t1*t9 + p.l*t18) + p.A*t18 - p.C*t1*t9;
+    const double t20 = qd0[2]*t3 - qd0[0]*t0*t3;
+    const double t21 = p.A*t3*t9 + p.m*p.l*(p.l*t3*t9 - p.l*t20) - p.C*t3*t9 - p.A*t20;
+    const double t22 = qd0[0]*qd0[1]*t2*t3 + qd0[0]*qd0[2]*t1*t0;
+    const double t23 = p.l*(p.m*p.g*t1*t0 - p.m*(p.l*t22 + qd0[0]*p.l*t2*t11 - qd0[0]*p.l*t1*t0*t9)) + qd0[0]*p.C*t2*t11 + qd0[0]*p.A*t1*t0*t9 - p.A*t22 - qd0[0]*p.C*t1*t0*t9 - qd0[0]*p.A*t2*t11;
+    const double t24 = qd0[0]*qd0[2]*t0*t3 - qd0[0]*qd0[1]*t1*t2;
+    const double t25 = p.l*(p.m*(p.l*t24 + qd0[0]*p.l*t2*t7 - qd0[0]*p.l*t0*t3*t9) - p.m*p.g*t0*t3) + p.A*t24 + qd0[0]*p.C*t0*t3*t9 + qd0[0]*p.A*t2*t7 - qd0[0]*p.C*t2*t7 - qd0[0]*p.A*t0*t3*t9;
+    const double t26 = p.m*p.l*p.l*qdd0[0]*t0*t3 + p.A*qdd0[0]*t0*t3;
+    const double t27 = p.A*qdd0[0]*t1*t0 + p.m*p.l*p.l*qdd0[0]*t1*t0;
+    C0[0] = t1*t2*t15 - qd0[1]*p.C*t0*t2 - t2*t3*t17;
+    C0[1] = t1*t2*t19 + t2*t3*t21 - qd0[0]*p.C*t0*t2;
+    C0[2] = p.C*t1*t2*t7 - p.C*t2*t3*t11;
+    C0[3] = t1*t17 + t3*t15;
+    C0[4] = t3*t19 - t1*t21;
+    C0[5] = p.C*t1*t11 + p.C*t3*t7;
+    C0[6] = -qd0[1]*p.C*t2;
+    C0[7] = -qd0[0]*p.C*t2;
+    C0[8] = 0.0;
+    K0[0] = 0.0;
+    K0[1] = t2*t3*t23 + t0*t3*t13 + t1*t0*t10 + t1*t2*t25 + qd0[0]*qd0[1]*p.C*t2*t2 + t0*t3*(p.m*p.l*(p.l*qdd0[0]*t2*t3 - p.l*qdd0[1]*t1) - p.A*(qdd0[1]*t1 - qdd0[0]*t2*t3)) + t2*t3*t26 + t1*t0*(p.A*(qdd0[0]*t1*t2 + qdd0[1]*t3) + p.m*p.l*(p.l*qdd0[0]*t1*t2 + p.l*qdd0[1]*t3)) + t1*t2*t27 - qd0[0]*qd0[1]*p.C*t0*t0 - p.C*qdd0[0]*t0*t2 - p.C*t2*(qdd0[2] + qdd0[0]*t0);
+    K0[2] = 0.0;
+    K0[3] = 0.0;
+    K0[4] = t3*t27 + t3*t25 - t1*t26 - t1*t23;
+    K0[5] = 0.0;
+    K0[6] = 0.0;
+    K0[7] = -p.C*qdd0[0]*t2 - qd0[0]*qd0[1]*p.C*t0;
+    K0[8] = 0.0;
+}
+
+// x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
+void state_space(const double* q0, const double* qd0, const double* u0, const Params& p, double* A, double* B) {
+    (void)u0;
+    (void)B;
+    double M[9];
+    double qdd0[3];
+    const double t0 = std::cos(q0[1]);
+    const double t1 = std::sin(q0[2]);
+    const double t2 = std::sin(q0[1]);
+    const double t3 = std::cos(q0[2]);
+    const double t4 = qd0[0]*t2*t3 - qd0[1]*t1;
+    const double t5 = qd0[2]*t4 + qd0[0]*qd0[1]*t1*t0;
+    const double t6 = qd0[2] + qd0[0]*t0;
+    const double t7 = p.l*(p.m*(p.l*t5 - p.l*t6*t4) - p.m*p.g*t2*t3) + p.A*t5 + p.C*t6*t4 - p.A*t6*t4;
+    const double t8 = qd0[0]*t1*t2 + qd0[1]*t3;
+    const double t9 = qd0[2]*t8 - qd0[0]*qd0[1]*t0*t3;
+    const double t10 = p.A*t6*t8 + p.l*(p.m*p.g*t1*t2 + p.m*(p.l*t6*t8 - p.l*t9)) - p.C*t6*t8 - p.A*t9;
+    A[0] = 0.0;
+    A[1] = 0.0;
+    A[2] = 0.0;
+    A[3] = 1.0;
+    A[4] = 0.0;
+    A[5] = 0.0;
+    A[6] = 0.0;
+    A[7] = 0.0;
+    A[8] = 0.0;
+    A[9] = 0.0;
+    A[10] = 1.0;
+    A[11] = 0.0;
+    A[12] = 0.0;
+    A[13] = 0.0;
+    A[14] = 0.0;
+    A[15] = 0.0;
+    A[16] = 0.0;
+    A[17] = 1.0;
+    M[0] = p.C*t0*t0 + p.A*t1*t1*t2*t2 + p.A*t2*t2*t3*t3 + p.m*(p.l*p.l*t2*t2*t3*t3 + p.l*p.l*t1*t1*t2*t2);
+    M[3] = 0.0;
+    M[4] = p.m*(p.l*p.l*t3*t3 + p.l*p.l*t1*t1) + p.A*t1*t1 + p.A*t3*t3;
+    M[6] = p.C*t0;
+    M[7] = 0.0;
+    M[8] = p.C;
+    qdd0[0] = qd0[0]*qd0[1]*p.C*t0*t2 - t1*t2*t7 - t2*t3*t10;
+    qdd0[1] = t1*t10 - t3*t7;
+    qdd0[2] = qd0[0]*qd0[1]*p.C*t2;
+    ldlt_factor(M, 3);
+    ldlt_solve(M, 3, qdd0, 1);
+    const double t11 = qd0[0]*qd0[1]*t2*t3 + qd0[0]*qd0[2]*t1*t0;
+    const double t12 = p.l*(p.m*p.g*t1*t0 - p.m*(p.l*t11 + qd0[0]*p.l*t2*t8 - qd0[0]*p.l*t1*t0*t6)) + qd0[0]*p.C*t2*t8 + qd0[0]*p.A*t1*t0*t6 - p.A*t11 - qd0[0]*p.C*t1*t0*t6 - qd0[0]*p.A*t2*t8;
+    const double t13 = qd0[0]*qd0[2]*t0*t3 - qd0[0]*qd0[1]*t1*t2;
+    const double t14 = p.l*(p.m*(p.l*t13 + qd0[0]*p.l*t2*t4 - qd0[0]*p.l*t0*t3*t6) - p.m*p.g*t0*t3) + p.A*t13 + qd0[0]*p.C*t0*t3*t6 + qd0[0]*p.A*t2*t4 - qd0[0]*p.C*t2*t4 - qd0[0]*p.A*t0*t3*t6;
+    const double t15 = p.m*p.l*p.l*qdd0[0]*t0*t3 + p.A*qdd0[0]*t0*t3;
+    const double t16 = p.A*qdd0[0]*t1*t0 + p.m*p.l*p.l*qdd0[0]*t1*t0;
+    const double t17 = qd0[2]*t2*t3 + qd0[1]*t1*t0;
+    const double t18 = p.A*t17 + p.m*p.l*(p.l*t17 - p.l*t2*t3*t6 - p.l*t0*t4) + p.C*t2*t3*t6 + p.C*t0*t4 - p.A*t0*t4 - p.A*t2*t3*t6;
+    const double t19 = qd0[2]*t1*t2 - qd0[1]*t0*t3;
+    const double t20 = p.m*p.l*(p.l*t19 - p.l*t1*t2*t6 - p.l*t0*t8) + p.A*t19 + p.C*t0*t8 + p.C*t1*t2*t6 - p.A*t1*t2*t6 - p.A*t0*t8;
+    const double t21 = qd0[0]*t1*t0 - qd0[2]*t1;
+    const double t22 = p.A*t1*t6 + p.m*p.l*(p.l*t1*t6 + p.l*t21) + p.A*t21 - p.C*t1*t6;
+    const double t23 = qd0[2]*t3 - qd0[0]*t0*t3;
+    const double t24 = p.A*t3*t6 + p.m*p.l*(p.l*t3*t6 - p.l*t23) - p.C*t3*t6 - p.A*t23;
+    A[18] = 0.0;
+    A[19] = qd0[0]*qd0[1]*p.C*t0*t0 + p.C*qdd0[0]*t0*t2 + p.C*t2*(qdd0[2] + qdd0[0]*t0) - t2*t3*t12 - t0*t3*t10 - t1*t0*t7 - t1*t2*t14 - qd0[0]*qd0[1]*p.C*t2*t2 - t0*t3*(p.m*p.l*(p.l*qdd0[0]*t2*t3 - p.l*qdd0[1]*t1) - p.A*(qdd0[1]*t1 - qdd0[0]*t2*t3)) - t2*t3*t15 - t1*t0*(p.A*(qdd0[0]*t1*t2 + qdd0[1]*t3) + p.m*p.l*(p.l*qdd0[0]*t1*t2 + p.l*qdd0[1]*t3)) - t1*t2*t16;
+    A[20] = 0.0;
+    A[21] = qd0[1]*p.C*t0*t2 + t2*t3*t20 - t1*t2*t18;
+    A[22] = qd0[0]*p.C*t0*t2 - t1*t2*t22 - t2*t3*t24;
+    A[23] = p.C*t2*t3*t8 - p.C*t1*t2*t4;
+    A[24] = 0.0;
+    A[25] = t1*t15 + t1*t12 - t3*t16 - t3*t14;
+    A[26] = 0.0;
+    A[27] = -t1*t20 - t3*t18;
+    A[28] = t1*t24 - t3*t22;
+    A[29] = -p.C*t1*t8 - p.C*t3*t4;
+    A[30] = 0.0;
+    A[31] = p.C*qdd0[0]*t2 + qd0[0]*qd0[1]*p.C*t0;
+    A[32] = 0.0;
+    A[33] = qd0[1]*p.C*t2;
+    A[34] = qd0[0]*p.C*t2;
+    A[35] = 0.0;
+    ldlt_solve(M, 3, A + 18, 6);
+}
+
+// dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
+void output_matrices(const double* q0, const double* qd0, const double* u0, const Params& p, double* C, double* D) {
+    (void)qd0;
+    (void)u0;
+    (void)D;
+    const double t0 = std::sin(q0[1]);
+    C[0] = 0.0;
+    C[1] = -p.l*t0;
+    C[2] = 0.0;
+    C[3] = 0.0;
+    C[4] = 0.0;
+    C[5] = 0.0;
+    C[6] = 0.0;
+    C[7] = 0.0;
+    C[8] = 0.0;
+    C[9] = 0.0;
+    C[10] = 0.0;
+    C[11] = 1.0;
+}
+
+// the model's operating point (no linearize block: zeros)
+void operating_point(const Params& p, double* q0, double* qd0, double* u0) {
+    (void)p;
+    (void)u0;
+    q0[0] = 0.0;
+    q0[1] = 0.0;
+    q0[2] = 0.0;
+    qd0[0] = 0.0;
+    qd0[1] = 0.0;
+    qd0[2] = 0.0;
 }
 
 } // namespace heavy_top

@@ -24,12 +24,16 @@
 //   y[1] "spin_rate" "spin rate [rad/s]"
 //
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix   7 adds, 33 muls, 0 divs, 4 calls
-//   forcing       18 adds, 54 muls, 0 divs, 4 calls
-//   jacobians     73 adds, 234 muls, 0 divs, 4 calls
-//   outputs       0 adds, 1 muls, 0 divs, 1 calls
-//   rhs           35 adds, 101 muls, 6 divs, 4 calls
-//   rhs_jacobian  147 adds, 386 muls, 24 divs, 4 calls
+//   mass_matrix      7 adds, 33 muls, 0 divs, 4 calls
+//   forcing          18 adds, 54 muls, 0 divs, 4 calls
+//   jacobians        73 adds, 234 muls, 0 divs, 4 calls
+//   outputs          0 adds, 1 muls, 0 divs, 1 calls
+//   rhs              35 adds, 101 muls, 6 divs, 4 calls
+//   rhs_jacobian     147 adds, 386 muls, 24 divs, 4 calls
+//   linear           111 adds, 350 muls, 6 divs, 4 calls
+//   state_space      147 adds, 386 muls, 24 divs, 4 calls
+//   output_matrices  0 adds, 1 muls, 0 divs, 1 calls
+//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 
 #ifndef heavy_top_YAMSC_GENERATED_H
 #define heavy_top_YAMSC_GENERATED_H
@@ -76,6 +80,14 @@ void heavy_top_outputs(double t, const double* q, const double* qd, const double
 void heavy_top_rhs(double t, const double* x, const double* u, const heavy_top_params* p, double* xdot);
 // d(rhs)/dx, 2nq x 2nq, row-major
 void heavy_top_rhs_jacobian(double t, const double* x, const double* u, const heavy_top_params* p, double* J);
+// M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
+void heavy_top_linear(const double* q0, const double* qd0, const double* u0, const heavy_top_params* p, double* M0, double* C0, double* K0, double* Q0);
+// x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
+void heavy_top_state_space(const double* q0, const double* qd0, const double* u0, const heavy_top_params* p, double* A, double* B);
+// dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
+void heavy_top_output_matrices(const double* q0, const double* qd0, const double* u0, const heavy_top_params* p, double* C, double* D);
+// the model's operating point (no linearize block: zeros)
+void heavy_top_operating_point(const heavy_top_params* p, double* q0, double* qd0, double* u0);
 
 #ifdef __cplusplus
 }

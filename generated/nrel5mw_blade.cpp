@@ -24,12 +24,16 @@
 //   y[1] "tip_edge" "tip in-plane deflection [m]"
 //
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix   0 adds, 0 muls, 0 divs, 0 calls
-//   forcing       30 adds, 51 muls, 0 divs, 0 calls
-//   jacobians     14 adds, 17 muls, 0 divs, 0 calls
-//   outputs       1 adds, 0 muls, 0 divs, 0 calls
-//   rhs           40 adds, 65 muls, 6 divs, 0 calls
-//   rhs_jacobian  90 adds, 118 muls, 24 divs, 0 calls
+//   mass_matrix      0 adds, 0 muls, 0 divs, 0 calls
+//   forcing          30 adds, 51 muls, 0 divs, 0 calls
+//   jacobians        14 adds, 17 muls, 0 divs, 0 calls
+//   outputs          1 adds, 0 muls, 0 divs, 0 calls
+//   rhs              40 adds, 65 muls, 6 divs, 0 calls
+//   rhs_jacobian     90 adds, 118 muls, 24 divs, 0 calls
+//   linear           14 adds, 17 muls, 0 divs, 0 calls
+//   state_space      72 adds, 79 muls, 30 divs, 0 calls
+//   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
+//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 
 #include "nrel5mw_blade.hpp"
 
@@ -244,6 +248,168 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     J[34] = 0.0;
     J[35] = -66.19114798329782;
     ldlt_solve(M, 3, J + 18, 6);
+}
+
+// M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
+void linear(const double* q0, const double* qd0, const double* u0, const Params& p, double* M0, double* C0, double* K0, double* Q0) {
+    (void)q0;
+    (void)qd0;
+    (void)u0;
+    const double t0 = p.Omega*p.Omega*p.r_hub;
+    const double t1 = p.Omega*p.Omega;
+    const double t2 = 0.847751035148879*t0 + 211.0450910191564*t1 - 2.741630858313867e-14;
+    const double t3 = 3.5275715185598804*t0 + 16.08874638478912*t1 - 2.317440676728672e-14;
+    M0[0] = 907.8170320078789;
+    M0[3] = 32.07481091354347;
+    M0[4] = 1412.7426998641395;
+    M0[6] = 1.757950909155567;
+    M0[7] = 132.7732946183086;
+    M0[8] = 562.5428734352946;
+    M0[1] = M0[3];
+    M0[2] = M0[6];
+    M0[5] = M0[7];
+    C0[0] = 37.23775760189005;
+    C0[1] = 0.0;
+    C0[2] = 0.0;
+    C0[3] = 0.0;
+    C0[4] = 92.99490883515328;
+    C0[5] = 0.0;
+    C0[6] = 0.0;
+    C0[7] = 0.0;
+    C0[8] = 66.19114798329782;
+    K0[0] = 32.76276733211943*t0 + 1546.0947015388272*t1 + 16750.41764816945;
+    K0[1] = t2;
+    K0[2] = 11.098969749745333*t0 + 846.7935078235903*t1 - 1459.2938998123207;
+    K0[3] = t2;
+    K0[4] = 45.26706875905005*t0 + 604.9648333371205*t1 + 67129.3125250449;
+    K0[5] = t3;
+    K0[6] = 11.098969749745333*t0 + 846.7935078235902*t1 - 1459.2938998123207;
+    K0[7] = t3;
+    K0[8] = 62.6977854351309*t0 + 3015.2436526369297*t1 + 85408.50594715579;
+    Q0[0] = 1.0;
+    Q0[1] = 0.0;
+    Q0[2] = 0.0;
+    Q0[3] = 0.0;
+    Q0[4] = 1.0;
+    Q0[5] = 0.0;
+    Q0[6] = 0.0;
+    Q0[7] = 0.0;
+    Q0[8] = 1.0;
+}
+
+// x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
+void state_space(const double* q0, const double* qd0, const double* u0, const Params& p, double* A, double* B) {
+    (void)q0;
+    (void)qd0;
+    (void)u0;
+    double M[9];
+    A[0] = 0.0;
+    A[1] = 0.0;
+    A[2] = 0.0;
+    A[3] = 1.0;
+    A[4] = 0.0;
+    A[5] = 0.0;
+    A[6] = 0.0;
+    A[7] = 0.0;
+    A[8] = 0.0;
+    A[9] = 0.0;
+    A[10] = 1.0;
+    A[11] = 0.0;
+    A[12] = 0.0;
+    A[13] = 0.0;
+    A[14] = 0.0;
+    A[15] = 0.0;
+    A[16] = 0.0;
+    A[17] = 1.0;
+    B[0] = 0.0;
+    B[1] = 0.0;
+    B[2] = 0.0;
+    B[3] = 0.0;
+    B[4] = 0.0;
+    B[5] = 0.0;
+    B[6] = 0.0;
+    B[7] = 0.0;
+    B[8] = 0.0;
+    M[0] = 907.8170320078789;
+    M[3] = 32.07481091354347;
+    M[4] = 1412.7426998641395;
+    M[6] = 1.757950909155567;
+    M[7] = 132.7732946183086;
+    M[8] = 562.5428734352946;
+    ldlt_factor(M, 3);
+    const double t0 = p.Omega*p.Omega*p.r_hub;
+    const double t1 = p.Omega*p.Omega;
+    const double t2 = -(0.847751035148879*t0 + 211.0450910191564*t1 - 2.741630858313867e-14);
+    const double t3 = -(3.5275715185598804*t0 + 16.08874638478912*t1 - 2.317440676728672e-14);
+    A[18] = -32.76276733211943*t0 - 1546.0947015388272*t1 - 16750.41764816945;
+    A[19] = t2;
+    A[20] = -11.098969749745333*t0 - 846.7935078235903*t1 + 1459.2938998123207;
+    A[21] = -37.23775760189005;
+    A[22] = 0.0;
+    A[23] = 0.0;
+    A[24] = t2;
+    A[25] = -45.26706875905005*t0 - 604.9648333371205*t1 - 67129.3125250449;
+    A[26] = t3;
+    A[27] = 0.0;
+    A[28] = -92.99490883515328;
+    A[29] = 0.0;
+    A[30] = -11.098969749745333*t0 - 846.7935078235902*t1 + 1459.2938998123207;
+    A[31] = t3;
+    A[32] = -62.6977854351309*t0 - 3015.2436526369297*t1 - 85408.50594715579;
+    A[33] = 0.0;
+    A[34] = 0.0;
+    A[35] = -66.19114798329782;
+    B[9] = 1.0;
+    B[10] = 0.0;
+    B[11] = 0.0;
+    B[12] = 0.0;
+    B[13] = 1.0;
+    B[14] = 0.0;
+    B[15] = 0.0;
+    B[16] = 0.0;
+    B[17] = 1.0;
+    ldlt_solve(M, 3, A + 18, 6);
+    ldlt_solve(M, 3, B + 9, 3);
+}
+
+// dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
+void output_matrices(const double* q0, const double* qd0, const double* u0, const Params& p, double* C, double* D) {
+    (void)q0;
+    (void)qd0;
+    (void)u0;
+    (void)p;
+    C[0] = 1.0;
+    C[1] = 0.0;
+    C[2] = 1.0;
+    C[3] = 0.0;
+    C[4] = 0.0;
+    C[5] = 0.0;
+    C[6] = 0.0;
+    C[7] = 1.0;
+    C[8] = 0.0;
+    C[9] = 0.0;
+    C[10] = 0.0;
+    C[11] = 0.0;
+    D[0] = 0.0;
+    D[1] = 0.0;
+    D[2] = 0.0;
+    D[3] = 0.0;
+    D[4] = 0.0;
+    D[5] = 0.0;
+}
+
+// the model's operating point (no linearize block: zeros)
+void operating_point(const Params& p, double* q0, double* qd0, double* u0) {
+    (void)p;
+    q0[0] = 0.0;
+    q0[1] = 0.0;
+    q0[2] = 0.0;
+    qd0[0] = 0.0;
+    qd0[1] = 0.0;
+    qd0[2] = 0.0;
+    u0[0] = 0.0;
+    u0[1] = 0.0;
+    u0[2] = 0.0;
 }
 
 } // namespace nrel5mw_blade

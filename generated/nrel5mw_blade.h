@@ -24,12 +24,16 @@
 //   y[1] "tip_edge" "tip in-plane deflection [m]"
 //
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix   0 adds, 0 muls, 0 divs, 0 calls
-//   forcing       30 adds, 51 muls, 0 divs, 0 calls
-//   jacobians     14 adds, 17 muls, 0 divs, 0 calls
-//   outputs       1 adds, 0 muls, 0 divs, 0 calls
-//   rhs           40 adds, 65 muls, 6 divs, 0 calls
-//   rhs_jacobian  90 adds, 118 muls, 24 divs, 0 calls
+//   mass_matrix      0 adds, 0 muls, 0 divs, 0 calls
+//   forcing          30 adds, 51 muls, 0 divs, 0 calls
+//   jacobians        14 adds, 17 muls, 0 divs, 0 calls
+//   outputs          1 adds, 0 muls, 0 divs, 0 calls
+//   rhs              40 adds, 65 muls, 6 divs, 0 calls
+//   rhs_jacobian     90 adds, 118 muls, 24 divs, 0 calls
+//   linear           14 adds, 17 muls, 0 divs, 0 calls
+//   state_space      72 adds, 79 muls, 30 divs, 0 calls
+//   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
+//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 
 #ifndef nrel5mw_blade_YAMSC_GENERATED_H
 #define nrel5mw_blade_YAMSC_GENERATED_H
@@ -74,6 +78,14 @@ void nrel5mw_blade_outputs(double t, const double* q, const double* qd, const do
 void nrel5mw_blade_rhs(double t, const double* x, const double* u, const nrel5mw_blade_params* p, double* xdot);
 // d(rhs)/dx, 2nq x 2nq, row-major
 void nrel5mw_blade_rhs_jacobian(double t, const double* x, const double* u, const nrel5mw_blade_params* p, double* J);
+// M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
+void nrel5mw_blade_linear(const double* q0, const double* qd0, const double* u0, const nrel5mw_blade_params* p, double* M0, double* C0, double* K0, double* Q0);
+// x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
+void nrel5mw_blade_state_space(const double* q0, const double* qd0, const double* u0, const nrel5mw_blade_params* p, double* A, double* B);
+// dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
+void nrel5mw_blade_output_matrices(const double* q0, const double* qd0, const double* u0, const nrel5mw_blade_params* p, double* C, double* D);
+// the model's operating point (no linearize block: zeros)
+void nrel5mw_blade_operating_point(const nrel5mw_blade_params* p, double* q0, double* qd0, double* u0);
 
 #ifdef __cplusplus
 }

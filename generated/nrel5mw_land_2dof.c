@@ -32,12 +32,16 @@
 //   y[1] "rotor_speed" "[rad/s]"
 //
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix   16 adds, 36 muls, 0 divs, 4 calls
-//   forcing       30 adds, 88 muls, 0 divs, 4 calls
-//   jacobians     50 adds, 167 muls, 0 divs, 4 calls
-//   outputs       0 adds, 1 muls, 0 divs, 0 calls
-//   rhs           44 adds, 117 muls, 3 divs, 4 calls
-//   rhs_jacobian  92 adds, 263 muls, 11 divs, 4 calls
+//   mass_matrix      16 adds, 36 muls, 0 divs, 4 calls
+//   forcing          30 adds, 88 muls, 0 divs, 4 calls
+//   jacobians        50 adds, 167 muls, 0 divs, 4 calls
+//   outputs          0 adds, 1 muls, 0 divs, 0 calls
+//   rhs              44 adds, 117 muls, 3 divs, 4 calls
+//   rhs_jacobian     92 adds, 263 muls, 11 divs, 4 calls
+//   linear           84 adds, 256 muls, 3 divs, 4 calls
+//   state_space      98 adds, 270 muls, 17 divs, 4 calls
+//   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
+//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 
 #include "nrel5mw_land_2dof.h"
 
@@ -336,4 +340,183 @@ void nrel5mw_land_2dof_rhs_jacobian(double t, const double* x, const double* u, 
     J[14] = 0.0;
     J[15] = 0.0;
     nrel5mw_land_2dof_ldlt_solve(M, 2, J + 8, 4);
+}
+
+// M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
+void nrel5mw_land_2dof_linear(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_2dof_params* p, double* M0, double* C0, double* K0, double* Q0) {
+    double M[4];
+    double qdd0[2];
+    const double t0 = 1.74496709999541e+30*q0[0] - 9.260273972602776e+30*p->x_NG;
+    const double t1 = q0[0]*q0[0];
+    const double t2 = 1.1575342465753469e+33*p->z_NG + 1.739845015713223e+31*t1 + 6.250000000000012e+34;
+    const double t3 = cos(q0[1]);
+    const double t4 = cos(p->theta_t);
+    const double t5 = 1.74496709999541e+30*q0[0] - 9.260273972602776e+30*p->x_NR;
+    const double t6 = sin(p->theta_t);
+    const double t7 = 1.1575342465753469e+33*p->z_NR + 1.739845015713223e+31*t1 + 6.250000000000012e+34;
+    const double t8 = 125.0*t4*t5 + t6*t7;
+    const double t9 = sin(q0[1]);
+    const double t10 = t4*t7 - 125.0*t6*t5;
+    const double t11 = 0.00034301069619065757*p->J_yN + 2.56e-70*p->M_N*(15625.0*t0*t0 + t2*t2) + 0.00034301069619065757*p->J_oR*t3*t3 + 2.56e-70*p->M_R*(t3*t3*t8*t8 + t9*t9*t8*t8 + t10*t10) + 0.00034301069619065757*p->J_oR*t9*t9 + 53982.807121442376;
+    const double t12 = q0[0]*qd0[0]*qd0[0];
+    const double t13 = 1e+18*q0[0]*p->g*p->M_N - p->M_N*(1.5030613745214768e+16*t12 - 1.852054794520555e+16*qd0[0]*qd0[0]*p->x_NG);
+    const double t14 = 5.799483385710743e+30*t1 + 2.0833333333333374e+34;
+    const double t15 = qd0[0]*qd0[0];
+    const double t16 = 3.4301069619065754e+32*qd0[0]*qd0[0]*p->z_NR + 1.5030613745214767e+34*t15;
+    const double t17 = 1.5030613745214768e+16*t12 - 1.852054794520555e+16*qd0[0]*qd0[0]*p->x_NR;
+    const double t18 = q0[0]*t4;
+    const double t19 = p->M_R*(t6*t16 + 1.852054794520555e+16*t4*t17) - 1e+18*p->g*p->M_R*(1e+18*t6 + 1.852054794520555e+16*t18);
+    const double t20 = p->g*p->M_N;
+    const double t21 = 1e+36*t20 - p->M_N*(1.5030613745214767e+34*t15 + 3.4301069619065754e+32*qd0[0]*qd0[0]*p->z_NG);
+    const double t22 = 1.852054794520555e+16*t6*t17 - t4*t16;
+    const double t23 = q0[0]*t6;
+    const double t24 = 1e+18*t4 - 1.852054794520555e+16*t23;
+    const double t25 = p->M_R*t9*t22 + 1e+18*p->g*p->M_R*t9*t24;
+    const double t26 = p->M_R*t3*t22 + 1e+18*p->g*p->M_R*t3*t24;
+    M0[0] = t11;
+    M0[2] = 0.0;
+    M0[3] = p->J_xR;
+    M0[1] = M0[2];
+    M[0] = t11;
+    M[2] = 0.0;
+    M[3] = p->J_xR;
+    qdd0[0] = 8.889863013698665e-55*t13*t14 + 1.6e-35*u0[0]*t10 + 3.4301069619065757e-22*p->z_NG*t13 + 1064.8511218419937*q0[0]*p->g + 1.8520547945205551e-38*p->x_NG*t21 - 1912686.284595107*q0[0] - 6426.575286577631*qd0[0] - 1.6e-71*t10*t19 - 1.6e-71*t9*t8*t25 - 1.6e-71*t3*t8*t26 - 3.48993419999082e-39*q0[0]*t21;
+    qdd0[1] = u0[1] - u0[2];
+    nrel5mw_land_2dof_ldlt_factor(M, 2);
+    nrel5mw_land_2dof_ldlt_solve(M, 2, qdd0, 1);
+    const double t27 = 3.0061227490429535e+34*qd0[0] + 6.860213923813151e+32*qd0[0]*p->z_NR;
+    const double t28 = q0[0]*qd0[0];
+    const double t29 = 3.0061227490429536e+16*t28 - 3.70410958904111e+16*qd0[0]*p->x_NR;
+    const double t30 = t4*t27 - 1.852054794520555e+16*t6*t29;
+    const double t31 = 3.0061227490429536e+16*t28 - 3.70410958904111e+16*qd0[0]*p->x_NG;
+    const double t32 = 3.0061227490429535e+34*qd0[0] + 6.860213923813151e+32*qd0[0]*p->z_NG;
+    const double t33 = 2.1812088749942626e+32*t4 + 3.479690031426446e+31*t23;
+    const double t34 = 2.1812088749942626e+32*t6 - 3.479690031426446e+31*t18;
+    const double t35 = 1e+18*t20 - 1.5030613745214768e+16*qd0[0]*qd0[0]*p->M_N;
+    C0[0] = 1.6e-71*p->M_R*(t6*t27 + 1.852054794520555e+16*t4*t29)*t10 + 8.889863013698665e-55*p->M_N*t14*t31 + 1.8520547945205551e-38*p->M_N*p->x_NG*t32 + 3.4301069619065757e-22*p->M_N*p->z_NG*t31 - 1.6e-71*p->M_R*t3*t3*t8*t30 - 3.48993419999082e-39*q0[0]*p->M_N*t32 - 1.6e-71*p->M_R*t9*t9*t8*t30 + 6426.575286577631;
+    C0[1] = 0.0;
+    C0[2] = 0.0;
+    C0[3] = 0.0;
+    K0[0] = 1.0311322569837969e-05*q0[0]*p->M_N*p->z_NG*qdd0[0] + 5.12e-70*p->M_R*qdd0[0]*t3*t3*t8*t33 + 5.12e-70*p->M_R*qdd0[0]*t9*t9*t8*t33 + 7.68e-70*(1.1598966771421487e+31*q0[0]*p->M_N*qdd0[0]*t2 + 3.479690031426446e+31*q0[0]*p->M_N*qdd0[0]*t14) + 6.97986839998164e-36*(1.74496709999541e+30*q0[0]*p->M_N*qdd0[0] + p->M_N*qdd0[0]*t0) + 1.6e-35*u0[0]*t34 + 1.6e-71*(t9*t8*(2.783752025141157e+32*qd0[0]*qd0[0]*p->M_R*t9*t6 - 1.8520547945205552e+34*p->g*p->M_R*t9*t6) + t9*t25*t33) + 1.6e-71*(t3*t33*t26 + t3*t8*(2.783752025141157e+32*qd0[0]*qd0[0]*p->M_R*t3*t6 - 1.8520547945205552e+34*p->g*p->M_R*t3*t6)) + 3.48993419999082e-39*t21 - 6.463549367654256e-05*p->M_N*p->x_NG*qdd0[0] - 5.12e-70*p->M_R*qdd0[0]*t10*t34 - 1064.8511218419937*p->g - 3.4301069619065757e-22*p->z_NG*t35 - 8.889863013698665e-55*(t35*t14 + 1.1598966771421487e+31*q0[0]*t13) - 1.6e-71*((1.8520547945205552e+34*p->g*p->M_R*t4 - 2.783752025141157e+32*qd0[0]*qd0[0]*p->M_R*t4)*t10 + t19*t34) + 1912686.284595107;
+    K0[1] = 0.0;
+    K0[2] = 0.0;
+    K0[3] = 0.0;
+    Q0[0] = 1.6e-35*t10;
+    Q0[1] = 0.0;
+    Q0[2] = 0.0;
+    Q0[3] = 0.0;
+    Q0[4] = 1.0;
+    Q0[5] = -1.0;
+}
+
+// x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
+void nrel5mw_land_2dof_state_space(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_2dof_params* p, double* A, double* B) {
+    double M[4];
+    double qdd0[2];
+    const double t0 = 1.74496709999541e+30*q0[0] - 9.260273972602776e+30*p->x_NG;
+    const double t1 = q0[0]*q0[0];
+    const double t2 = 1.1575342465753469e+33*p->z_NG + 1.739845015713223e+31*t1 + 6.250000000000012e+34;
+    const double t3 = cos(q0[1]);
+    const double t4 = cos(p->theta_t);
+    const double t5 = 1.74496709999541e+30*q0[0] - 9.260273972602776e+30*p->x_NR;
+    const double t6 = sin(p->theta_t);
+    const double t7 = 1.1575342465753469e+33*p->z_NR + 1.739845015713223e+31*t1 + 6.250000000000012e+34;
+    const double t8 = 125.0*t4*t5 + t6*t7;
+    const double t9 = sin(q0[1]);
+    const double t10 = t4*t7 - 125.0*t6*t5;
+    const double t11 = q0[0]*qd0[0]*qd0[0];
+    const double t12 = 1e+18*q0[0]*p->g*p->M_N - p->M_N*(1.5030613745214768e+16*t11 - 1.852054794520555e+16*qd0[0]*qd0[0]*p->x_NG);
+    const double t13 = 5.799483385710743e+30*t1 + 2.0833333333333374e+34;
+    const double t14 = qd0[0]*qd0[0];
+    const double t15 = 3.4301069619065754e+32*qd0[0]*qd0[0]*p->z_NR + 1.5030613745214767e+34*t14;
+    const double t16 = 1.5030613745214768e+16*t11 - 1.852054794520555e+16*qd0[0]*qd0[0]*p->x_NR;
+    const double t17 = q0[0]*t4;
+    const double t18 = p->M_R*(t6*t15 + 1.852054794520555e+16*t4*t16) - 1e+18*p->g*p->M_R*(1e+18*t6 + 1.852054794520555e+16*t17);
+    const double t19 = p->g*p->M_N;
+    const double t20 = 1e+36*t19 - p->M_N*(1.5030613745214767e+34*t14 + 3.4301069619065754e+32*qd0[0]*qd0[0]*p->z_NG);
+    const double t21 = 1.852054794520555e+16*t6*t16 - t4*t15;
+    const double t22 = q0[0]*t6;
+    const double t23 = 1e+18*t4 - 1.852054794520555e+16*t22;
+    const double t24 = p->M_R*t9*t21 + 1e+18*p->g*p->M_R*t9*t23;
+    const double t25 = p->M_R*t3*t21 + 1e+18*p->g*p->M_R*t3*t23;
+    A[0] = 0.0;
+    A[1] = 0.0;
+    A[2] = 1.0;
+    A[3] = 0.0;
+    A[4] = 0.0;
+    A[5] = 0.0;
+    A[6] = 0.0;
+    A[7] = 1.0;
+    B[0] = 0.0;
+    B[1] = 0.0;
+    B[2] = 0.0;
+    B[3] = 0.0;
+    B[4] = 0.0;
+    B[5] = 0.0;
+    M[0] = 0.00034301069619065757*p->J_yN + 2.56e-70*p->M_N*(15625.0*t0*t0 + t2*t2) + 0.00034301069619065757*p->J_oR*t3*t3 + 2.56e-70*p->M_R*(t3*t3*t8*t8 + t9*t9*t8*t8 + t10*t10) + 0.00034301069619065757*p->J_oR*t9*t9 + 53982.807121442376;
+    M[2] = 0.0;
+    M[3] = p->J_xR;
+    qdd0[0] = 8.889863013698665e-55*t12*t13 + 1.6e-35*u0[0]*t10 + 3.4301069619065757e-22*p->z_NG*t12 + 1064.8511218419937*q0[0]*p->g + 1.8520547945205551e-38*p->x_NG*t20 - 1912686.284595107*q0[0] - 6426.575286577631*qd0[0] - 1.6e-71*t10*t18 - 1.6e-71*t9*t8*t24 - 1.6e-71*t3*t8*t25 - 3.48993419999082e-39*q0[0]*t20;
+    qdd0[1] = u0[1] - u0[2];
+    nrel5mw_land_2dof_ldlt_factor(M, 2);
+    nrel5mw_land_2dof_ldlt_solve(M, 2, qdd0, 1);
+    const double t26 = 2.1812088749942626e+32*t4 + 3.479690031426446e+31*t22;
+    const double t27 = 2.1812088749942626e+32*t6 - 3.479690031426446e+31*t17;
+    const double t28 = 1e+18*t19 - 1.5030613745214768e+16*qd0[0]*qd0[0]*p->M_N;
+    const double t29 = 3.0061227490429535e+34*qd0[0] + 6.860213923813151e+32*qd0[0]*p->z_NR;
+    const double t30 = q0[0]*qd0[0];
+    const double t31 = 3.0061227490429536e+16*t30 - 3.70410958904111e+16*qd0[0]*p->x_NR;
+    const double t32 = t4*t29 - 1.852054794520555e+16*t6*t31;
+    const double t33 = 3.0061227490429536e+16*t30 - 3.70410958904111e+16*qd0[0]*p->x_NG;
+    const double t34 = 3.0061227490429535e+34*qd0[0] + 6.860213923813151e+32*qd0[0]*p->z_NG;
+    A[8] = 6.463549367654256e-05*p->M_N*p->x_NG*qdd0[0] + 5.12e-70*p->M_R*qdd0[0]*t10*t27 + 1064.8511218419937*p->g + 3.4301069619065757e-22*p->z_NG*t28 + 8.889863013698665e-55*(t28*t13 + 1.1598966771421487e+31*q0[0]*t12) + 1.6e-71*((1.8520547945205552e+34*p->g*p->M_R*t4 - 2.783752025141157e+32*qd0[0]*qd0[0]*p->M_R*t4)*t10 + t18*t27) - 1.0311322569837969e-05*q0[0]*p->M_N*p->z_NG*qdd0[0] - 5.12e-70*p->M_R*qdd0[0]*t3*t3*t8*t26 - 5.12e-70*p->M_R*qdd0[0]*t9*t9*t8*t26 - 7.68e-70*(1.1598966771421487e+31*q0[0]*p->M_N*qdd0[0]*t2 + 3.479690031426446e+31*q0[0]*p->M_N*qdd0[0]*t13) - 6.97986839998164e-36*(1.74496709999541e+30*q0[0]*p->M_N*qdd0[0] + p->M_N*qdd0[0]*t0) - 1.6e-35*u0[0]*t27 - 1.6e-71*(t9*t8*(2.783752025141157e+32*qd0[0]*qd0[0]*p->M_R*t9*t6 - 1.8520547945205552e+34*p->g*p->M_R*t9*t6) + t9*t24*t26) - 1.6e-71*(t3*t26*t25 + t3*t8*(2.783752025141157e+32*qd0[0]*qd0[0]*p->M_R*t3*t6 - 1.8520547945205552e+34*p->g*p->M_R*t3*t6)) - 3.48993419999082e-39*t20 - 1912686.284595107;
+    A[9] = 0.0;
+    A[10] = 1.6e-71*p->M_R*t3*t3*t8*t32 + 3.48993419999082e-39*q0[0]*p->M_N*t34 + 1.6e-71*p->M_R*t9*t9*t8*t32 - 1.6e-71*p->M_R*(t6*t29 + 1.852054794520555e+16*t4*t31)*t10 - 8.889863013698665e-55*p->M_N*t13*t33 - 1.8520547945205551e-38*p->M_N*p->x_NG*t34 - 3.4301069619065757e-22*p->M_N*p->z_NG*t33 - 6426.575286577631;
+    A[11] = 0.0;
+    A[12] = 0.0;
+    A[13] = 0.0;
+    A[14] = 0.0;
+    A[15] = 0.0;
+    B[6] = 1.6e-35*t10;
+    B[7] = 0.0;
+    B[8] = 0.0;
+    B[9] = 0.0;
+    B[10] = 1.0;
+    B[11] = -1.0;
+    nrel5mw_land_2dof_ldlt_solve(M, 2, A + 8, 4);
+    nrel5mw_land_2dof_ldlt_solve(M, 2, B + 6, 3);
+}
+
+// dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
+void nrel5mw_land_2dof_output_matrices(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_2dof_params* p, double* C, double* D) {
+    (void)q0;
+    (void)qd0;
+    (void)u0;
+    (void)p;
+    C[0] = 1.000000000000002;
+    C[1] = 0.0;
+    C[2] = 0.0;
+    C[3] = 0.0;
+    C[4] = 0.0;
+    C[5] = 0.0;
+    C[6] = 0.0;
+    C[7] = 1.0;
+    D[0] = 0.0;
+    D[1] = 0.0;
+    D[2] = 0.0;
+    D[3] = 0.0;
+    D[4] = 0.0;
+    D[5] = 0.0;
+}
+
+// the model's operating point (no linearize block: zeros)
+void nrel5mw_land_2dof_operating_point(const nrel5mw_land_2dof_params* p, double* q0, double* qd0, double* u0) {
+    (void)p;
+    q0[0] = 0.0;
+    q0[1] = 0.0;
+    qd0[0] = 0.0;
+    qd0[1] = 0.0;
+    u0[0] = 0.0;
+    u0[1] = 0.0;
+    u0[2] = 0.0;
 }

@@ -32,12 +32,16 @@
 //   y[1] "rotor_speed" "[rad/s]"
 //
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix   16 adds, 36 muls, 0 divs, 4 calls
-//   forcing       30 adds, 88 muls, 0 divs, 4 calls
-//   jacobians     50 adds, 167 muls, 0 divs, 4 calls
-//   outputs       0 adds, 1 muls, 0 divs, 0 calls
-//   rhs           44 adds, 117 muls, 3 divs, 4 calls
-//   rhs_jacobian  92 adds, 263 muls, 11 divs, 4 calls
+//   mass_matrix      16 adds, 36 muls, 0 divs, 4 calls
+//   forcing          30 adds, 88 muls, 0 divs, 4 calls
+//   jacobians        50 adds, 167 muls, 0 divs, 4 calls
+//   outputs          0 adds, 1 muls, 0 divs, 0 calls
+//   rhs              44 adds, 117 muls, 3 divs, 4 calls
+//   rhs_jacobian     92 adds, 263 muls, 11 divs, 4 calls
+//   linear           84 adds, 256 muls, 3 divs, 4 calls
+//   state_space      98 adds, 270 muls, 17 divs, 4 calls
+//   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
+//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once
 
@@ -85,6 +89,14 @@ void outputs(double t, const double* q, const double* qd, const double* u, const
 void rhs(double t, const double* x, const double* u, const Params& p, double* xdot);
 // d(rhs)/dx, 2nq x 2nq, row-major
 void rhs_jacobian(double t, const double* x, const double* u, const Params& p, double* J);
+// M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
+void linear(const double* q0, const double* qd0, const double* u0, const Params& p, double* M0, double* C0, double* K0, double* Q0);
+// x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
+void state_space(const double* q0, const double* qd0, const double* u0, const Params& p, double* A, double* B);
+// dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
+void output_matrices(const double* q0, const double* qd0, const double* u0, const Params& p, double* C, double* D);
+// the model's operating point (no linearize block: zeros)
+void operating_point(const Params& p, double* q0, double* qd0, double* u0);
 
 // Everything above in one type, for templates (the runtime's from_generated<Model>).
 struct Model {
@@ -112,6 +124,18 @@ struct Model {
     }
     static void rhs_jacobian(double t, const double* x, const double* u, const Params& p, double* J) {
         ::nrel5mw_land_2dof::rhs_jacobian(t, x, u, p, J);
+    }
+    static void linear(const double* q0, const double* qd0, const double* u0, const Params& p, double* M0, double* C0, double* K0, double* Q0) {
+        ::nrel5mw_land_2dof::linear(q0, qd0, u0, p, M0, C0, K0, Q0);
+    }
+    static void state_space(const double* q0, const double* qd0, const double* u0, const Params& p, double* A, double* B) {
+        ::nrel5mw_land_2dof::state_space(q0, qd0, u0, p, A, B);
+    }
+    static void output_matrices(const double* q0, const double* qd0, const double* u0, const Params& p, double* C, double* D) {
+        ::nrel5mw_land_2dof::output_matrices(q0, qd0, u0, p, C, D);
+    }
+    static void operating_point(const Params& p, double* q0, double* qd0, double* u0) {
+        ::nrel5mw_land_2dof::operating_point(p, q0, qd0, u0);
     }
     static void params_to_array(const Params& p, double* a) {
         ::nrel5mw_land_2dof::params_to_array(p, a);

@@ -40,12 +40,16 @@
 //   y[2] "RotSpeed_rpm" "rotor speed [rpm]"
 //
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix   27 adds, 55 muls, 0 divs, 6 calls
-//   forcing       31 adds, 80 muls, 0 divs, 6 calls
-//   jacobians     53 adds, 177 muls, 0 divs, 6 calls
-//   outputs       1 adds, 3 muls, 0 divs, 1 calls
-//   rhs           64 adds, 144 muls, 6 divs, 6 calls
-//   rhs_jacobian  170 adds, 395 muls, 24 divs, 6 calls
+//   mass_matrix      27 adds, 55 muls, 0 divs, 6 calls
+//   forcing          31 adds, 80 muls, 0 divs, 6 calls
+//   jacobians        53 adds, 177 muls, 0 divs, 6 calls
+//   outputs          1 adds, 3 muls, 0 divs, 1 calls
+//   rhs              64 adds, 144 muls, 6 divs, 6 calls
+//   rhs_jacobian     170 adds, 395 muls, 24 divs, 6 calls
+//   linear           134 adds, 360 muls, 6 divs, 6 calls
+//   state_space      182 adds, 408 muls, 30 divs, 6 calls
+//   output_matrices  0 adds, 1 muls, 0 divs, 1 calls
+//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 
 #include "nrel5mw_spar_rigid.h"
 
@@ -403,4 +407,232 @@ void nrel5mw_spar_rigid_rhs_jacobian(double t, const double* x, const double* u,
     J[34] = 0.0;
     J[35] = 0.0;
     nrel5mw_spar_rigid_ldlt_solve(M, 3, J + 18, 6);
+}
+
+// M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
+void nrel5mw_spar_rigid_linear(const double* q0, const double* qd0, const double* u0, const nrel5mw_spar_rigid_params* p, double* M0, double* C0, double* K0, double* Q0) {
+    double M[9];
+    double qdd0[3];
+    const double t0 = cos(q0[1]);
+    const double t1 = sin(q0[1]);
+    const double t2 = t0*t0 + t1*t1;
+    const double t3 = sin(q0[2]);
+    const double t4 = -p->theta_t;
+    const double t5 = sin(t4);
+    const double t6 = cos(t4);
+    const double t7 = t0*t5 + t1*t6;
+    const double t8 = cos(q0[2]);
+    const double t9 = t0*t6 - t1*t5;
+    const double t10 = p->M_N*t2 + p->M_T*t2 + p->M_R*(t3*t3*t7*t7 + t8*t8*t7*t7 + t9*t9) + p->M_P*t2;
+    const double t11 = p->L_T + p->z_NG;
+    const double t12 = p->L_T + p->z_NR;
+    const double t13 = p->x_NR - t5*t12;
+    const double t14 = p->M_N*(t0*t11 - p->x_NG*t1) + p->M_T*p->z_TG*t0 + p->M_P*p->z_PG*t0 - p->M_R*(t8*t8*t7*t13 + t3*t3*t7*t13 - t6*t9*t12);
+    const double t15 = p->J_P + p->J_T + p->J_R*t8*t8 + p->M_N*(p->x_NG*p->x_NG + t11*t11) + p->J_R*t3*t3 + p->M_R*(t6*t6*t12*t12 + t3*t3*t13*t13 + t8*t8*t13*t13) + p->M_P*p->z_PG*p->z_PG + p->M_T*p->z_TG*p->z_TG;
+    const double t16 = qd0[1]*qd0[1]*p->L_T;
+    const double t17 = qd0[1]*qd0[1]*p->z_NR + t16;
+    const double t18 = p->M_R*t3*t6*t17 - p->g*p->M_R*t3*t9;
+    const double t19 = p->g*p->M_N*t0 - p->M_N*(qd0[1]*qd0[1]*p->z_NG + t16);
+    const double t20 = p->g*p->M_R*t8*t9 - p->M_R*t6*t8*t17;
+    const double t21 = p->M_R*(t5*t17 - qd0[1]*qd0[1]*p->x_NR) - p->g*p->M_R*t7;
+    const double t22 = qd0[1]*qd0[1]*p->M_T*p->z_TG - p->g*p->M_T*t0;
+    const double t23 = p->g*p->M_P*t0 - qd0[1]*qd0[1]*p->M_P*p->z_PG;
+    const double t24 = qd0[1]*qd0[1]*p->M_N*p->x_NG + p->g*p->M_N*t1;
+    M0[0] = t10;
+    M0[3] = t14;
+    M0[4] = t15;
+    M0[6] = 0.0;
+    M0[7] = 0.0;
+    M0[8] = p->J_xR;
+    M0[1] = M0[3];
+    M0[2] = M0[6];
+    M0[5] = M0[7];
+    M[0] = t10;
+    M[3] = t14;
+    M[4] = t15;
+    M[6] = 0.0;
+    M[7] = 0.0;
+    M[8] = p->J_xR;
+    qdd0[0] = t3*t18*t7 + u0[0]*t9 + t1*t22 + p->g*p->M_P*t0*t1 + p->g*p->M_T*t0*t1 + t0*t24 - t1*t19 - t8*t20*t7 - t9*t21 - t1*t23;
+    qdd0[1] = p->x_NG*t19 + p->z_NG*t24 + u0[0]*t6*t12 + p->g*p->M_T*p->z_TG*t1 + p->g*p->M_P*p->z_PG*t1 + t8*t20*t13 + p->L_T*t24 - t3*t18*t13 - t6*t12*t21;
+    qdd0[2] = u0[1];
+    nrel5mw_spar_rigid_ldlt_factor(M, 3);
+    nrel5mw_spar_rigid_ldlt_solve(M, 3, qdd0, 1);
+    const double t25 = qd0[1]*p->L_T;
+    const double t26 = 2.0*qd0[1]*p->z_NG + 2.0*t25;
+    const double t27 = 2.0*qd0[1]*p->z_NR + 2.0*t25;
+    const double t28 = t5*t27 - 2.0*qd0[1]*p->x_NR;
+    const double t29 = p->g*p->M_T*t1*t1;
+    const double t30 = p->g*p->M_P*t1*t1;
+    const double t31 = p->M_T*qdd0[0]*t0*t1;
+    const double t32 = p->M_P*qdd0[0]*t0*t1;
+    const double t33 = p->M_N*qdd0[0]*t0*t1;
+    const double t34 = qdd0[0]*t0;
+    C0[0] = 0.0;
+    C0[1] = p->M_R*t9*t28 - p->M_N*t1*t26 - p->M_R*t3*t3*t6*t27*t7 - p->M_R*t6*t8*t8*t27*t7 - 2.0*qd0[1]*p->M_N*p->x_NG*t0 - 2.0*qd0[1]*p->M_T*p->z_TG*t1 - 2.0*qd0[1]*p->M_P*p->z_PG*t1;
+    C0[2] = 0.0;
+    C0[3] = 0.0;
+    C0[4] = p->M_R*t6*t12*t28 + p->M_N*p->x_NG*t26 + p->M_R*t6*t8*t8*t27*t13 + p->M_R*t3*t3*t6*t27*t13 - 2.0*qd0[1]*p->M_N*p->x_NG*p->z_NG - 2.0*qd0[1]*p->L_T*p->M_N*p->x_NG;
+    C0[5] = 0.0;
+    C0[6] = 0.0;
+    C0[7] = 0.0;
+    C0[8] = 0.0;
+    K0[0] = 0.0;
+    K0[1] = u0[0]*t7 + t29 + t0*t23 + t8*t20*t9 + t0*t19 + t30 + t1*t24 + 2.0*t31 + 2.0*t32 + p->M_N*t0*(qdd0[0]*t1 - p->x_NG*qdd0[1]) + t33 + p->M_R*qdd0[0]*t3*t3*t9*t7 + p->M_R*t3*t9*(qdd0[0]*t3*t7 - qdd0[1]*t3*t13) + p->M_R*qdd0[0]*t8*t8*t9*t7 - p->g*p->M_R*t3*t3*t7*t7 - t3*t18*t9 - p->g*p->M_T*t0*t0 - t30 - p->g*p->M_R*t8*t8*t7*t7 - t0*t22 - t29 - p->g*p->M_R*t9*t9 - t7*t21 - p->g*p->M_N*t1*t1 - p->g*p->M_P*t0*t0 - p->g*p->M_N*t0*t0 - t31 - p->M_T*t1*(t34 + p->z_TG*qdd0[1]) - p->M_P*t1*(p->z_PG*qdd0[1] + t34) - t32 - t33 - p->M_N*t1*(qdd0[1]*t11 + t34) - p->M_R*t8*t9*(qdd0[1]*t8*t13 - qdd0[0]*t8*t7) - p->M_R*qdd0[0]*t9*t7 - p->M_R*(qdd0[0]*t9 + qdd0[1]*t6*t12)*t7;
+    K0[2] = 0.0;
+    K0[3] = 0.0;
+    K0[4] = p->g*p->M_N*p->x_NG*t1 + p->g*p->M_R*t8*t8*t7*t13 + p->g*p->M_R*t3*t3*t7*t13 - p->g*p->L_T*p->M_N*t0 - p->g*p->M_N*p->z_NG*t0 - p->g*p->M_P*p->z_PG*t0 - p->g*p->M_T*p->z_TG*t0 - p->g*p->M_R*t6*t9*t12 - p->M_P*p->z_PG*qdd0[0]*t1 - p->M_R*qdd0[0]*t6*t7*t12 - p->M_R*qdd0[0]*t3*t3*t9*t13 - p->L_T*p->M_N*qdd0[0]*t1 - p->M_T*p->z_TG*qdd0[0]*t1 - p->M_N*p->x_NG*qdd0[0]*t0 - p->M_N*p->z_NG*qdd0[0]*t1 - p->M_R*qdd0[0]*t8*t8*t9*t13;
+    K0[5] = 0.0;
+    K0[6] = 0.0;
+    K0[7] = 0.0;
+    K0[8] = 0.0;
+    Q0[0] = t9;
+    Q0[1] = 0.0;
+    Q0[2] = t6*t12;
+    Q0[3] = 0.0;
+    Q0[4] = 0.0;
+    Q0[5] = 1.0;
+}
+
+// x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
+void nrel5mw_spar_rigid_state_space(const double* q0, const double* qd0, const double* u0, const nrel5mw_spar_rigid_params* p, double* A, double* B) {
+    double M[9];
+    double qdd0[3];
+    const double t0 = cos(q0[1]);
+    const double t1 = sin(q0[1]);
+    const double t2 = t0*t0 + t1*t1;
+    const double t3 = sin(q0[2]);
+    const double t4 = -p->theta_t;
+    const double t5 = sin(t4);
+    const double t6 = cos(t4);
+    const double t7 = t0*t5 + t1*t6;
+    const double t8 = cos(q0[2]);
+    const double t9 = t0*t6 - t1*t5;
+    const double t10 = p->L_T + p->z_NG;
+    const double t11 = p->L_T + p->z_NR;
+    const double t12 = p->x_NR - t5*t11;
+    const double t13 = qd0[1]*qd0[1]*p->L_T;
+    const double t14 = qd0[1]*qd0[1]*p->z_NR + t13;
+    const double t15 = p->M_R*t3*t6*t14 - p->g*p->M_R*t3*t9;
+    const double t16 = p->g*p->M_N*t0 - p->M_N*(qd0[1]*qd0[1]*p->z_NG + t13);
+    const double t17 = p->g*p->M_R*t8*t9 - p->M_R*t6*t8*t14;
+    const double t18 = p->M_R*(t5*t14 - qd0[1]*qd0[1]*p->x_NR) - p->g*p->M_R*t7;
+    const double t19 = qd0[1]*qd0[1]*p->M_T*p->z_TG - p->g*p->M_T*t0;
+    const double t20 = p->g*p->M_P*t0 - qd0[1]*qd0[1]*p->M_P*p->z_PG;
+    const double t21 = qd0[1]*qd0[1]*p->M_N*p->x_NG + p->g*p->M_N*t1;
+    A[0] = 0.0;
+    A[1] = 0.0;
+    A[2] = 0.0;
+    A[3] = 1.0;
+    A[4] = 0.0;
+    A[5] = 0.0;
+    A[6] = 0.0;
+    A[7] = 0.0;
+    A[8] = 0.0;
+    A[9] = 0.0;
+    A[10] = 1.0;
+    A[11] = 0.0;
+    A[12] = 0.0;
+    A[13] = 0.0;
+    A[14] = 0.0;
+    A[15] = 0.0;
+    A[16] = 0.0;
+    A[17] = 1.0;
+    B[0] = 0.0;
+    B[1] = 0.0;
+    B[2] = 0.0;
+    B[3] = 0.0;
+    B[4] = 0.0;
+    B[5] = 0.0;
+    M[0] = p->M_N*t2 + p->M_T*t2 + p->M_R*(t3*t3*t7*t7 + t8*t8*t7*t7 + t9*t9) + p->M_P*t2;
+    M[3] = p->M_N*(t0*t10 - p->x_NG*t1) + p->M_T*p->z_TG*t0 + p->M_P*p->z_PG*t0 - p->M_R*(t8*t8*t7*t12 + t3*t3*t7*t12 - t6*t9*t11);
+    M[4] = p->J_P + p->J_T + p->J_R*t8*t8 + p->M_N*(p->x_NG*p->x_NG + t10*t10) + p->J_R*t3*t3 + p->M_R*(t6*t6*t11*t11 + t3*t3*t12*t12 + t8*t8*t12*t12) + p->M_P*p->z_PG*p->z_PG + p->M_T*p->z_TG*p->z_TG;
+    M[6] = 0.0;
+    M[7] = 0.0;
+    M[8] = p->J_xR;
+    qdd0[0] = t3*t15*t7 + u0[0]*t9 + t1*t19 + p->g*p->M_P*t0*t1 + p->g*p->M_T*t0*t1 + t0*t21 - t1*t16 - t8*t17*t7 - t9*t18 - t1*t20;
+    qdd0[1] = p->x_NG*t16 + p->z_NG*t21 + u0[0]*t6*t11 + p->g*p->M_T*p->z_TG*t1 + p->g*p->M_P*p->z_PG*t1 + t8*t17*t12 + p->L_T*t21 - t3*t15*t12 - t6*t11*t18;
+    qdd0[2] = u0[1];
+    nrel5mw_spar_rigid_ldlt_factor(M, 3);
+    nrel5mw_spar_rigid_ldlt_solve(M, 3, qdd0, 1);
+    const double t22 = p->g*p->M_T*t1*t1;
+    const double t23 = p->g*p->M_P*t1*t1;
+    const double t24 = p->M_T*qdd0[0]*t0*t1;
+    const double t25 = p->M_P*qdd0[0]*t0*t1;
+    const double t26 = p->M_N*qdd0[0]*t0*t1;
+    const double t27 = qdd0[0]*t0;
+    const double t28 = qd0[1]*p->L_T;
+    const double t29 = 2.0*qd0[1]*p->z_NG + 2.0*t28;
+    const double t30 = 2.0*qd0[1]*p->z_NR + 2.0*t28;
+    const double t31 = t5*t30 - 2.0*qd0[1]*p->x_NR;
+    A[18] = 0.0;
+    A[19] = p->g*p->M_R*t3*t3*t7*t7 + t3*t15*t9 + p->g*p->M_T*t0*t0 + t23 + p->g*p->M_R*t8*t8*t7*t7 + t0*t19 + t22 + p->g*p->M_R*t9*t9 + t7*t18 + p->g*p->M_N*t1*t1 + p->g*p->M_P*t0*t0 + p->g*p->M_N*t0*t0 + t24 + p->M_T*t1*(t27 + p->z_TG*qdd0[1]) + p->M_P*t1*(p->z_PG*qdd0[1] + t27) + t25 + t26 + p->M_N*t1*(qdd0[1]*t10 + t27) + p->M_R*t8*t9*(qdd0[1]*t8*t12 - qdd0[0]*t8*t7) + p->M_R*qdd0[0]*t9*t7 + p->M_R*(qdd0[0]*t9 + qdd0[1]*t6*t11)*t7 - u0[0]*t7 - t22 - t0*t20 - t8*t17*t9 - t0*t16 - t23 - t1*t21 - 2.0*t24 - 2.0*t25 - p->M_N*t0*(qdd0[0]*t1 - p->x_NG*qdd0[1]) - t26 - p->M_R*qdd0[0]*t3*t3*t9*t7 - p->M_R*t3*t9*(qdd0[0]*t3*t7 - qdd0[1]*t3*t12) - p->M_R*qdd0[0]*t8*t8*t9*t7;
+    A[20] = 0.0;
+    A[21] = 0.0;
+    A[22] = p->M_N*t1*t29 + p->M_R*t3*t3*t6*t30*t7 + p->M_R*t6*t8*t8*t30*t7 + 2.0*qd0[1]*p->M_N*p->x_NG*t0 + 2.0*qd0[1]*p->M_T*p->z_TG*t1 + 2.0*qd0[1]*p->M_P*p->z_PG*t1 - p->M_R*t9*t31;
+    A[23] = 0.0;
+    A[24] = 0.0;
+    A[25] = p->g*p->L_T*p->M_N*t0 + p->g*p->M_N*p->z_NG*t0 + p->g*p->M_P*p->z_PG*t0 + p->g*p->M_T*p->z_TG*t0 + p->g*p->M_R*t6*t9*t11 + p->M_P*p->z_PG*qdd0[0]*t1 + p->M_R*qdd0[0]*t6*t7*t11 + p->M_R*qdd0[0]*t3*t3*t9*t12 + p->L_T*p->M_N*qdd0[0]*t1 + p->M_T*p->z_TG*qdd0[0]*t1 + p->M_N*p->x_NG*qdd0[0]*t0 + p->M_N*p->z_NG*qdd0[0]*t1 + p->M_R*qdd0[0]*t8*t8*t9*t12 - p->g*p->M_N*p->x_NG*t1 - p->g*p->M_R*t8*t8*t7*t12 - p->g*p->M_R*t3*t3*t7*t12;
+    A[26] = 0.0;
+    A[27] = 0.0;
+    A[28] = 2.0*qd0[1]*p->M_N*p->x_NG*p->z_NG + 2.0*qd0[1]*p->L_T*p->M_N*p->x_NG - p->M_R*t6*t11*t31 - p->M_N*p->x_NG*t29 - p->M_R*t6*t8*t8*t30*t12 - p->M_R*t3*t3*t6*t30*t12;
+    A[29] = 0.0;
+    A[30] = 0.0;
+    A[31] = 0.0;
+    A[32] = 0.0;
+    A[33] = 0.0;
+    A[34] = 0.0;
+    A[35] = 0.0;
+    B[6] = t9;
+    B[7] = 0.0;
+    B[8] = t6*t11;
+    B[9] = 0.0;
+    B[10] = 0.0;
+    B[11] = 1.0;
+    nrel5mw_spar_rigid_ldlt_solve(M, 3, A + 18, 6);
+    nrel5mw_spar_rigid_ldlt_solve(M, 3, B + 6, 2);
+}
+
+// dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
+void nrel5mw_spar_rigid_output_matrices(const double* q0, const double* qd0, const double* u0, const nrel5mw_spar_rigid_params* p, double* C, double* D) {
+    (void)qd0;
+    (void)u0;
+    const double t0 = cos(q0[1]);
+    C[0] = 1.0;
+    C[1] = p->L_T*t0;
+    C[2] = 0.0;
+    C[3] = 0.0;
+    C[4] = 0.0;
+    C[5] = 0.0;
+    C[6] = 0.0;
+    C[7] = 57.29577951308232;
+    C[8] = 0.0;
+    C[9] = 0.0;
+    C[10] = 0.0;
+    C[11] = 0.0;
+    C[12] = 0.0;
+    C[13] = 0.0;
+    C[14] = 0.0;
+    C[15] = 0.0;
+    C[16] = 0.0;
+    C[17] = 9.549296585513721;
+    D[0] = 0.0;
+    D[1] = 0.0;
+    D[2] = 0.0;
+    D[3] = 0.0;
+    D[4] = 0.0;
+    D[5] = 0.0;
+}
+
+// the model's operating point (no linearize block: zeros)
+void nrel5mw_spar_rigid_operating_point(const nrel5mw_spar_rigid_params* p, double* q0, double* qd0, double* u0) {
+    (void)p;
+    q0[0] = 0.0;
+    q0[1] = 0.0;
+    q0[2] = 0.0;
+    qd0[0] = 0.0;
+    qd0[1] = 0.0;
+    qd0[2] = 0.0;
+    u0[0] = 0.0;
+    u0[1] = 0.0;
 }

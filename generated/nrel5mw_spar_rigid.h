@@ -40,12 +40,16 @@
 //   y[2] "RotSpeed_rpm" "rotor speed [rpm]"
 //
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix   27 adds, 55 muls, 0 divs, 6 calls
-//   forcing       31 adds, 80 muls, 0 divs, 6 calls
-//   jacobians     53 adds, 177 muls, 0 divs, 6 calls
-//   outputs       1 adds, 3 muls, 0 divs, 1 calls
-//   rhs           64 adds, 144 muls, 6 divs, 6 calls
-//   rhs_jacobian  170 adds, 395 muls, 24 divs, 6 calls
+//   mass_matrix      27 adds, 55 muls, 0 divs, 6 calls
+//   forcing          31 adds, 80 muls, 0 divs, 6 calls
+//   jacobians        53 adds, 177 muls, 0 divs, 6 calls
+//   outputs          1 adds, 3 muls, 0 divs, 1 calls
+//   rhs              64 adds, 144 muls, 6 divs, 6 calls
+//   rhs_jacobian     170 adds, 395 muls, 24 divs, 6 calls
+//   linear           134 adds, 360 muls, 6 divs, 6 calls
+//   state_space      182 adds, 408 muls, 30 divs, 6 calls
+//   output_matrices  0 adds, 1 muls, 0 divs, 1 calls
+//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 
 #ifndef nrel5mw_spar_rigid_YAMSC_GENERATED_H
 #define nrel5mw_spar_rigid_YAMSC_GENERATED_H
@@ -106,6 +110,14 @@ void nrel5mw_spar_rigid_outputs(double t, const double* q, const double* qd, con
 void nrel5mw_spar_rigid_rhs(double t, const double* x, const double* u, const nrel5mw_spar_rigid_params* p, double* xdot);
 // d(rhs)/dx, 2nq x 2nq, row-major
 void nrel5mw_spar_rigid_rhs_jacobian(double t, const double* x, const double* u, const nrel5mw_spar_rigid_params* p, double* J);
+// M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
+void nrel5mw_spar_rigid_linear(const double* q0, const double* qd0, const double* u0, const nrel5mw_spar_rigid_params* p, double* M0, double* C0, double* K0, double* Q0);
+// x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
+void nrel5mw_spar_rigid_state_space(const double* q0, const double* qd0, const double* u0, const nrel5mw_spar_rigid_params* p, double* A, double* B);
+// dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
+void nrel5mw_spar_rigid_output_matrices(const double* q0, const double* qd0, const double* u0, const nrel5mw_spar_rigid_params* p, double* C, double* D);
+// the model's operating point (no linearize block: zeros)
+void nrel5mw_spar_rigid_operating_point(const nrel5mw_spar_rigid_params* p, double* q0, double* qd0, double* u0);
 
 #ifdef __cplusplus
 }

@@ -20,12 +20,16 @@
 //   y[1] "z_tip" "height of the bob [m]"
 //
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix   0 adds, 2 muls, 0 divs, 0 calls
-//   forcing       0 adds, 3 muls, 0 divs, 1 calls
-//   jacobians     0 adds, 3 muls, 0 divs, 1 calls
-//   outputs       0 adds, 2 muls, 0 divs, 2 calls
-//   rhs           0 adds, 5 muls, 1 divs, 1 calls
-//   rhs_jacobian  0 adds, 8 muls, 3 divs, 2 calls
+//   mass_matrix      0 adds, 2 muls, 0 divs, 0 calls
+//   forcing          0 adds, 3 muls, 0 divs, 1 calls
+//   jacobians        0 adds, 3 muls, 0 divs, 1 calls
+//   outputs          0 adds, 2 muls, 0 divs, 2 calls
+//   rhs              0 adds, 5 muls, 1 divs, 1 calls
+//   rhs_jacobian     0 adds, 8 muls, 3 divs, 2 calls
+//   linear           0 adds, 5 muls, 0 divs, 1 calls
+//   state_space      0 adds, 5 muls, 2 divs, 1 calls
+//   output_matrices  0 adds, 2 muls, 0 divs, 2 calls
+//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 
 #include "pendulum.hpp"
 
@@ -158,6 +162,54 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     J[2] = -p.m*p.L*p.g*t1;
     J[3] = 0.0;
     ldlt_solve(M, 1, J + 2, 2);
+}
+
+// M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
+void linear(const double* q0, const double* qd0, const double* u0, const Params& p, double* M0, double* C0, double* K0, double* Q0) {
+    (void)qd0;
+    (void)u0;
+    (void)Q0;
+    const double t0 = std::cos(q0[0]);
+    M0[0] = p.m*p.L*p.L;
+    C0[0] = 0.0;
+    K0[0] = p.m*p.L*p.g*t0;
+}
+
+// x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
+void state_space(const double* q0, const double* qd0, const double* u0, const Params& p, double* A, double* B) {
+    (void)qd0;
+    (void)u0;
+    (void)B;
+    double M[1];
+    A[0] = 0.0;
+    A[1] = 1.0;
+    M[0] = p.m*p.L*p.L;
+    ldlt_factor(M, 1);
+    const double t0 = std::cos(q0[0]);
+    A[2] = -p.m*p.L*p.g*t0;
+    A[3] = 0.0;
+    ldlt_solve(M, 1, A + 2, 2);
+}
+
+// dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
+void output_matrices(const double* q0, const double* qd0, const double* u0, const Params& p, double* C, double* D) {
+    (void)qd0;
+    (void)u0;
+    (void)D;
+    const double t0 = std::cos(q0[0]);
+    const double t1 = std::sin(q0[0]);
+    C[0] = -p.L*t0;
+    C[1] = 0.0;
+    C[2] = p.L*t1;
+    C[3] = 0.0;
+}
+
+// the model's operating point (no linearize block: zeros)
+void operating_point(const Params& p, double* q0, double* qd0, double* u0) {
+    (void)p;
+    (void)u0;
+    q0[0] = 0.0;
+    qd0[0] = 0.0;
 }
 
 } // namespace pendulum

@@ -20,12 +20,16 @@
 //   y[1] "z_tip" "height of the bob [m]"
 //
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix   0 adds, 2 muls, 0 divs, 0 calls
-//   forcing       0 adds, 3 muls, 0 divs, 1 calls
-//   jacobians     0 adds, 3 muls, 0 divs, 1 calls
-//   outputs       0 adds, 2 muls, 0 divs, 2 calls
-//   rhs           0 adds, 5 muls, 1 divs, 1 calls
-//   rhs_jacobian  0 adds, 8 muls, 3 divs, 2 calls
+//   mass_matrix      0 adds, 2 muls, 0 divs, 0 calls
+//   forcing          0 adds, 3 muls, 0 divs, 1 calls
+//   jacobians        0 adds, 3 muls, 0 divs, 1 calls
+//   outputs          0 adds, 2 muls, 0 divs, 2 calls
+//   rhs              0 adds, 5 muls, 1 divs, 1 calls
+//   rhs_jacobian     0 adds, 8 muls, 3 divs, 2 calls
+//   linear           0 adds, 5 muls, 0 divs, 1 calls
+//   state_space      0 adds, 5 muls, 2 divs, 1 calls
+//   output_matrices  0 adds, 2 muls, 0 divs, 2 calls
+//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 
 #ifndef pendulum_YAMSC_GENERATED_H
 #define pendulum_YAMSC_GENERATED_H
@@ -70,6 +74,14 @@ void pendulum_outputs(double t, const double* q, const double* qd, const double*
 void pendulum_rhs(double t, const double* x, const double* u, const pendulum_params* p, double* xdot);
 // d(rhs)/dx, 2nq x 2nq, row-major
 void pendulum_rhs_jacobian(double t, const double* x, const double* u, const pendulum_params* p, double* J);
+// M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
+void pendulum_linear(const double* q0, const double* qd0, const double* u0, const pendulum_params* p, double* M0, double* C0, double* K0, double* Q0);
+// x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
+void pendulum_state_space(const double* q0, const double* qd0, const double* u0, const pendulum_params* p, double* A, double* B);
+// dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
+void pendulum_output_matrices(const double* q0, const double* qd0, const double* u0, const pendulum_params* p, double* C, double* D);
+// the model's operating point (no linearize block: zeros)
+void pendulum_operating_point(const pendulum_params* p, double* q0, double* qd0, double* u0);
 
 #ifdef __cplusplus
 }

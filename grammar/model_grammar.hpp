@@ -58,6 +58,7 @@ struct kw_spring : TAO_PEGTL_KEYWORD("spring") {};
 struct kw_genforce : TAO_PEGTL_KEYWORD("genforce") {};
 struct kw_approx : TAO_PEGTL_KEYWORD("approx") {};
 struct kw_linearize : TAO_PEGTL_KEYWORD("linearize") {};
+struct kw_initial : TAO_PEGTL_KEYWORD("initial") {};
 struct kw_output : TAO_PEGTL_KEYWORD("output") {};
 struct kw_point : TAO_PEGTL_KEYWORD("point") {};
 
@@ -79,9 +80,10 @@ struct kw_stiffness : TAO_PEGTL_KEYWORD("stiffness") {};
 struct kw_damping : TAO_PEGTL_KEYWORD("damping") {};
 
 /// The words that start a top-level statement. A block that meets one of them was not closed.
-struct statement_keyword : p::sor<kw_model, kw_param, kw_input, kw_dof, kw_gravity, kw_rigid,
-                                  kw_flexible, kw_joint, kw_force, kw_torque, kw_spring,
-                                  kw_genforce, kw_approx, kw_linearize, kw_output, kw_point> {};
+struct statement_keyword
+    : p::sor<kw_model, kw_param, kw_input, kw_dof, kw_gravity, kw_rigid, kw_flexible, kw_joint,
+             kw_force, kw_torque, kw_spring, kw_genforce, kw_approx, kw_linearize, kw_initial,
+             kw_output, kw_point> {};
 
 struct digits : p::plus<p::digit> {};
 struct mantissa
@@ -425,6 +427,14 @@ struct linearize_block
     : p::seq<linearize_open, block_items<linearize_item>, p::must<linearize_close>> {};
 struct linearize_statement : p::seq<kw_linearize, blanks, p::must<linearize_block>> {};
 
+/// Extension: `initial { q = 2; psi' = 1.05 }`, the default initial state of `yamsc sim`.
+struct unknown_initial_item {};
+struct initial_item : p::sor<assignment, p::raise<unknown_initial_item>> {};
+struct initial_open : p::one<'{'> {};
+struct initial_close : p::one<'}'> {};
+struct initial_block : p::seq<initial_open, block_items<initial_item>, p::must<initial_close>> {};
+struct initial_statement : p::seq<kw_initial, blanks, p::must<initial_block>> {};
+
 struct output_name : identifier {};
 struct output_equals : p::one<'='> {};
 struct output_value : line_expression {};
@@ -447,12 +457,11 @@ struct point_statement
 // ---------------------------------------------------------------- the file
 
 struct unknown_statement {};
-struct statement
-    : p::sor<model_statement, param_statement, input_statement, dof_statement, gravity_statement,
-             rigid_statement, flexible_statement, joint_statement, force_statement,
-             torque_statement, spring_statement, genforce_statement, approx_statement,
-             linearize_statement, output_statement, point_statement, p::raise<unknown_statement>> {
-};
+struct statement : p::sor<model_statement, param_statement, input_statement, dof_statement,
+                          gravity_statement, rigid_statement, flexible_statement, joint_statement,
+                          force_statement, torque_statement, spring_statement, genforce_statement,
+                          approx_statement, linearize_statement, initial_statement,
+                          output_statement, point_statement, p::raise<unknown_statement>> {};
 struct statement_line : p::seq<statement, p::must<end_of_statement>> {};
 struct top_separator : p::plus<item_separator> {};
 struct model_file

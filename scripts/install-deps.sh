@@ -2,7 +2,8 @@
 # Installs the Debian packages yamsc needs, only those that are missing.
 set -euo pipefail
 packages=(build-essential cmake pkg-config libginac-dev libcln-dev tao-pegtl-dev libeigen3-dev
-          libfmt-dev libsundials-dev doctest-dev python3 python3-sympy python3-numpy)
+          libfmt-dev libsundials-dev doctest-dev python3 python3-sympy python3-numpy
+          clang libclang-rt-14-dev) # clang + libFuzzer: the fuzz targets (docs/robustness.md)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -195,6 +195,12 @@ struct Linearize {
     Loc loc;
 };
 
+/// `initial { q = 2; psi' = 1.05 }`: the default initial state of a simulation.
+struct Initial {
+    std::vector<Assignment> state;
+    Loc loc;
+};
+
 struct Output {
     Named id;
     Expr value;
@@ -229,6 +235,7 @@ struct ModelFile {
     std::vector<GenForce> genforces;
     std::vector<Approx> approximations;
     std::optional<Linearize> linearize;
+    std::optional<Initial> initial;
     std::vector<Output> outputs;
 };
 

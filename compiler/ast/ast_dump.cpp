@@ -265,6 +265,13 @@ std::string dump(const ModelFile& file) {
                    to_string(a.value) + at(a.loc) + "\n";
         }
     }
+    if (file.initial) {
+        out += "initial" + at(file.initial->loc) + "\n";
+        for (const Assignment& a : file.initial->state) {
+            out += "  " + a.name + std::string(static_cast<std::size_t>(a.primes), '\'') + " = " +
+                   to_string(a.value) + at(a.loc) + "\n";
+        }
+    }
     for (const Output& o : file.outputs) {
         out += "output " + o.id.name + " = " + to_string(o.value) + frame(o.frame) + at(o.loc) +
                doc(o.id) + "\n";

@@ -22,14 +22,19 @@ const char* usage_text = R"(usage:
   yamsc check MODEL.mbd [--json]
   yamsc eval MODEL.mbd [--q v,..] [--qd v,..] [--u name=v,..] [--set name=v,..] [--t T] --json
   yamsc lin MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--json]
+                      [--sweep NAME=FROM:STEP:TO [-o campbell.csv] [--plot campbell.svg]]
   yamsc sim MODEL.mbd --tmax T --dt DT [--ic name=v,..] [--u name=v,..] [--set name=v,..]
                       [--method rk4|cvode] [--rtol R] [--atol A] [-o out.csv] [-v]
+                      [--channels all|openfast] [--compare ref.csv] [--plot out.svg]
+                      [--plot-channels a,b,..] [--linear [--at name=v,..]]
+  yamsc from-openfast ELASTODYN.dat|DECK.fst [--dofs NAME=on|off,..] -o model.mbd
   yamsc sid --elastodyn-tower FILE | --elastodyn-blade FILE --length L [--modes fa1,ss1,..]
             [--stations N] [-o body.sid]
   yamsc --version | --help
 eval, lin and sim take --sid body=file.sid: the shape integrals of a flexible body
-declared with `symbolic modes`, read from a SID file. Values accept `deg`: --set theta_t=5deg. Exit status: 0 ok, 1 error in the model or
-its inputs, 2 usage error, 70 internal error.
+declared with `symbolic modes`, read from a SID file. Values accept `deg`: --set theta_t=5deg.
+sim starts from the model's `initial` block (zeros without one); --ic overrides single values.
+Exit status: 0 ok, 1 error in the model or its inputs, 2 usage error, 70 internal error.
 )";
 
 /// Command-line options of one subcommand: `--name value`, `--name=value`, flags.
@@ -91,6 +96,18 @@ private:
     std::vector<std::string> positional_;
 };
 
+/// "a,b,c" -> {"a", "b", "c"}; "" -> {}.
+std::vector<std::string> comma_list(const std::string& text) {
+    std::vector<std::string> items;
+    for (std::size_t start = 0; !text.empty() && start <= text.size();) {
+        std::size_t comma = text.find(',', start);
+        if (comma == std::string::npos) comma = text.size();
+        items.push_back(text.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return items;
+}
+
 int run(int argc, char** argv) {
     using namespace yamsc::driver;
     if (argc < 2) throw UsageError("no command given");
@@ -120,9 +137,13 @@ int run(int argc, char** argv) {
         return eval(o, std::cout, std::cerr);
     }
     if (cmd == "lin") {
-        Args a(argc, argv, 2, {"--at", "--u", "--set", "--sid"}, {"--json"});
+        Args a(argc, argv, 2, {"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot"},
+               {"--json"});
         LinOptions o;
         o.model = a.model();
+        o.sweep = a.get("--sweep");
+        o.output = a.get("-o");
+        o.plot = a.get("--plot");
         o.at = a.assignments("--at");
         o.u = a.assignments("--u");
         o.set = a.assignments("--set");
@@ -141,20 +162,14 @@ int run(int argc, char** argv) {
         o.length = a.number("--length", 0);
         o.stations = static_cast<int>(a.number("--stations", 50));
         o.output = a.get("-o");
-        std::string modes = a.get("--modes");
-        for (std::size_t start = 0; !modes.empty() && start <= modes.size();) {
-            std::size_t comma = modes.find(',', start);
-            if (comma == std::string::npos) comma = modes.size();
-            o.modes.push_back(modes.substr(start, comma - start));
-            start = comma + 1;
-        }
+        o.modes = comma_list(a.get("--modes"));
         return sid(o, std::cout, std::cerr);
     }
     if (cmd == "sim") {
         Args a(argc, argv, 2,
                {"--tmax", "--dt", "--ic", "--u", "--set", "--sid", "--method", "-o", "--rtol",
-                "--atol"},
-               {"-v"});
+                "--atol", "--channels", "--compare", "--plot", "--plot-channels", "--at"},
+               {"-v", "--linear"});
         SimOptions o;
         o.model = a.model();
         if (!a.has("--tmax") || !a.has("--dt")) throw UsageError("sim needs --tmax and --dt");
@@ -172,7 +187,32 @@ int run(int argc, char** argv) {
         o.atol = a.number("--atol", o.atol);
         o.output = a.get("-o");
         o.verbose = a.has("-v");
+        o.channels = a.get("--channels", "all");
+        if (o.channels != "all" && o.channels != "openfast")
+            throw UsageError("--channels must be all or openfast, not '" + o.channels + "'");
+        o.compare = a.get("--compare");
+        o.plot = a.get("--plot");
+        o.plot_channels = comma_list(a.get("--plot-channels"));
+        o.linear = a.has("--linear");
+        o.at = a.assignments("--at");
+        if (!o.at.empty() && !o.linear) throw UsageError("--at needs --linear");
         return sim(o, std::cout, std::cerr);
+    }
+    if (cmd == "from-openfast") {
+        Args a(argc, argv, 2, {"--dofs", "-o"}, {});
+        FromOpenFastOptions o;
+        o.deck = a.model();
+        o.output = a.get("-o");
+        if (o.output.empty()) throw UsageError("from-openfast needs -o model.mbd");
+        for (const std::string& item : comma_list(a.get("--dofs"))) {
+            const auto eq = item.find('=');
+            const std::string value = eq == std::string::npos ? "" : item.substr(eq + 1);
+            if (eq == std::string::npos || (value != "on" && value != "off"))
+                throw UsageError("--dofs takes NAME=on|off items (e.g. GenDOF=off), not '" + item +
+                                 "'");
+            o.dofs.emplace_back(item.substr(0, eq), value == "on");
+        }
+        return from_openfast(o, std::cout, std::cerr);
     }
     Args a(argc, argv, 1, {"-o", "--header", "--lang", "--namespace", "--dump", "--depfile"},
            {"-v"});

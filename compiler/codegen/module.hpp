@@ -20,6 +20,10 @@ struct Options {
     /// A single-use expression nested deeper than this still gets a temporary,
     /// so that printed expressions (and compilers) never nest without bound.
     int max_inline_depth = 32;
+    /// Emit the linear model's routines (linear, state_space, output_matrices).
+    /// A model compiled only to be simulated can leave them out: they about
+    /// double what the C++ compiler has to digest.
+    bool linear_model = true;
 };
 
 enum class ExprKind : std::uint8_t {
@@ -90,7 +94,7 @@ struct LocalArray {
 };
 
 struct Routine {
-    std::string name; // mass_matrix, forcing, jacobians, outputs, rhs, rhs_jacobian
+    std::string name; // mass_matrix, forcing, jacobians, outputs, rhs, rhs_jacobian, linear, ...
     std::string summary;
     std::vector<Argument> arguments;
     std::vector<LocalArray> locals;
@@ -140,10 +144,12 @@ struct Module {
     const Routine& routine(std::string_view name) const;
 };
 
-/// Builds the module of `eq`: mass_matrix, forcing, jacobians, outputs, rhs and
-/// rhs_jacobian. Linear in the size of the equations' DAG. Throws
-/// diag::InternalError when the equations are malformed (wrong shapes, missing
-/// Jacobians) or hold something generated code cannot express.
+/// Builds the module of `eq`: mass_matrix, forcing, jacobians, outputs, rhs,
+/// rhs_jacobian and the linear model's linear, state_space and output_matrices
+/// (codegen/linear_routines.hpp; add_operating_point adds operating_point).
+/// Linear in the size of the equations' DAG. Throws diag::InternalError when the
+/// equations are malformed (wrong shapes, missing Jacobians) or hold something
+/// generated code cannot express.
 Module build_module(const symbolic::Equations& eq, const Options& options = {});
 
 /// A readable, deterministic listing of the module (for `yamsc --dump=module`).

@@ -1,6 +1,7 @@
 // build_module: imports the equations into one canonical Graph (so that every
-// routine shares the same value numbers) and lays out the six routines.
+// routine shares the same value numbers) and lays out the routines.
 #include "codegen/from_ginac.hpp"
+#include "codegen/linear_routines.hpp"
 #include "codegen/module.hpp"
 #include "codegen/routine_builder.hpp"
 #include "diag/diagnostics.hpp"
@@ -263,6 +264,10 @@ Module build_module(const symbolic::Equations& eq, const Options& options) {
     m.routines.push_back(outputs_routine(graph, in, nq, options));
     m.routines.push_back(rhs_routine(graph, in, rates, nq, options));
     m.routines.push_back(rhs_jacobian_routine(graph, in, nq, options));
+    if (options.linear_model)
+        add_linear_routines(graph, importer, eq,
+                            {in.M, in.F, in.dF_dq, in.dF_dqd, in.dF_du, in.dMa_dq}, options,
+                            m.routines);
     return m;
 }
 

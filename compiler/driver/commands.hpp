@@ -8,6 +8,7 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace yamsc::driver {
@@ -42,6 +43,9 @@ struct LinOptions {
     std::vector<Assignment> at, set, u;
     std::string sid; // --sid body=file.sid,..
     bool json = false;
+    std::string sweep;  // --sweep NAME=FROM:STEP:TO: a Campbell diagram
+    std::string output; // -o: its CSV (default: stdout)
+    std::string plot;   // --plot: its SVG
 };
 
 struct SimOptions {
@@ -53,6 +57,18 @@ struct SimOptions {
     std::string output;         // CSV path; empty: summary only
     double rtol = 1e-8, atol = 1e-10;
     bool verbose = false;
+    std::string channels = "all";           // all | openfast (outputs named as OpenFAST channels)
+    std::string compare;                    // reference table: print the error per channel
+    std::string plot;                       // SVG of the channels (with the reference)
+    std::vector<std::string> plot_channels; // --plot-channels; empty: compared or all
+    bool linear = false;                    // integrate the linear model about --at / linearize
+    std::vector<Assignment> at;             // --at: the operating point of --linear
+};
+
+struct FromOpenFastOptions {
+    std::string deck;                               // ElastoDyn main file or .fst
+    std::vector<std::pair<std::string, bool>> dofs; // --dofs NAME=on|off (ElastoDyn flag names)
+    std::string output;                             // -o model.mbd
 };
 
 struct SidOptions {
@@ -69,5 +85,6 @@ int eval(const EvalOptions& o, std::ostream& out, std::ostream& err);
 int lin(const LinOptions& o, std::ostream& out, std::ostream& err);
 int sim(const SimOptions& o, std::ostream& out, std::ostream& err);
 int sid(const SidOptions& o, std::ostream& out, std::ostream& err);
+int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream& err);
 
 } // namespace yamsc::driver

@@ -5,8 +5,13 @@
 #include "driver/commands.hpp"
 #include "driver/files.hpp"
 
+#include "codegen/emit_latex.hpp"
+#include "codegen/latex_printer.hpp"
+#include "codegen/linear_routines.hpp"
 #include "driver/pipeline.hpp"
 #include "model/names.hpp"
+#include "symbolic/derive.hpp"
+#include "symbolic/linearize.hpp"
 #include <yamsc/atomic_file.hpp>
 
 #include <ostream>
@@ -80,6 +85,34 @@ std::string depfile_text(const CompileOptions& o, const std::vector<std::string>
     return targets + ": " + deps + "\n";
 }
 
+/// `--lang latex`: the equations (exact and approximated) and the linear model.
+void write_latex(const CompileOptions& o, const FrontEnd& fe) {
+    if (!o.header.empty()) throw UsageError("--header does not apply to --lang latex");
+    codegen::LatexInput in;
+    in.equations = &*fe.equations;
+    std::optional<symbolic::Equations> exact;
+    if (!fe.model->approximations.empty()) {
+        diag::Diagnostics ignored; // the same derivation already succeeded
+        exact = symbolic::derive(*fe.model, ignored);
+        if (!exact) throw diag::InternalError("the exact equations could not be derived again");
+        in.exact = &*exact;
+        for (const model::Approximation& a : fe.model->approximations) {
+            std::string names;
+            for (const auto& s : a.symbols)
+                names += (names.empty() ? "$" : ", $") + codegen::latex::symbol_name(s.name) + "$";
+            in.approximations.push_back(names + " to order " + std::to_string(a.order));
+        }
+    }
+    const symbolic::OperatingPoint point = symbolic::operating_point(*fe.model, *fe.equations);
+    in.point = &point;
+    codegen::EmitOptions emit;
+    emit.compiler_version = YAMSC_VERSION;
+    emit.command_line = "--lang latex";
+    runtime::write_file_atomically(o.output, codegen::emit_latex(in, emit));
+    if (!o.depfile.empty())
+        runtime::write_file_atomically(o.depfile, depfile_text(o, fe.model->files_read));
+}
+
 } // namespace
 
 int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
@@ -107,10 +140,13 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
         return 0;
     }
     if (lang == "latex") {
-        err << o.model << ": error: LaTeX output is not supported yet [not-supported]\n";
-        return 1;
+        write_latex(o, fe);
+        progress("wrote " + o.output);
+        return 0;
     }
     codegen::Module module = codegen::build_module(*fe.equations);
+    codegen::add_operating_point(module, *fe.equations,
+                                 symbolic::operating_point(*fe.model, *fe.equations));
     progress("built the code module (common subexpressions shared)");
     if (o.dump == "module") {
         out << codegen::dump(module);

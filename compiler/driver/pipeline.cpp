@@ -3,6 +3,7 @@
 #include "driver/files.hpp"
 #include "model/checker.hpp"
 #include "parse/parser.hpp"
+#include "symbolic/approx.hpp"
 #include "symbolic/derive.hpp"
 
 #include <chrono>
@@ -55,6 +56,10 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
     }
     fe.equations->source_digest = digest(all);
     say(timed("derived the equations of motion", clock.seconds()));
+    if (!fe.model->approximations.empty()) {
+        if (!symbolic::approximate(*fe.model, *fe.equations, diags)) return fe;
+        say(timed("approximated (approx)", clock.seconds()));
+    }
     if (until == Until::jacobians) {
         symbolic::derive_jacobians(*fe.equations);
         say(timed("derived the Jacobians", clock.seconds()));

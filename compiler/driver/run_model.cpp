@@ -1,17 +1,27 @@
 // `yamsc sim` and `yamsc lin`: the model's generated code, compiled on the fly,
 // driven by the runtime.
 #include "driver/bindings.hpp"
+#include "driver/campbell.hpp"
+#include "driver/channels.hpp"
 #include "driver/commands.hpp"
+#include "driver/compare.hpp"
 #include "driver/jit.hpp"
 #include "driver/json.hpp"
 #include "driver/pipeline.hpp"
 #include "driver/sid_values.hpp"
+#include "driver/svg_plot.hpp"
+#include "model/expr_check.hpp"
+#include "symbolic/dag.hpp"
+#include "symbolic/linearize.hpp"
 
+#include <yamsc/atomic_file.hpp>
 #include <yamsc/csv.hpp>
+#include <yamsc/linear_view.hpp>
 #include <yamsc/modal.hpp>
 #include <yamsc/simulation.hpp>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <ostream>
@@ -25,6 +35,7 @@ struct Loaded {
     std::unique_ptr<runtime::SharedModel> library;
     runtime::ModelView view;
     std::vector<double> params;
+    FrontEnd front; // the checked model and its equations (lin: the operating point)
 };
 
 std::optional<Loaded> load(const std::string& path, const std::vector<Assignment>& set,
@@ -49,6 +60,7 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
     all.insert(all.end(), set.begin(), set.end());
     l.params = bind_named(l.library->param_names(), defaults, all, "parameter");
     l.view = l.library->view(l.params);
+    l.front = std::move(fe);
     return l;
 }
 
@@ -67,14 +79,175 @@ std::vector<std::vector<double>> rows(const Dense& m) {
     return out;
 }
 
+/// The model's `linearize` point evaluated at the bound parameters, then
+/// overridden by --at (DOFs, rates, input channels) and --u (inputs).
+void operating_point(const Loaded& l, const std::vector<double>& params, const LinOptions& o,
+                     std::vector<double>& q, std::vector<double>& qd, std::vector<double>& u) {
+    const symbolic::Equations& eq = *l.front.equations;
+    const symbolic::OperatingPoint op = symbolic::operating_point(*l.front.model, eq);
+    symbolic::Evaluator::Values values;
+    for (std::size_t i = 0; i < eq.params.size(); ++i) values[eq.params[i].sym] = params[i];
+    symbolic::Evaluator value(values);
+    for (const GiNaC::ex& e : op.q) q.push_back(value(e));
+    for (const GiNaC::ex& e : op.qd) qd.push_back(value(e));
+    for (const GiNaC::ex& e : op.u) u.push_back(value(e));
+    const runtime::ModelView& v = l.view;
+    for (const Assignment& a : o.at) {
+        const std::string channel = a.name + std::string(static_cast<std::size_t>(a.primes), '\'');
+        auto dof = std::find(v.dof_names.begin(), v.dof_names.end(), a.name);
+        auto input = std::find(v.input_names.begin(), v.input_names.end(), channel);
+        if (dof != v.dof_names.end() && a.primes <= 1)
+            (a.primes == 0 ? q : qd)[static_cast<std::size_t>(dof - v.dof_names.begin())] = a.value;
+        else if (input != v.input_names.end())
+            u[static_cast<std::size_t>(input - v.input_names.begin())] = a.value;
+        else {
+            std::vector<std::string> names = v.dof_names;
+            names.insert(names.end(), v.input_names.begin(), v.input_names.end());
+            throw UserError("--at: unknown DOF or input '" + channel + "'" +
+                            diag::did_you_mean(a.name, names));
+        }
+    }
+    std::vector<std::optional<double>> from_point(u.begin(), u.end());
+    u = bind_named(v.input_names, from_point, o.u, "input");
+}
+
+void operating_point(const Loaded& l, const LinOptions& o, std::vector<double>& q,
+                     std::vector<double>& qd, std::vector<double>& u) {
+    operating_point(l, l.params, o, q, qd, u);
+}
+
+/// `lin --sweep NAME=FROM:STEP:TO`: the modes at the operating point for each
+/// value of a parameter (the point follows the parameter when it uses it).
+int campbell(const Loaded& l, const LinOptions& o, std::ostream& out) {
+    const Sweep sweep = parse_sweep(o.sweep);
+    const int index = l.library->param_index(sweep.name);
+    if (index < 0)
+        throw UserError("--sweep: unknown parameter '" + sweep.name + "'" +
+                        diag::did_you_mean(sweep.name, l.library->param_names()));
+    std::vector<CampbellRow> rows;
+    for (double value : sweep.values) {
+        std::vector<double> params = l.params;
+        params[static_cast<std::size_t>(index)] = value;
+        const runtime::ModelView view = l.library->view(params);
+        std::vector<double> q, qd, u;
+        operating_point(l, params, o, q, qd, u);
+        q.insert(q.end(), qd.begin(), qd.end());
+        const std::vector<double> A = runtime::state_matrix_from_view(view, q, u, 0.0);
+        rows.push_back({value, runtime::modal_analysis(A, view.nq)});
+    }
+    const std::string csv = campbell_csv(sweep.name, rows);
+    if (o.output.empty()) {
+        out << csv;
+    } else {
+        runtime::write_file_atomically(o.output, csv);
+        out << "wrote " << rows.size() << " rows to " << o.output << "\n";
+    }
+    if (!o.plot.empty()) {
+        const std::string title = l.front.model->name + ": modes against " + sweep.name;
+        runtime::write_file_atomically(o.plot, campbell_svg(title, sweep.name, rows));
+        out << "wrote " << o.plot << "\n";
+    }
+    return 0;
+}
+
+/// The model's `initial` block at the bound parameters (zeros without one), then --ic.
+void initial_state(const Loaded& l, const std::vector<Assignment>& ic, std::vector<double>& q,
+                   std::vector<double>& qd) {
+    const runtime::ModelView& v = l.view;
+    q.assign(static_cast<std::size_t>(v.nq), 0.0);
+    qd.assign(static_cast<std::size_t>(v.nq), 0.0);
+    if (const auto& init = l.front.model->initial_state) {
+        model::NameValues params;
+        const std::vector<std::string>& names = l.library->param_names();
+        for (std::size_t i = 0; i < names.size() && i < l.params.size(); ++i)
+            params[names[i]] = l.params[i];
+        auto evaluate = [&](const model::Expr& e, const std::string& name) {
+            std::string why;
+            const std::optional<double> x = model::evaluate_with(e, params, why);
+            if (!x)
+                throw UserError("the initial value of '" + name + "' cannot be evaluated: " + why);
+            return *x;
+        };
+        for (std::size_t i = 0; i < q.size(); ++i) {
+            q[i] = evaluate(init->q[i], v.dof_names[i]);
+            qd[i] = evaluate(init->qd[i], v.dof_names[i] + "'");
+        }
+    }
+    std::vector<double> given_q, given_qd;
+    bind_state(v.dof_names, ic, given_q, given_qd, "--ic");
+    for (const Assignment& a : ic) {
+        const auto i = static_cast<std::size_t>(
+            std::find(v.dof_names.begin(), v.dof_names.end(), a.name) - v.dof_names.begin());
+        (a.primes == 0 ? q : qd)[i] = (a.primes == 0 ? given_q : given_qd)[i];
+    }
+}
+
+/// The linear model of --linear: about the model's `linearize` point, moved by --at/--u.
+runtime::ModelView linear_model(const Loaded& l, const SimOptions& o, std::ostream& out) {
+    LinOptions at;
+    at.at = o.at;
+    at.u = o.u;
+    std::vector<double> q0, qd0, u0;
+    operating_point(l, at, q0, qd0, u0);
+    std::vector<double> x0 = q0;
+    x0.insert(x0.end(), qd0.begin(), qd0.end());
+    const runtime::LinearSystem system = runtime::linearize_view(l.view, x0, u0);
+    if (o.verbose) {
+        out << "linear model about q0 = (";
+        for (std::size_t i = 0; i < x0.size(); ++i)
+            out << (i == q0.size() ? "), q0' = (" : i ? ", " : "") << x0[i];
+        out << "); modes [Hz]:";
+        for (const runtime::Mode& m : runtime::modal_analysis(system.A, l.view.nq))
+            if (!m.rigid_body) out << ' ' << m.freq_hz;
+        out << "\n";
+    }
+    return runtime::linear_view(l.view, system);
+}
+
+/// The channels to plot: --plot-channels, else those compared, else every column.
+std::vector<PlotPanel> plot_panels(const Table& sim, const Table* reference,
+                                   const std::optional<Comparison>& comparison,
+                                   const SimOptions& o) {
+    std::vector<std::string> names = o.plot_channels;
+    if (names.empty() && comparison)
+        for (const ChannelScore& c : comparison->channels) names.push_back(c.matched);
+    const Table chosen = select_columns(sim, names);
+    const std::string label = o.linear ? "yamsc (linear)" : "yamsc";
+    std::vector<PlotPanel> panels;
+    for (std::size_t j = 1; j < chosen.columns.size(); ++j) {
+        PlotPanel p;
+        p.y_label = chosen.columns[j];
+        p.series.push_back({label, chosen.data.front(), chosen.data[j], false});
+        if (reference) {
+            int r = reference->find(chosen.columns[j]);
+            for (std::size_t k = 1; r < 0 && k < reference->columns.size(); ++k)
+                if (base_name(reference->columns[k]) == base_name(chosen.columns[j]))
+                    r = static_cast<int>(k);
+            if (r > 0) {
+                std::string name = o.compare.substr(o.compare.find_last_of('/') + 1);
+                p.series.push_back({"reference (" + name + ")", reference->data.front(),
+                                    reference->data[static_cast<std::size_t>(r)], true});
+            }
+        }
+        panels.push_back(std::move(p));
+    }
+    return panels;
+}
+
 } // namespace
 
 int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
+    if (o.channels != "all" && o.channels != "openfast")
+        throw UsageError("--channels must be all or openfast, not '" + o.channels + "'");
+    if (!o.at.empty() && !o.linear) throw UsageError("--at needs --linear");
+    // A bad reference fails before anything is simulated or written.
+    std::optional<Table> reference;
+    if (!o.compare.empty()) reference = read_table(o.compare);
     auto loaded = load(o.model, o.set, o.sid, o.verbose, err);
     if (!loaded) return 1;
-    const runtime::ModelView& v = loaded->view;
     std::vector<double> q, qd;
-    bind_state(v.dof_names, o.ic, q, qd, "--ic");
+    initial_state(*loaded, o.ic, q, qd);
+    const runtime::ModelView v = o.linear ? linear_model(*loaded, o, out) : loaded->view;
     runtime::SimulationOptions s;
     s.t_end = o.tmax;
     s.dt = o.dt;
@@ -94,20 +267,43 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
         return true;
     };
     runtime::SimulationResult result = runtime::simulate(v, s, progress);
-    if (!o.output.empty()) runtime::write_csv(result, o.output);
+    const bool openfast = o.channels == "openfast";
+    const Table table = openfast ? openfast_table(result, 1 + v.nx()) : table_of(result);
+    if (!o.output.empty()) {
+        if (openfast)
+            write_table_csv(table, o.output);
+        else
+            runtime::write_csv(result, o.output);
+    }
     out << runtime::format_summary(result);
     if (!o.output.empty()) out << "wrote " << result.rows() << " rows to " << o.output << "\n";
+    std::optional<Comparison> comparison;
+    if (reference) {
+        comparison = compare_tables(table, *reference);
+        out << format_comparison(*comparison, o.compare);
+    }
+    if (!o.plot.empty()) {
+        PlotOptions plot;
+        plot.title = loaded->front.model->name + (o.linear ? " (linear)" : "");
+        runtime::write_file_atomically(
+            o.plot,
+            svg_plot(plot_panels(table, reference ? &*reference : nullptr, comparison, o), plot));
+        out << "wrote " << o.plot << "\n";
+    }
     return 0;
 }
 
 int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
+    if (o.sweep.empty() && (!o.output.empty() || !o.plot.empty()))
+        throw UsageError("lin writes files (-o, --plot) only for --sweep");
+    if (!o.sweep.empty() && o.json) throw UsageError("--sweep writes CSV, not --json");
     auto loaded = load(o.model, o.set, o.sid, false, err);
     if (!loaded) return 1;
+    if (!o.sweep.empty()) return campbell(*loaded, o, out);
     const runtime::ModelView& v = loaded->view;
     const int nq = v.nq, nu = v.nu;
-    std::vector<double> q, qd;
-    bind_state(v.dof_names, o.at, q, qd, "--at");
-    std::vector<double> u = inputs_of(v, o.u);
+    std::vector<double> q, qd, u;
+    operating_point(*loaded, o, q, qd, u);
     const double t = 0.0;
     const double* up = nu ? u.data() : nullptr;
 
@@ -140,7 +336,9 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
             << ",\"inputs\":" << json::strings(v.input_names) << ",\"M0\":" << json::matrix(rows(M))
             << ",\"C0\":" << json::matrix(rows(C0)) << ",\"K0\":" << json::matrix(rows(K0))
             << ",\"Q0\":" << json::matrix(rows(Q0)) << ",\"A\":" << json::matrix(rows(Am))
-            << ",\"B\":" << json::matrix(rows(B))
+            << ",\"B\":" << json::matrix(rows(B)) << ",\"q0\":" << json::array(q)
+            << ",\"qd0\":" << json::array(qd) << ",\"u0\":" << json::array(u)
+            << ",\"residual\":" << json::array(std::vector<double>(F.data(), F.data() + nq))
             << ",\"equilibrium_residual\":" << json::number(residual) << ",\"modes\":[";
         for (std::size_t i = 0; i < modes.size(); ++i) {
             const auto& m = modes[i];
@@ -153,6 +351,7 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     }
     if (residual > 1e-9)
         err << "yamsc: warning: the operating point is not an equilibrium (max |q''| = " << residual
+            << ", max |F(q0, q0', u0)| = " << F.cwiseAbs().maxCoeff()
             << "); the linear model is about a moving point\n";
     char line[160];
     out << "mode  frequency [Hz]  damping ratio  shape (largest DOF)\n";

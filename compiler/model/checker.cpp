@@ -51,7 +51,9 @@ public:
         check_loads();
         check_outputs();
         check_dof_usage();
-        report_unsupported();
+        check_linearize();
+        check_initial_state();
+        check_approximations();
         if (diags_.has_errors()) return std::nullopt;
         return std::move(model_);
     }
@@ -505,7 +507,7 @@ private:
         std::vector<int> new_index(declared.size(), -1);
         for (int i : order) {
             auto ui = static_cast<std::size_t>(i);
-            if (!declared[ui]) continue;
+            if (!declared[ui] || !joint_of[ui]) continue; // no joint: reported above
             int par = parent[ui];
             if (par >= 0 && new_index[static_cast<std::size_t>(par)] < 0) continue;
             Body b = *declared[ui];
@@ -692,15 +694,192 @@ private:
         }
     }
 
-    void report_unsupported() {
-        for (const auto& a : file_.approximations)
-            diags_.error(Kind::NotSupported, a.loc,
-                         "approx: small-angle approximations are not supported yet");
-        if (file_.linearize)
-            diags_.error(Kind::NotSupported, file_.linearize->loc,
-                         "linearize: symbolic linearization is not supported yet (use `yamsc lin "
-                         "--at ...` for a numeric one)");
+    // ---- linearization and approximations ----------------------------------------------
+    /// `linearize { ... }`: one value per DOF, rate and input channel, 0 unless written.
+    void check_linearize() {
+        if (!file_.linearize) return;
+        const Loc& loc = file_.linearize->loc;
+        OperatingPoint op;
+        op.loc = loc;
+        op.q.assign(model_.dofs.size(), number("0", loc));
+        op.qd.assign(model_.dofs.size(), number("0", loc));
+        std::vector<std::size_t> first_channel;
+        for (const Input& in : model_.inputs) {
+            first_channel.push_back(op.u.size());
+            for (int k = 0; k <= in.order; ++k) op.u.push_back(number("0", loc));
+        }
+        std::set<std::pair<std::string, int>> seen;
+        bool ok = true;
+        for (const ast::Assignment& a : file_.linearize->point) {
+            const std::string written =
+                a.name + std::string(static_cast<std::size_t>(a.primes), '\'');
+            Expr* slot = operating_point_slot(a, written, op, first_channel);
+            if (!slot) {
+                ok = false;
+                continue;
+            }
+            if (!seen.insert({a.name, a.primes}).second) {
+                diags_.error(Kind::DuplicateName, a.loc,
+                             "'" + written + "' is given twice in the linearize block");
+                ok = false;
+                continue;
+            }
+            // The point is a function of the parameters only: the linear model is then
+            // LPV, exact at every parameter set.
+            ExprContext ctx{"the operating point value of '" + written + "'"};
+            if (!exprs_.scalar(a.value, ctx)) {
+                ok = false;
+                continue;
+            }
+            *slot = a.value;
+        }
+        if (ok) model_.operating_point = std::move(op);
     }
+
+    /// `initial { ... }`: a value per DOF and rate, 0 unless written; parameters only, so
+    /// that `--set` moves the initial state with the parameters.
+    void check_initial_state() {
+        if (!file_.initial) return;
+        const Loc& loc = file_.initial->loc;
+        InitialState init;
+        init.loc = loc;
+        init.q.assign(model_.dofs.size(), number("0", loc));
+        init.qd.assign(model_.dofs.size(), number("0", loc));
+        std::set<std::pair<std::string, int>> seen;
+        bool ok = true;
+        for (const ast::Assignment& a : file_.initial->state) {
+            const std::string written =
+                a.name + std::string(static_cast<std::size_t>(a.primes), '\'');
+            auto it = names_.find(a.name);
+            if (it == names_.end() || it->second.kind != NameKind::dof) {
+                std::vector<std::string> candidates;
+                for (const Dof& d : model_.dofs) candidates.push_back(d.name);
+                diags_.error(it == names_.end() ? Kind::UnknownName : Kind::WrongKind, a.loc,
+                             (it == names_.end() ? "unknown DOF '" + a.name + "'"
+                                                 : "'" + a.name + "' is not a DOF") +
+                                 " in the initial block: it sets DOFs and their rates" +
+                                 (it == names_.end() ? diag::did_you_mean(a.name, candidates)
+                                                     : std::string()));
+                ok = false;
+                continue;
+            }
+            if (a.primes > 1) {
+                diags_.error(Kind::InvalidValue, a.loc,
+                             "the initial block sets DOFs and rates, not '" + written +
+                                 "': accelerations follow from M q'' = F");
+                ok = false;
+                continue;
+            }
+            if (!seen.insert({a.name, a.primes}).second) {
+                diags_.error(Kind::DuplicateName, a.loc,
+                             "'" + written + "' is given twice in the initial block");
+                ok = false;
+                continue;
+            }
+            ExprContext ctx{"the initial value of '" + written + "'"};
+            if (!exprs_.scalar(a.value, ctx)) {
+                ok = false;
+                continue;
+            }
+            const auto index = static_cast<std::size_t>(it->second.index);
+            (a.primes == 0 ? init.q : init.qd)[index] = a.value;
+        }
+        if (ok) model_.initial_state = std::move(init);
+    }
+
+    /// Where the value of `name''...` goes in the operating point, or null (reported).
+    Expr* operating_point_slot(const ast::Assignment& a, const std::string& written,
+                               OperatingPoint& op, const std::vector<std::size_t>& first_channel) {
+        auto it = names_.find(a.name);
+        if (it == names_.end()) {
+            std::vector<std::string> candidates;
+            for (const Dof& d : model_.dofs) candidates.push_back(d.name);
+            for (const Input& in : model_.inputs) candidates.push_back(in.name);
+            diags_.error(Kind::UnknownName, a.loc,
+                         "unknown DOF or input '" + a.name + "' in the linearize block" +
+                             diag::did_you_mean(a.name, candidates));
+            return nullptr;
+        }
+        const auto index = static_cast<std::size_t>(it->second.index);
+        if (it->second.kind == NameKind::dof) {
+            if (a.primes > 1) {
+                diags_.error(Kind::InvalidValue, a.loc,
+                             "the operating point sets DOFs and rates, not '" + written +
+                                 "': accelerations follow from M q'' = F");
+                return nullptr;
+            }
+            return a.primes == 0 ? &op.q[index] : &op.qd[index];
+        }
+        if (it->second.kind == NameKind::input) {
+            const Input& in = model_.inputs[index];
+            if (a.primes > in.order) {
+                diags_.error(Kind::InvalidValue, a.loc,
+                             "input '" + in.name + "' is declared with order " +
+                                 std::to_string(in.order) + ": '" + written +
+                                 "' is not one of its channels");
+                return nullptr;
+            }
+            return &op.u[first_channel[index] + static_cast<std::size_t>(a.primes)];
+        }
+        diags_.error(Kind::WrongKind, a.loc,
+                     "the linearize block sets DOFs, their rates and inputs; '" + a.name +
+                         "' is not one of them");
+        return nullptr;
+    }
+
+    /// `approx a, b order N`: parameters, DOFs or inputs, each in one group only.
+    void check_approximations() {
+        std::map<std::string, Loc> grouped;
+        for (const ast::Approx& a : file_.approximations) {
+            Approximation group;
+            group.order = a.order;
+            group.loc = a.loc;
+            if (a.order < 1 || a.order > max_approx_order) {
+                diags_.error(Kind::InvalidValue, a.loc,
+                             "approx order must be between 1 and " +
+                                 std::to_string(max_approx_order) + ", not " +
+                                 std::to_string(a.order));
+                continue;
+            }
+            bool ok = true;
+            for (const ast::Named& n : a.symbols) {
+                auto it = names_.find(n.name);
+                if (it == names_.end()) {
+                    std::vector<std::string> candidates;
+                    for (const auto& [name, info] : names_)
+                        if (info.kind == NameKind::param || info.kind == NameKind::dof ||
+                            info.kind == NameKind::input)
+                            candidates.push_back(name);
+                    diags_.error(Kind::UnknownName, n.loc,
+                                 "unknown name '" + n.name + "' in approx" +
+                                     diag::did_you_mean(n.name, candidates));
+                    ok = false;
+                    continue;
+                }
+                const NameKind kind = it->second.kind;
+                if (kind != NameKind::param && kind != NameKind::dof && kind != NameKind::input) {
+                    diags_.error(Kind::WrongKind, n.loc,
+                                 "approx expands in parameters, DOFs or inputs; '" + n.name +
+                                     "' is none of them");
+                    ok = false;
+                    continue;
+                }
+                auto [prev, fresh] = grouped.emplace(n.name, n.loc);
+                if (!fresh) {
+                    diags_.error(Kind::DuplicateName, n.loc,
+                                 "'" + n.name + "' is already approximated");
+                    diags_.note(prev->second, "first approximated here");
+                    ok = false;
+                    continue;
+                }
+                group.symbols.push_back({n.name, kind, it->second.index, n.loc});
+            }
+            if (ok) model_.approximations.push_back(std::move(group));
+        }
+    }
+
+    /// Orders above this are never useful for small angles and grow as (n+N)!/(n! N!).
+    static constexpr int max_approx_order = 8;
 
     const ast::ModelFile& file_;
     diag::Diagnostics& diags_;

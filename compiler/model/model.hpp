@@ -128,6 +128,39 @@ struct Output {
     Loc loc;
 };
 
+/// `linearize { q = 0; psi' = Omega }`: the operating point of the linear model.
+/// One value per DOF, per DOF rate and per input channel (an input of order 2 has
+/// the channels u, u', u''), in the order of Model::dofs and of the channels;
+/// values not written are 0. Every value is an expression of parameters.
+struct OperatingPoint {
+    std::vector<Expr> q, qd, u;
+    Loc loc;
+};
+
+/// `approx a, b order N`: the equations are replaced by their Taylor expansion
+/// about 0 in these symbols (parameters, DOFs or inputs), truncated at total order
+/// N in the group's symbols (paper sections 4.5-4.6).
+struct Approximation {
+    struct Symbol {
+        std::string name;
+        NameKind kind = NameKind::param; // param, dof or input
+        int index = 0;                   // into Model::params, dofs or inputs
+        Loc loc;
+    };
+    std::vector<Symbol> symbols;
+    int order = 1;
+    Loc loc;
+};
+
+/// `initial { q = 2; psi' = 1.05 }`: the default initial state of `yamsc sim` (the
+/// command's --ic overrides single values). One value per DOF and per DOF rate, in the
+/// order of Model::dofs; values not written are 0. Every value is an expression of
+/// parameters.
+struct InitialState {
+    std::vector<Expr> q, qd;
+    Loc loc;
+};
+
 struct Model {
     std::string name, title;
     std::vector<std::string> files_read; // data files (SID, ElastoDyn), for digests and depfiles
@@ -143,6 +176,9 @@ struct Model {
     std::vector<Spring> springs;
     std::vector<GenForce> genforces;
     std::vector<Output> outputs;
+    std::optional<OperatingPoint> operating_point; // the `linearize` block, if any
+    std::optional<InitialState> initial_state;     // the `initial` block, if any
+    std::vector<Approximation> approximations;     // `approx` groups, in file order
 
     int body_index(const std::string& name) const;
     int point_index(const std::string& name) const;

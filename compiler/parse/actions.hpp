@@ -459,17 +459,27 @@ YAMSC_ACTION(kw_linearize) {
                 in.position());
     }
     st.file.linearize.emplace().loc = st.loc(in.position());
+    st.assignments = &st.file.linearize->point;
+}
+YAMSC_ACTION(kw_initial) {
+    if (st.file.initial) {
+        st.fail("duplicate 'initial' block (the first is at " + line_col(st.file.initial->loc) +
+                    ")",
+                in.position());
+    }
+    st.file.initial.emplace().loc = st.loc(in.position());
+    st.assignments = &st.file.initial->state;
 }
 YAMSC_ACTION(assignment_name) {
-    ast::Assignment& a = st.file.linearize->point.emplace_back();
+    ast::Assignment& a = st.assignments->emplace_back();
     a.name = in.string();
     a.loc = st.loc(in.position());
 }
 YAMSC_ACTION(assignment_primes) {
-    st.file.linearize->point.back().primes = static_cast<int>(in.size());
+    st.assignments->back().primes = static_cast<int>(in.size());
 }
 YAMSC_ACTION(assignment_value) {
-    st.file.linearize->point.back().value = st.pop();
+    st.assignments->back().value = st.pop();
 }
 
 YAMSC_ACTION(kw_output) {

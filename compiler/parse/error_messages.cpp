@@ -175,4 +175,9 @@ ErrorMessage error_message<grammar::unknown_linearize_item>::compose(std::string
         fill_message("expected 'name = value' in the linearize block, found {found}", rest, st)};
 }
 
+ErrorMessage error_message<grammar::unknown_initial_item>::compose(std::string_view rest,
+                                                                   const ParseState& st) {
+    return {fill_message("expected 'name = value' in the initial block, found {found}", rest, st)};
+}
+
 } // namespace yamsc::parse

@@ -163,6 +163,10 @@ YAMSC_COMPOSED_ERROR_MESSAGE(unknown_linearize_item);
 YAMSC_ERROR_MESSAGE(linearize_block, "expected '{' after 'linearize', found {found}");
 YAMSC_UNCLOSED_BLOCK_MESSAGE(linearize_close,
                              "expected '}' to close the linearize block started at {open}");
+YAMSC_COMPOSED_ERROR_MESSAGE(unknown_initial_item);
+YAMSC_ERROR_MESSAGE(initial_block, "expected '{' after 'initial', found {found}");
+YAMSC_UNCLOSED_BLOCK_MESSAGE(initial_close,
+                             "expected '}' to close the initial block started at {open}");
 YAMSC_ERROR_MESSAGE(output_name, "expected an output name, found {found}");
 YAMSC_ERROR_MESSAGE(output_equals, "expected '=' after the output name, found {found}");
 YAMSC_ERROR_MESSAGE(output_frame, "expected a frame (a body or ground) after 'in', found {found}");

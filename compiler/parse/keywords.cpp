@@ -4,8 +4,9 @@ namespace yamsc::parse {
 
 const std::vector<std::string>& statement_keywords() {
     static const std::vector<std::string> words{
-        "model", "param",  "input",  "dof",      "gravity", "rigid",     "flexible", "joint",
-        "force", "torque", "spring", "genforce", "approx",  "linearize", "output",   "point"};
+        "model",    "param",     "input",   "dof",    "gravity", "rigid",
+        "flexible", "joint",     "force",   "torque", "spring",  "genforce",
+        "approx",   "linearize", "initial", "output", "point"};
     return words;
 }
 

@@ -80,6 +80,8 @@ public:
     ast::Axis axis;                      // the last joint axis
     /// Where `key = value` lines of the current block go (body or beam properties).
     std::vector<std::vector<ast::Property>*> property_sinks;
+    /// Where `name = value` lines of the current `linearize` or `initial` block go.
+    std::vector<ast::Assignment>* assignments = nullptr;
 
     /// Declarations of the current statement that a trailing `# comment` documents. Indices,
     /// not pointers: the vectors grow while the statement declares more names.

@@ -52,13 +52,16 @@ std::map<std::string, std::string> function_bodies(const std::string& source) {
 
 } // namespace
 
-TEST_CASE("the module has the six routines with their steps") {
+TEST_CASE("the module has its routines with their steps") {
     const Equations eq = double_pendulum();
     const Module m = build_module(eq);
     std::vector<std::string> names;
     for (const Routine& r : m.routines) names.push_back(r.name);
-    CHECK(names == std::vector<std::string>{"mass_matrix", "forcing", "jacobians", "outputs", "rhs",
-                                            "rhs_jacobian"});
+    // The six nonlinear routines come first, in this order.
+    REQUIRE(names.size() >= 6);
+    CHECK(std::vector<std::string>(names.begin(), names.begin() + 6) ==
+          std::vector<std::string>{"mass_matrix", "forcing", "jacobians", "outputs", "rhs",
+                                   "rhs_jacobian"});
     CHECK(step_kinds(m.routine("rhs")) ==
           std::vector<StepKind>{StepKind::evaluate, StepKind::factor, StepKind::solve});
     CHECK(step_kinds(m.routine("rhs_jacobian")) ==
@@ -68,7 +71,7 @@ TEST_CASE("the module has the six routines with their steps") {
     CHECK(columns.target == "J");
     CHECK(columns.offset == 2 * 4); // the lower nq rows of the 2nq x 2nq J
     CHECK(columns.columns == 4);
-    CHECK_THROWS_AS(m.routine("linear"), yamsc::diag::InternalError);
+    CHECK_THROWS_AS(m.routine("no_such_routine"), yamsc::diag::InternalError);
 }
 
 TEST_CASE("the short mass_matrix exists exactly when M depends on q and p only") {
@@ -195,7 +198,8 @@ TEST_CASE("the header comment documents the model and the cost of each function"
     CHECK(text.find("\"g\" = 9.807 \"parameter g\"") != std::string::npos);
     CHECK(text.find("u[0] \"tau\" \"joint torque [N m]\"") != std::string::npos);
     // F = tau - m g l sin(theta) - c theta': 2 adds, 4 muls, 1 call.
-    CHECK(text.find("//   forcing       2 adds, 4 muls, 0 divs, 1 calls\n") != std::string::npos);
+    CHECK(text.find("//   forcing          2 adds, 4 muls, 0 divs, 1 calls\n") !=
+          std::string::npos);
 }
 
 TEST_CASE("dump lists the routines, temporaries and solves") {

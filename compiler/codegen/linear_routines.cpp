@@ -1,0 +1,209 @@
+#include "codegen/linear_routines.hpp"
+
+#include "codegen/routine_builder.hpp"
+#include "symbolic/linearize.hpp"
+
+#include <utility>
+
+namespace yamsc::codegen {
+namespace {
+
+using NodeMatrix = std::vector<std::vector<NodeId>>;
+
+Expr load(const char* array, int index) {
+    Expr e;
+    e.kind = ExprKind::load;
+    e.array = array;
+    e.index = index;
+    return e;
+}
+
+Argument arg(const char* name, ArgumentKind kind) {
+    return Argument{name, kind, false};
+}
+
+/// Symbols read from the operating point (q0, qd0, u0), `a` from the solved
+/// accelerations qdd0, and t = 0: the linear functions have no time argument
+/// (a model with explicit time is linearized at t = 0).
+RoutineBuilder::Binding point_binding() {
+    return [](SymbolRef s) -> std::optional<Expr> {
+        switch (s.kind) {
+        case SymbolKind::time: {
+            Expr e;
+            e.kind = ExprKind::number;
+            e.value = 0.0;
+            return e;
+        }
+        case SymbolKind::q:
+            return load("q0", s.index);
+        case SymbolKind::qd:
+            return load("qd0", s.index);
+        case SymbolKind::input:
+            return load("u0", s.index);
+        case SymbolKind::param: {
+            Expr e;
+            e.kind = ExprKind::param;
+            e.index = s.index;
+            return e;
+        }
+        case SymbolKind::acceleration:
+            return load("qdd0", s.index);
+        case SymbolKind::qdd:
+            return std::nullopt;
+        }
+        return std::nullopt;
+    };
+}
+
+std::vector<Argument> point_arguments(std::vector<Argument> outputs) {
+    std::vector<Argument> args{
+        arg("q0", ArgumentKind::input_array), arg("qd0", ArgumentKind::input_array),
+        arg("u0", ArgumentKind::input_array), arg("p", ArgumentKind::params)};
+    for (Argument& a : outputs) args.push_back(std::move(a));
+    return args;
+}
+
+bool uses_accelerations(const Graph& g, const NodeMatrix& m) {
+    const std::uint32_t bit = 1u << static_cast<int>(SymbolKind::acceleration);
+    for (const auto& row : m)
+        for (NodeId id : row)
+            if (g.node(id).depends & bit) return true;
+    return false;
+}
+
+/// M into the local `M` (lower triangle) and, when K0 needs them, the
+/// accelerations qdd0 = M^-1 F; leaves M factorised.
+void factor_and_solve_accelerations(RoutineBuilder& b, const LinearSources& in, int nq,
+                                    bool accelerations) {
+    b.local("M", nq * nq);
+    if (accelerations) b.local("qdd0", nq);
+    for (int i = 0; i < nq; ++i)
+        for (int j = 0; j <= i; ++j) b.assign("M", i * nq + j, in.M[i][j]);
+    if (accelerations)
+        for (int i = 0; i < nq; ++i) b.assign("qdd0", i, in.F[static_cast<std::size_t>(i)]);
+    b.factor("M", nq);
+    if (accelerations) b.solve("M", nq, "qdd0", 0, 1);
+}
+
+Routine linear_routine(Graph& g, const LinearSources& in, int nq, int nu, bool accelerations,
+                       const Options& options) {
+    RoutineBuilder b(g, "linear",
+                     "M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with "
+                     "q''0 = M0^-1 F0 (eq. 25)",
+                     point_arguments({arg("M0", ArgumentKind::output_array),
+                                      arg("C0", ArgumentKind::output_array),
+                                      arg("K0", ArgumentKind::output_array),
+                                      arg("Q0", ArgumentKind::output_array)}),
+                     point_binding());
+    for (int i = 0; i < nq; ++i)
+        for (int j = 0; j <= i; ++j) b.assign("M0", i * nq + j, in.M[i][j]);
+    for (int i = 0; i < nq; ++i)
+        for (int j = i + 1; j < nq; ++j) b.copy("M0", i * nq + j, "M0", j * nq + i);
+    if (accelerations) factor_and_solve_accelerations(b, in, nq, true);
+    for (int i = 0; i < nq; ++i)
+        for (int j = 0; j < nq; ++j)
+            b.assign("C0", i * nq + j, g.add({{in.dF_dqd[i][j], -1.0}}, 0));
+    for (int i = 0; i < nq; ++i)
+        for (int j = 0; j < nq; ++j)
+            b.assign("K0", i * nq + j, g.add({{in.dMa_dq[i][j], 1.0}, {in.dF_dq[i][j], -1.0}}, 0));
+    for (int i = 0; i < nq; ++i)
+        for (int j = 0; j < nu; ++j) b.assign("Q0", i * nu + j, in.dF_du[i][j]);
+    return std::move(b).finish(options);
+}
+
+// A = [[0, I], [M^-1 (dF_dq - dMa_dq(a = q''0)), M^-1 dF_dqd]], B = [[0], [M^-1 dF_du]]:
+// the lower block rows are solved in place, as in rhs_jacobian.
+Routine state_space_routine(Graph& g, const LinearSources& in, int nq, int nu, bool accelerations,
+                            const Options& options) {
+    RoutineBuilder b(g, "state_space",
+                     "x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu",
+                     point_arguments({arg("A", ArgumentKind::output_array),
+                                      arg("B", ArgumentKind::output_array)}),
+                     point_binding());
+    const int nx = 2 * nq;
+    const NodeId zero = g.number(0.0), one = g.number(1.0);
+    for (int i = 0; i < nq; ++i)
+        for (int j = 0; j < nx; ++j) b.assign("A", i * nx + j, j == nq + i ? one : zero);
+    for (int i = 0; i < nq; ++i)
+        for (int j = 0; j < nu; ++j) b.assign("B", i * nu + j, zero);
+    factor_and_solve_accelerations(b, in, nq, accelerations);
+    for (int i = 0; i < nq; ++i) {
+        for (int j = 0; j < nq; ++j)
+            b.assign("A", (nq + i) * nx + j,
+                     g.add({{in.dF_dq[i][j], 1.0}, {in.dMa_dq[i][j], -1.0}}, 0));
+        for (int j = 0; j < nq; ++j) b.assign("A", (nq + i) * nx + nq + j, in.dF_dqd[i][j]);
+    }
+    for (int i = 0; i < nq; ++i)
+        for (int j = 0; j < nu; ++j) b.assign("B", (nq + i) * nu + j, in.dF_du[i][j]);
+    b.solve("M", nq, "A", nq * nx, nx);
+    if (nu > 0) b.solve("M", nq, "B", nq * nu, nu);
+    return std::move(b).finish(options);
+}
+
+Routine output_matrices_routine(GinacImporter& importer, const Graph& g,
+                                const symbolic::Equations& eq, const Options& options) {
+    const symbolic::OutputJacobians J = symbolic::output_jacobians(eq);
+    const int nq = eq.nq(), nu = eq.nu(), nx = 2 * nq;
+    NodeMatrix C, D;
+    for (const symbolic::Row& row : J.C) {
+        C.emplace_back();
+        for (const GiNaC::ex& e : row) C.back().push_back(importer.import(e));
+    }
+    for (const symbolic::Row& row : J.D) {
+        D.emplace_back();
+        for (const GiNaC::ex& e : row) D.back().push_back(importer.import(e));
+    }
+    RoutineBuilder b(g, "output_matrices",
+                     "dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu",
+                     point_arguments({arg("C", ArgumentKind::output_array),
+                                      arg("D", ArgumentKind::output_array)}),
+                     point_binding());
+    for (std::size_t i = 0; i < C.size(); ++i)
+        for (int j = 0; j < nx; ++j) b.assign("C", static_cast<int>(i) * nx + j, C[i][j]);
+    for (std::size_t i = 0; i < D.size(); ++i)
+        for (int j = 0; j < nu; ++j) b.assign("D", static_cast<int>(i) * nu + j, D[i][j]);
+    return std::move(b).finish(options);
+}
+
+} // namespace
+
+void add_linear_routines(Graph& graph, GinacImporter& importer, const symbolic::Equations& eq,
+                         const LinearSources& in, const Options& options,
+                         std::vector<Routine>& routines) {
+    const int nq = eq.nq(), nu = eq.nu();
+    if (nq == 0) return;
+    const bool accelerations = uses_accelerations(graph, in.dMa_dq);
+    routines.push_back(linear_routine(graph, in, nq, nu, accelerations, options));
+    routines.push_back(state_space_routine(graph, in, nq, nu, accelerations, options));
+    routines.push_back(output_matrices_routine(importer, graph, eq, options));
+}
+
+void add_operating_point(Module& module, const symbolic::Equations& eq,
+                         const symbolic::OperatingPoint& op) {
+    Graph graph(module.options.max_multiplied_power);
+    GinacImporter importer(graph, eq);
+    std::vector<NodeId> q, qd, u;
+    for (const GiNaC::ex& e : op.q) q.push_back(importer.import(e));
+    for (const GiNaC::ex& e : op.qd) qd.push_back(importer.import(e));
+    for (const GiNaC::ex& e : op.u) u.push_back(importer.import(e));
+    // Only parameters: the checker allows nothing else in the point.
+    RoutineBuilder b(graph, "operating_point",
+                     op.declared ? "the model's operating point (its linearize block)"
+                                 : "the model's operating point (no linearize block: zeros)",
+                     {arg("p", ArgumentKind::params), arg("q0", ArgumentKind::output_array),
+                      arg("qd0", ArgumentKind::output_array),
+                      arg("u0", ArgumentKind::output_array)},
+                     [](SymbolRef s) -> std::optional<Expr> {
+                         if (s.kind != SymbolKind::param) return std::nullopt;
+                         Expr e;
+                         e.kind = ExprKind::param;
+                         e.index = s.index;
+                         return e;
+                     });
+    for (std::size_t i = 0; i < q.size(); ++i) b.assign("q0", static_cast<int>(i), q[i]);
+    for (std::size_t i = 0; i < qd.size(); ++i) b.assign("qd0", static_cast<int>(i), qd[i]);
+    for (std::size_t i = 0; i < u.size(); ++i) b.assign("u0", static_cast<int>(i), u[i]);
+    module.routines.push_back(std::move(b).finish(module.options));
+}
+
+} // namespace yamsc::codegen

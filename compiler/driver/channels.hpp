@@ -1,0 +1,60 @@
+#pragma once
+// Columns of a simulation as a table, and the OpenFAST naming of its channels.
+//
+// A model marks which of its quantities are OpenFAST channels by declaring
+// outputs named as the channels, in OpenFAST's sign convention and units
+// (`output Q_TSS1 = -q_ss1`, `output PtfmPitch = pitch * 180 / pi`): this is what
+// `yamsc from-openfast` writes. `--channels openfast` then writes `Time_[s]` and
+// one column `NAME_[unit]` per such output, the unit from OpenFAST's channel list
+// (docs/openfast.md), with the azimuth wrapped to [0, 360) deg as OpenFAST does.
+#include <yamsc/simulation.hpp>
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace yamsc::driver {
+
+/// Named columns of equal length; column 0 is time.
+struct Table {
+    std::vector<std::string> columns;
+    std::vector<std::vector<double>> data; // data[column][row]
+
+    std::size_t rows() const { return data.empty() ? 0 : data.front().size(); }
+    /// Index of the column named `name`, or -1.
+    int find(std::string_view name) const;
+};
+
+/// Every column of a run as `yamsc sim` writes it: time, DOFs, rates, outputs.
+Table table_of(const runtime::SimulationResult& result);
+
+/// An OpenFAST output channel that a model can provide.
+struct OpenFastChannel {
+    const char* name;
+    const char* unit;
+    bool wrap_360; // an angle OpenFAST reports modulo 360 deg
+};
+
+/// The channel named `name` (case-sensitive, as OpenFAST writes it), or null.
+const OpenFastChannel* openfast_channel(std::string_view name);
+/// All channels yamsc knows, for documentation and messages.
+const std::vector<OpenFastChannel>& openfast_channels();
+
+/// `Time_[s]` and the outputs named as OpenFAST channels, as `NAME_[unit]`. Throws
+/// UserError when the model has no such output (it was not made for OpenFAST).
+Table openfast_table(const runtime::SimulationResult& result, int first_output_column);
+
+/// The columns with these names (or base names before `_[`); all when `names` is
+/// empty. Throws UserError naming an unknown channel.
+Table select_columns(const Table& table, const std::vector<std::string>& names);
+
+/// The name without its unit suffix: `Q_TFA1_[m]` -> `Q_TFA1`.
+std::string base_name(const std::string& column);
+
+void write_table_csv(const Table& table, std::ostream& out);
+/// Writes atomically; throws std::runtime_error on failure.
+void write_table_csv(const Table& table, const std::string& path);
+
+} // namespace yamsc::driver

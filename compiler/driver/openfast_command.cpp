@@ -1,0 +1,123 @@
+// `yamsc from-openfast`: a model from an OpenFAST ElastoDyn deck (docs/openfast.md).
+#include "driver/bindings.hpp"
+#include "driver/commands.hpp"
+#include "driver/openfast_deck.hpp"
+#include "driver/openfast_model.hpp"
+#include "driver/openfast_rotor.hpp"
+#include "model/checker.hpp"
+#include "model/names.hpp"
+#include "parse/parser.hpp"
+
+#include <yamsc/atomic_file.hpp>
+
+#include <cctype>
+#include <filesystem>
+#include <ostream>
+
+namespace yamsc::driver {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The model's name from the output file: `land_3dof.mbd` -> `land_3dof`.
+std::string model_name(const std::string& output) {
+    std::string name;
+    for (char c : fs::path(output).stem().string())
+        name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) name = "turbine_" + name;
+    while (name.size() > 1 && name[0] == '_') name.erase(0, 1);
+    if (!model::reserved_reason(name).empty()) name = "turbine_" + name;
+    return name;
+}
+
+/// `path` as the model names it: relative to the model's folder when both share their
+/// top folder (a project), else absolute.
+std::string path_from(const fs::path& folder, const std::string& path) {
+    const fs::path absolute = fs::absolute(path).lexically_normal();
+    const fs::path relative = absolute.lexically_relative(folder);
+    auto top = [](const fs::path& p) {
+        auto it = p.begin();
+        if (it != p.end() && p.has_root_directory()) ++it;
+        return it == p.end() ? fs::path() : *it;
+    };
+    if (relative.empty() || top(absolute) != top(folder)) return absolute.generic_string();
+    return relative.generic_string();
+}
+
+} // namespace
+
+int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream& err) {
+    diag::Diagnostics diags;
+    auto deck = read_openfast_deck(o.deck, diags);
+    if (!deck) {
+        err << diags.render();
+        return 1;
+    }
+    OpenFastModelInput in;
+    in.deck = &*deck;
+    in.dofs = deck->dofs;
+    in.source = o.deck;
+    std::string switched; // the --dofs given, as the model's comment quotes them
+    for (const auto& [name, enabled] : o.dofs) {
+        std::string flag;
+        for (const std::string& f : elastodyn_dof_flags())
+            if (f.size() == name.size() &&
+                std::equal(f.begin(), f.end(), name.begin(), [](char a, char b) {
+                    return std::tolower(static_cast<unsigned char>(a)) ==
+                           std::tolower(static_cast<unsigned char>(b));
+                }))
+                flag = f;
+        if (flag.empty())
+            throw UsageError("--dofs: unknown ElastoDyn DOF '" + name + "'" +
+                             diag::did_you_mean(name, elastodyn_dof_flags()));
+        if (flag == "TeetDOF") {
+            if (enabled)
+                diags.warning(diag::Kind::NotSupported, {},
+                              "--dofs TeetDOF=on: the teeter DOF is not converted");
+            continue;
+        }
+        in.dofs[flag] = enabled;
+        switched += (switched.empty() ? " --dofs " : ",") + flag + "=" + (enabled ? "on" : "off");
+    }
+    in.source += switched + " -o " + fs::path(o.output).filename().string();
+    in.name = model_name(o.output);
+    const fs::path folder = fs::absolute(o.output).lexically_normal().parent_path();
+    in.tower_path = path_from(folder, deck->tower_file);
+    for (const std::string& b : deck->blade_files) in.blade_paths.push_back(path_from(folder, b));
+    const bool blades_rigid = !in.dofs["FlapDOF1"] && !in.dofs["FlapDOF2"] && !in.dofs["EdgeDOF"];
+    const bool tower_rigid = !in.dofs["TwFADOF1"] && !in.dofs["TwFADOF2"] && !in.dofs["TwSSDOF1"] &&
+                             !in.dofs["TwSSDOF2"];
+    if (blades_rigid) in.rotor = rigid_rotor(*deck, diags);
+    if (tower_rigid) in.tower = rigid_tower(*deck, diags);
+    if (diags.has_errors()) {
+        err << diags.render();
+        return 1;
+    }
+    const std::string text = openfast_model_text(in, diags);
+
+    // The model must check where it will live (its data paths are relative to it).
+    diag::Diagnostics check;
+    auto source = std::make_shared<const diag::SourceFile>(o.output, text);
+    auto ast = parse::parse_model(source, check);
+    std::optional<model::Model> m;
+    if (ast && !check.has_errors()) m = model::check(*ast, check);
+    err << diags.render();
+    if (!m || check.has_errors()) {
+        err << check.render()
+            << "yamsc: error: the model written from the deck does not check (above); nothing "
+               "written\n";
+        return 1;
+    }
+    runtime::write_file_atomically(o.output, text);
+    out << "wrote " << o.output << ": " << m->dofs.size() << " DOFs (";
+    for (std::size_t i = 0; i < m->dofs.size(); ++i) out << (i ? ", " : "") << m->dofs[i].name;
+    out << "), " << m->bodies.size() << " bodies, " << m->inputs.size() << " inputs, "
+        << m->outputs.size() << " OpenFAST channels\n";
+    int warnings = 0;
+    for (const auto& d : diags.all()) warnings += d.severity == diag::Severity::warning;
+    if (warnings) out << warnings << " warning(s) about entries not converted (on stderr)\n";
+    return 0;
+}
+
+} // namespace yamsc::driver

@@ -1,0 +1,405 @@
+// Reading an OpenFAST deck: the `.fst` glue-code file (optional) and the ElastoDyn
+// main file, with every entry accounted for (see openfast_deck.hpp).
+#include "driver/openfast_deck.hpp"
+
+#include "beam/elastodyn_file.hpp"
+#include "driver/files.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+namespace yamsc::driver {
+
+namespace fs = std::filesystem;
+using diag::Kind;
+
+namespace {
+
+std::string lower(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+/// `BlPitch(1)` -> `blpitch1`: the key compared without case and parentheses.
+std::string canonical(const std::string& key) {
+    std::string out;
+    for (char c : key)
+        if (c != '(' && c != ')')
+            out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+struct Token {
+    std::string text;
+    int col = 0;
+    bool quoted = false;
+};
+
+std::vector<Token> tokenize(std::string_view line) {
+    std::vector<Token> out;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        if (std::isspace(static_cast<unsigned char>(line[i])) || line[i] == ',') {
+            ++i;
+            continue;
+        }
+        Token t;
+        t.col = static_cast<int>(i) + 1;
+        if (line[i] == '"' || line[i] == '\'') {
+            const char quote = line[i++];
+            const std::size_t end = std::min(line.find(quote, i), line.size());
+            t.text = std::string(line.substr(i, end - i));
+            t.quoted = true;
+            i = end + 1;
+        } else {
+            const std::size_t begin = i;
+            while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i])) &&
+                   line[i] != ',')
+                ++i;
+            t.text = std::string(line.substr(begin, i - begin));
+        }
+        out.push_back(std::move(t));
+    }
+    return out;
+}
+
+bool is_key(const Token& t) {
+    if (t.quoted || t.text.empty() || !std::isalpha(static_cast<unsigned char>(t.text[0])))
+        return false;
+    const std::string l = lower(t.text);
+    return l != "true" && l != "false" && l != "t" && l != "f" && l != "default" && l != "unused" &&
+           l != "none";
+}
+
+// How `from-openfast` treats each entry of the ElastoDyn main file.
+enum class Use { dof, number, file, ignored, two_bladed, furling, optional_number };
+
+const std::map<std::string, Use>& elastodyn_keys() {
+    static const std::map<std::string, Use> keys = [] {
+        std::map<std::string, Use> k;
+        for (const std::string& f : elastodyn_dof_flags()) k[canonical(f)] = Use::dof;
+        for (const char* n :
+             {"OoPDefl",   "IPDefl",    "BlPitch1",  "BlPitch2",  "BlPitch3",  "Azimuth",
+              "RotSpeed",  "NacYaw",    "TTDspFA",   "TTDspSS",   "PtfmSurge", "PtfmSway",
+              "PtfmHeave", "PtfmRoll",  "PtfmPitch", "PtfmYaw",   "NumBl",     "TipRad",
+              "HubRad",    "PreCone1",  "PreCone2",  "PreCone3",  "HubCM",     "OverHang",
+              "ShftTilt",  "NacCMxn",   "NacCMyn",   "NacCMzn",   "Twr2Shft",  "TowerHt",
+              "TowerBsHt", "PtfmCMxt",  "PtfmCMyt",  "PtfmCMzt",  "PtfmRefzt", "TipMass1",
+              "TipMass2",  "TipMass3",  "HubMass",   "HubIner",   "GenIner",   "NacMass",
+              "NacYIner",  "YawBrMass", "PtfmMass",  "PtfmRIner", "PtfmPIner", "PtfmYIner",
+              "BldNodes",  "GBRatio",   "DTTorSpr",  "DTTorDmp",  "TwrNodes"})
+            k[canonical(n)] = Use::number;
+        for (const char* n :
+             {"Gravity", "AzimB1Up", "GBoxEff", "PtfmXYIner", "PtfmYZIner", "PtfmXZIner"})
+            k[canonical(n)] = Use::optional_number;
+        for (const char* n : {"BldFile1", "BldFile2", "BldFile3", "TwrFile"})
+            k[canonical(n)] = Use::file;
+        for (const char* n :
+             {"Echo",          "Method",       "DT",         "ShftGagL",        "NcIMUxn",
+              "NcIMUyn",       "NcIMUzn",      "SumPrint",   "OutFile",         "TabDelim",
+              "OutFmt",        "TStart",       "DecFact",    "NTwGages",        "TwrGagNd",
+              "NBlGages",      "BldGagNd",     "OutList",    "BldNd_BladesOut", "BldNd_BlOutNd",
+              "OutList_Nodal", "BldNd_Blades", "BldNd_Nodes"})
+            k[canonical(n)] = Use::ignored;
+        for (const char* n : {"TeetDefl", "UndSling", "Delta3", "TeetMod", "TeetDmpP", "TeetDmp",
+                              "TeetCDmp", "TeetSStP", "TeetHStP", "TeetSSSp", "TeetHSSp"})
+            k[canonical(n)] = Use::two_bladed;
+        k[canonical("TeetDOF")] = Use::two_bladed;
+        k[canonical("Furling")] = Use::furling;
+        k[canonical("FurlFile")] = Use::furling;
+        return k;
+    }();
+    return keys;
+}
+
+/// The glue-code switches whose modules add loads that the model leaves as inputs.
+const std::vector<std::pair<std::string, std::string>>& fst_modules() {
+    static const std::vector<std::pair<std::string, std::string>> modules{
+        {"CompInflow", "inflow wind"},
+        {"CompAero", "aerodynamic loads"},
+        {"CompServo", "control and generator torque"},
+        {"CompHydro", "hydrodynamic loads"},
+        {"CompSub", "substructure dynamics"},
+        {"CompMooring", "mooring loads"},
+        {"CompIce", "ice loads"}};
+    return modules;
+}
+
+std::string file_line(const diag::SourceFile& f, int line) {
+    return fs::path(f.path()).filename().string() + ":" + std::to_string(line);
+}
+
+/// Resolves `name` (quoted in the deck) relative to the folder of `from`.
+std::string resolve(const std::string& name, const diag::SourceFile& from) {
+    fs::path p(name);
+    if (p.is_absolute()) return p.lexically_normal().string();
+    return (fs::path(from.path()).parent_path() / p).lexically_normal().string();
+}
+
+class Reader {
+public:
+    Reader(OpenFastDeck& deck, diag::Diagnostics& diags) : deck_(deck), diags_(diags) {}
+
+    bool read(const std::string& path) {
+        auto first = read_source(path, diags_);
+        if (!first) return false;
+        if (looks_like_fst(*first)) {
+            deck_.fst = first;
+            if (!read_fst()) return false;
+        } else {
+            deck_.ed = first;
+        }
+        return read_elastodyn();
+    }
+
+private:
+    static bool looks_like_fst(const diag::SourceFile& f) {
+        for (const DeckEntry& e : scan_deck_entries(f))
+            if (canonical(e.key) == "edfile") return true;
+        return false;
+    }
+
+    bool read_fst() {
+        const diag::SourceFile& f = *deck_.fst;
+        std::string ed_file;
+        for (const DeckEntry& e : scan_deck_entries(f)) {
+            const std::string key = canonical(e.key);
+            const diag::Location at{deck_.fst, e.line, e.col};
+            if (key == "edfile") {
+                ed_file = e.value;
+            } else if (key == "gravity") {
+                deck_.fst_gravity = beam::parse_number(e.value);
+                if (!deck_.fst_gravity)
+                    diags_.error(Kind::InvalidValue, at, "Gravity must be a number");
+            } else if (key == "tmax" || key == "dt") {
+                if (auto v = beam::parse_number(e.value))
+                    (key == "tmax" ? deck_.tmax : deck_.dt) = v;
+                ignore(f, e.key, e.line);
+            } else if (key == "compelast") {
+                if (e.value != "1")
+                    diags_.warning(Kind::NotSupported, at,
+                                   "CompElast = " + e.value +
+                                       ": only ElastoDyn is converted; the blades come from the "
+                                       "ElastoDyn blade files");
+            } else {
+                bool module = false;
+                for (const auto& [name, what] : fst_modules())
+                    if (key == canonical(name)) {
+                        module = true;
+                        if (e.value != "0")
+                            diags_.warning(Kind::NotSupported, at,
+                                           name + " = " + e.value + ": " + what +
+                                               " are not converted; the model declares the "
+                                               "loads as inputs");
+                    }
+                if (!module) ignore(f, e.key, e.line);
+            }
+        }
+        if (ed_file.empty()) {
+            diags_.error(Kind::MissingProperty, {deck_.fst, 0, 0},
+                         "the .fst file has no EDFile (the ElastoDyn input file)");
+            return false;
+        }
+        deck_.ed = read_source(resolve(ed_file, f), diags_);
+        return deck_.ed != nullptr;
+    }
+
+    bool read_elastodyn() {
+        const diag::SourceFile& f = *deck_.ed;
+        deck_.title = std::string(f.line(2));
+        while (!deck_.title.empty() && std::isspace(static_cast<unsigned char>(deck_.title.back())))
+            deck_.title.pop_back();
+        const beam::ElastoDynFile ed(deck_.ed);
+        const int errors = diags_.error_count();
+        std::set<std::string> seen;
+        for (const DeckEntry& e : scan_deck_entries(f)) {
+            const std::string key = canonical(e.key);
+            if (!seen.insert(key).second) continue; // ElastoDyn reads the first one
+            entries_[key] = e;
+            deck_.where[key] = file_line(f, e.line);
+            auto it = elastodyn_keys().find(key);
+            if (it == elastodyn_keys().end()) {
+                diags_.warning(Kind::UnknownProperty, {deck_.ed, e.line, e.col},
+                               "unknown ElastoDyn entry '" + e.key + "': not converted");
+                continue;
+            }
+            if (it->second == Use::ignored) ignore(f, e.key, e.line);
+        }
+        for (const std::string& flag : elastodyn_dof_flags()) {
+            if (canonical(flag) == "teetdof") continue;
+            if (auto v = ed.get_bool(key_of(flag), diags_)) deck_.dofs[flag] = *v;
+        }
+        auto blades = ed.get_int(key_of("NumBl"), diags_);
+        if (blades && (*blades < 1 || *blades > 3))
+            diags_.error(Kind::InvalidValue, ed.location(key_of("NumBl")),
+                         "NumBl must be 1, 2 or 3");
+        if (blades) deck_.blades = std::clamp(*blades, 1, 3);
+        for (const auto& [key, use] : elastodyn_keys()) {
+            if (use != Use::number && use != Use::optional_number) continue;
+            const bool per_blade = key.back() >= '1' && key.back() <= '3' &&
+                                   (key.rfind("blpitch", 0) == 0 || key.rfind("precone", 0) == 0 ||
+                                    key.rfind("tipmass", 0) == 0);
+            if (per_blade && key.back() - '0' > deck_.blades) continue;
+            if (use == Use::optional_number && !entries_.count(key)) {
+                deck_.num[name_of(key)] = key == "gboxeff" ? 100.0 : 0.0;
+                if (key == "gravity") gravity_elsewhere();
+                continue;
+            }
+            if (auto v = ed.get_double(key_of(name_of(key)), diags_)) {
+                deck_.num[name_of(key)] = *v;
+                deck_.text[name_of(key)] = entries_.count(key) ? entries_[key].value : "";
+            }
+        }
+        if (auto n = ed.get_int(key_of("TwrNodes"), diags_)) deck_.tower_nodes = *n;
+        if (auto n = ed.get_int(key_of("BldNodes"), diags_)) deck_.blade_nodes = *n;
+        for (const char* key : {"TwrNodes", "BldNodes"}) {
+            const int n = canonical(key) == "twrnodes" ? deck_.tower_nodes : deck_.blade_nodes;
+            if (n < 3 || n > 10000)
+                diags_.error(Kind::InvalidValue, ed.location(key_of(key)),
+                             std::string(key) + " must be 3 to 10000 (it is " + std::to_string(n) +
+                                 ")");
+        }
+        if (auto t = ed.get_string(key_of("TwrFile"), diags_)) deck_.tower_file = resolve(*t, f);
+        for (int k = 1; k <= deck_.blades; ++k)
+            if (auto b = ed.get_string(key_of("BldFile" + std::to_string(k)), diags_))
+                deck_.blade_files.push_back(resolve(*b, f));
+        report_unsupported(ed);
+        return diags_.error_count() == errors;
+    }
+
+    /// Newer decks keep gravity in the `.fst` (older ElastoDyn files have their own).
+    void gravity_elsewhere() {
+        if (deck_.fst_gravity) {
+            deck_.num["Gravity"] = *deck_.fst_gravity;
+            return;
+        }
+        deck_.num["Gravity"] = 9.80665;
+        diags_.warning(Kind::MissingProperty, {deck_.ed, 0, 0},
+                       "no Gravity in the deck: using 9.80665 m/s^2");
+    }
+
+    void report_unsupported(const beam::ElastoDynFile& ed) {
+        auto warn = [&](const std::string& key, const std::string& message) {
+            diags_.warning(Kind::NotSupported, ed.location(key_of(key)), message);
+        };
+        if (entries_.count("furling")) {
+            const std::string v = lower(entries_["furling"].value);
+            if (v == "true" || v == "t") warn("Furling", "furling is not converted");
+        }
+        if (deck_.blades == 2) {
+            if (entries_.count("teetdof")) {
+                const std::string v = lower(entries_["teetdof"].value);
+                if (v == "true" || v == "t")
+                    warn("TeetDOF", "the teeter DOF is not converted (the hub is rigid)");
+            }
+            for (const char* key : {"UndSling", "Delta3", "TeetDefl"})
+                if (entries_.count(canonical(key)))
+                    if (auto v = beam::parse_number(entries_[canonical(key)].value); v && *v != 0)
+                        warn(key, std::string(key) + " of a teetering rotor is not converted");
+        } else {
+            for (const DeckEntry& e : scan_deck_entries(*deck_.ed)) {
+                auto it = elastodyn_keys().find(canonical(e.key));
+                if (it != elastodyn_keys().end() && it->second == Use::two_bladed)
+                    ignore(*deck_.ed, e.key, e.line);
+            }
+        }
+        if (deck_.num.count("GBoxEff") && deck_.num["GBoxEff"] != 100)
+            warn("GBoxEff", "GBoxEff scales the generator torque, an input of the model: give "
+                            "gen_torque with the losses included");
+    }
+
+    void ignore(const diag::SourceFile& f, const std::string& key, int line) {
+        deck_.ignored.emplace_back(fs::path(f.path()).filename().string(),
+                                   key + ":" + std::to_string(line));
+    }
+
+    /// The key as written in the file (for the ElastoDyn reader's messages), or the name.
+    std::string key_of(const std::string& name) {
+        auto it = entries_.find(canonical(name));
+        return it == entries_.end() ? name : it->second.key;
+    }
+
+    /// The canonical name used in OpenFastDeck::num: ElastoDyn's spelling without "()".
+    static std::string name_of(const std::string& key) {
+        static const std::map<std::string, std::string> names = [] {
+            std::map<std::string, std::string> n;
+            for (const char* s :
+                 {"Gravity",   "OoPDefl",   "IPDefl",     "BlPitch1",   "BlPitch2",  "BlPitch3",
+                  "Azimuth",   "RotSpeed",  "NacYaw",     "TTDspFA",    "TTDspSS",   "PtfmSurge",
+                  "PtfmSway",  "PtfmHeave", "PtfmRoll",   "PtfmPitch",  "PtfmYaw",   "NumBl",
+                  "TipRad",    "HubRad",    "PreCone1",   "PreCone2",   "PreCone3",  "HubCM",
+                  "OverHang",  "ShftTilt",  "NacCMxn",    "NacCMyn",    "NacCMzn",   "Twr2Shft",
+                  "TowerHt",   "TowerBsHt", "PtfmCMxt",   "PtfmCMyt",   "PtfmCMzt",  "PtfmRefzt",
+                  "TipMass1",  "TipMass2",  "TipMass3",   "HubMass",    "HubIner",   "GenIner",
+                  "NacMass",   "NacYIner",  "YawBrMass",  "PtfmMass",   "PtfmRIner", "PtfmPIner",
+                  "PtfmYIner", "BldNodes",  "GBRatio",    "DTTorSpr",   "DTTorDmp",  "TwrNodes",
+                  "AzimB1Up",  "GBoxEff",   "PtfmXYIner", "PtfmYZIner", "PtfmXZIner"})
+                n[canonical(s)] = s;
+            return n;
+        }();
+        auto it = names.find(key);
+        return it == names.end() ? key : it->second;
+    }
+
+    OpenFastDeck& deck_;
+    diag::Diagnostics& diags_;
+    std::map<std::string, DeckEntry> entries_; // by canonical key
+};
+
+} // namespace
+
+const std::vector<std::string>& elastodyn_dof_flags() {
+    static const std::vector<std::string> flags{
+        "PtfmSgDOF", "PtfmSwDOF", "PtfmHvDOF", "PtfmRDOF", "PtfmPDOF", "PtfmYDOF",
+        "TwFADOF1",  "TwSSDOF1",  "TwFADOF2",  "TwSSDOF2", "YawDOF",   "GenDOF",
+        "DrTrDOF",   "FlapDOF1",  "FlapDOF2",  "EdgeDOF",  "TeetDOF"};
+    return flags;
+}
+
+std::vector<DeckEntry> scan_deck_entries(const diag::SourceFile& file) {
+    std::vector<DeckEntry> out;
+    bool in_outlist = false;
+    // Lines 1 and 2 are the file's banner and title.
+    for (int line = 3; line <= file.line_count(); ++line) {
+        const std::vector<Token> t = tokenize(file.line(line));
+        if (t.empty()) continue;
+        const std::string first = lower(t[0].text);
+        if (in_outlist) {
+            if (!t[0].quoted && first.rfind("end", 0) == 0) in_outlist = false;
+            continue;
+        }
+        if (first.rfind("---", 0) == 0 || first.rfind("===", 0) == 0) continue;
+        // The key is the first name after the value (a value may be a list: "1, 2  Key").
+        std::size_t k = 1;
+        // A word followed by a key and its comment is a value ("heavy  NacMass  - ...").
+        const bool word_value =
+            t.size() >= 2 && is_key(t[1]) && (t.size() == 2 || t[2].text.rfind("-", 0) == 0);
+        if (t[0].text.empty() || (is_key(t[0]) && !word_value)) {
+            // "OutList  - The next line(s)...": a key without a value.
+            if (canonical(t[0].text) == "outlist") {
+                out.push_back({t[0].text, "", line, t[0].col});
+                in_outlist = true;
+            }
+            continue;
+        }
+        while (k < t.size() && !is_key(t[k]) && !t[k].quoted &&
+               std::isdigit(static_cast<unsigned char>(t[k].text[0])))
+            ++k;
+        if (k >= t.size() || !is_key(t[k])) continue;
+        out.push_back({t[k].text, t[0].text, line, t[0].col});
+        if (canonical(t[k].text) == "outlist") in_outlist = true;
+    }
+    return out;
+}
+
+std::optional<OpenFastDeck> read_openfast_deck(const std::string& path, diag::Diagnostics& diags) {
+    OpenFastDeck deck;
+    Reader reader(deck, diags);
+    if (!reader.read(path)) return std::nullopt;
+    return deck;
+}
+
+} // namespace yamsc::driver

@@ -1,0 +1,597 @@
+// The model text of an ElastoDyn turbine (see openfast_model.hpp and docs/openfast.md).
+//
+// Frames follow OpenFAST's inertial axes: x downwind, y to the left looking downwind, z
+// up. The tower's fore-aft modes bend along +x, its side-side modes along +y; ElastoDyn's
+// side-side DOF points the other way, so `Q_TSS1 = -q_ss1`. The shaft frame is turned
+// about y by -ShftTilt (ElastoDyn's negative tilt raises the upwind rotor) and the rotor
+// spins about its +x axis (clockwise seen from upwind), blade 1 along +z at azimuth 0.
+#include "driver/openfast_model.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+namespace yamsc::driver {
+
+namespace {
+
+struct DofInfo {
+    const char* flag;
+    const char* name; // the model's DOF (blade DOFs: with {k} for the blade number)
+    const char* doc;
+};
+
+const std::vector<DofInfo>& dof_table() {
+    static const std::vector<DofInfo> table{
+        {"PtfmSgDOF", "surge", "platform surge of the reference point, along x [m]"},
+        {"PtfmSwDOF", "sway", "platform sway of the reference point, along y [m]"},
+        {"PtfmHvDOF", "heave", "platform heave of the reference point, along z [m]"},
+        {"PtfmRDOF", "roll", "platform roll about x [rad]"},
+        {"PtfmPDOF", "pitch", "platform pitch about y, tower top downwind when > 0 [rad]"},
+        {"PtfmYDOF", "yaw", "platform yaw about z [rad]"},
+        {"TwFADOF1", "q_fa1", "tower fore-aft mode 1: tower-top deflection along x [m]"},
+        {"TwSSDOF1", "q_ss1", "tower side-side mode 1: tower-top deflection along y [m]"},
+        {"TwFADOF2", "q_fa2", "tower fore-aft mode 2 [m]"},
+        {"TwSSDOF2", "q_ss2", "tower side-side mode 2 [m]"},
+        {"YawDOF", "nac_yaw", "nacelle yaw about the tower-top z axis [rad]"},
+        {"GenDOF", "psi", "generator azimuth (the rotor's without drivetrain twist) [rad]"},
+        {"DrTrDOF", "drtr", "drivetrain torsion: rotor azimuth minus generator azimuth [rad]"}};
+    return table;
+}
+
+const char* const blade_modes[3][4] = {{"FlapDOF1", "flap1", "F1", "first flapwise mode"},
+                                       {"EdgeDOF", "edge1", "E1", "first edgewise mode"},
+                                       {"FlapDOF2", "flap2", "F2", "second flapwise mode"}};
+
+class Writer {
+public:
+    Writer(const OpenFastModelInput& in, diag::Diagnostics& diags)
+        : in_(in), d_(*in.deck), diags_(diags) {}
+
+    std::string text() {
+        header();
+        parameters();
+        inputs();
+        dofs();
+        out_ << "\ngravity (0, 0, -Gravity)\n";
+        bodies();
+        loads();
+        initial_state();
+        outputs();
+        return out_.str();
+    }
+
+private:
+    bool on(const std::string& flag) const {
+        auto it = in_.dofs.find(flag);
+        return it != in_.dofs.end() && it->second;
+    }
+    bool platform() const {
+        for (const char* f :
+             {"PtfmSgDOF", "PtfmSwDOF", "PtfmHvDOF", "PtfmRDOF", "PtfmPDOF", "PtfmYDOF"})
+            if (on(f)) return true;
+        return false;
+    }
+    /// A platform frame: platform DOFs, or platform offsets held fixed (ElastoDyn's
+    /// PtfmSurge .. PtfmYaw are "initial or fixed").
+    bool platform_frame() const {
+        if (platform()) return true;
+        for (const char* k :
+             {"PtfmSurge", "PtfmSway", "PtfmHeave", "PtfmRoll", "PtfmPitch", "PtfmYaw"})
+            if (v(k) != 0) return true;
+        return false;
+    }
+    bool flexible_tower() const {
+        return on("TwFADOF1") || on("TwSSDOF1") || on("TwFADOF2") || on("TwSSDOF2");
+    }
+    bool flexible_blades() const { return on("FlapDOF1") || on("FlapDOF2") || on("EdgeDOF"); }
+    double v(const std::string& key) const { return d_[key]; }
+    /// The rotating body the generator torque acts on and the rotor hangs from.
+    std::string shaft_body() const {
+        return on("DrTrDOF") ? "gen_shaft" : flexible_blades() ? "hub" : "rotor";
+    }
+
+    static std::string pad(const std::string& s, std::size_t width) {
+        return s.size() >= width ? s + " " : s + std::string(width - s.size(), ' ');
+    }
+    void param(const std::string& name, const std::string& value, const std::string& doc) {
+        out_ << pad("param " + name + " = " + value, 34) << "# " << doc << "\n";
+    }
+    void param(const std::string& name, double value, const std::string& doc) {
+        param(name, mbd_number(value), doc);
+    }
+    void param_deg(const std::string& name, double degrees, const std::string& doc) {
+        param(name, mbd_number(degrees) + " deg", doc);
+    }
+    std::string where(const std::string& key) const {
+        std::string k;
+        for (char c : key)
+            if (c != '(' && c != ')')
+                k += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        auto it = d_.where.find(k);
+        return it == d_.where.end() ? key : key + ", " + it->second;
+    }
+
+    void header() {
+        out_ << "# Generated by `yamsc from-openfast " << in_.source << "`.\n";
+        if (!d_.title.empty()) out_ << "# " << d_.title << "\n";
+        out_ << "#\n"
+                "# A template model (docs/openfast.md): the DOFs the deck enables, ElastoDyn's\n"
+                "# geometry, masses and inertias, gravity and initial conditions. Aerodynamic,\n"
+                "# generator, hydrodynamic and distributed tower loads are inputs (0 unless\n"
+                "# given). Outputs named as OpenFAST channels feed `yamsc sim --channels "
+                "openfast`.\n"
+                "# To switch a DOF off, write the model again with `--dofs NAME=off` (ElastoDyn's\n"
+                "# flag), or delete its `dof` line, its joint step or mode, and its genforce,\n"
+                "# initial and output lines.\n";
+        if (d_.tmax && d_.dt)
+            out_ << "# The OpenFAST run: TMax = " << mbd_number(*d_.tmax)
+                 << " s, DT = " << mbd_number(*d_.dt) << " s.\n";
+        std::string enabled, disabled;
+        for (const std::string& flag : elastodyn_dof_flags()) {
+            if (flag == "TeetDOF") continue;
+            (on(flag) ? enabled : disabled) +=
+                (on(flag) ? enabled : disabled).empty() ? flag : ", " + flag;
+        }
+        out_ << "# DOFs on:  " << (enabled.empty() ? "none" : enabled) << "\n";
+        wrapped("# DOFs off: ", disabled.empty() ? "none" : disabled);
+        if (!d_.ignored.empty())
+            out_ << "# Entries without effect on the structural model (outputs, simulation "
+                    "control,\n# glue code, two-bladed rotors), by file, as key:line:\n";
+        for (std::size_t i = 0; i < d_.ignored.size();) {
+            const std::string& file = d_.ignored[i].first;
+            std::string list;
+            for (; i < d_.ignored.size() && d_.ignored[i].first == file; ++i)
+                list += (list.empty() ? "" : ", ") + d_.ignored[i].second;
+            wrapped("#   " + file + ":", list);
+        }
+        out_ << "model " << in_.name << " " << mbd_string(d_.title.empty() ? in_.name : d_.title)
+             << "\n";
+    }
+
+    void wrapped(const std::string& first, const std::string& text) {
+        std::string line = first;
+        std::istringstream words(text);
+        for (std::string w; words >> w;) {
+            if (line.size() + w.size() + 1 > 92 && line.size() > 6) {
+                out_ << line << "\n";
+                line = "#     ";
+            }
+            line += (line.back() == ' ' ? "" : " ") + w;
+        }
+        out_ << line << "\n";
+    }
+
+    void parameters() {
+        out_ << "\n# ---- ElastoDyn entries (names as in the deck; lengths in m, masses in kg)\n";
+        param("Gravity", v("Gravity"),
+              "gravitational acceleration [m/s^2] (" + where("Gravity") + ")");
+        param("TowerHt", v("TowerHt"), "height of the tower top above ground or MSL [m]");
+        param("TowerBsHt", v("TowerBsHt"), "height of the tower base above ground or MSL [m]");
+        param("Twr2Shft", v("Twr2Shft"), "height of the shaft above the tower top [m]");
+        param("OverHang", v("OverHang"), "rotor apex from the yaw axis, along the shaft [m]");
+        param_deg("ShftTilt", v("ShftTilt"), "shaft tilt; < 0 raises the upwind end");
+        param("NacCMxn", v("NacCMxn"), "nacelle centre of mass from the tower top, downwind [m]");
+        param("NacCMyn", v("NacCMyn"), "... lateral (along y) [m]");
+        param("NacCMzn", v("NacCMzn"), "... vertical [m]");
+        param("NacMass", v("NacMass"), "nacelle mass [kg]");
+        param("NacYIner", v("NacYIner"), "nacelle inertia about the yaw axis [kg m^2]");
+        if (v("YawBrMass") != 0) param("YawBrMass", v("YawBrMass"), "yaw bearing mass [kg]");
+        param("GenIner", v("GenIner"), "generator inertia about the high-speed shaft [kg m^2]");
+        param("GBRatio", v("GBRatio"), "gearbox ratio");
+        if (on("DrTrDOF")) {
+            param("DTTorSpr", v("DTTorSpr"), "drivetrain torsional stiffness [N m/rad]");
+            param("DTTorDmp", v("DTTorDmp"), "drivetrain torsional damping [N m s/rad]");
+        }
+        if (v("AzimB1Up") != 0)
+            param_deg("AzimB1Up", v("AzimB1Up"), "azimuth reported when blade 1 points up");
+        if (platform_frame()) {
+            param("PtfmRefzt", v("PtfmRefzt"), "height of the platform reference point [m]");
+            param("PtfmCMxt", v("PtfmCMxt"), "platform centre of mass, downwind [m]");
+            param("PtfmCMyt", v("PtfmCMyt"), "... lateral [m]");
+            param("PtfmCMzt", v("PtfmCMzt"), "... height above ground or MSL [m]");
+            param("PtfmMass", v("PtfmMass"), "platform mass [kg]");
+            param("PtfmRIner", v("PtfmRIner"), "platform roll inertia about its CM [kg m^2]");
+            param("PtfmPIner", v("PtfmPIner"), "platform pitch inertia about its CM [kg m^2]");
+            param("PtfmYIner", v("PtfmYIner"), "platform yaw inertia about its CM [kg m^2]");
+            for (const char* k : {"PtfmXYIner", "PtfmYZIner", "PtfmXZIner"})
+                if (v(k) != 0) param(k, v(k), "platform product of inertia (-integral) [kg m^2]");
+        }
+        if (flexible_blades()) {
+            param("HubMass", v("HubMass"), "hub mass [kg]");
+            param("HubIner", v("HubIner"), "hub inertia about the shaft [kg m^2]");
+            param("HubCM", v("HubCM"), "hub centre of mass from the apex, downwind [m]");
+            param("HubRad", v("HubRad"), "blade root from the apex [m]");
+            param("TipRad", v("TipRad"), "blade tip from the apex [m]");
+            for (int k = 1; k <= d_.blades; ++k) {
+                const std::string n = std::to_string(k);
+                param_deg("PreCone" + n, v("PreCone" + n), "cone of blade " + n + "; > 0 downwind");
+                if (v("BlPitch" + n) != 0)
+                    param_deg("BlPitch" + n, v("BlPitch" + n), "pitch of blade " + n);
+                if (v("TipMass" + n) != 0)
+                    param("TipMass" + n, v("TipMass" + n),
+                          "tip-brake mass of blade " + n + " [kg]");
+            }
+        } else if (in_.rotor) {
+            const RigidProperties& r = *in_.rotor;
+            out_ << "# The rigid rotor: hub (HubMass at HubCM, HubIner) and " << d_.blades
+                 << " blades with their precone, each\n# lumped on BldNodes = " << d_.blade_nodes
+                 << " elements as ElastoDyn does (AdjBlMs included); tip masses.\n";
+            param("RotMass", r.mass, "rotor mass [kg]");
+            param("RotCMx", r.cm[0], "rotor centre of mass from the apex, along the shaft [m]");
+            if (r.cm[1] != 0 || r.cm[2] != 0) {
+                param("RotCMy", r.cm[1], "... along y [m]");
+                param("RotCMz", r.cm[2], "... along z [m]");
+            }
+            param("RotIxx", r.inertia[0], "rotor inertia about the shaft [kg m^2]");
+            param("RotIyy", r.inertia[1], "rotor inertia about y through its CM [kg m^2]");
+            param("RotIzz", r.inertia[2], "rotor inertia about z through its CM [kg m^2]");
+            if (r.inertia[3] != 0 || r.inertia[4] != 0 || r.inertia[5] != 0) {
+                param("RotIxy", r.inertia[3], "product of inertia [kg m^2]");
+                param("RotIyz", r.inertia[4], "product of inertia [kg m^2]");
+                param("RotIxz", r.inertia[5], "product of inertia [kg m^2]");
+            }
+        }
+        if (!flexible_tower() && in_.tower) {
+            out_ << "# The rigid tower, lumped on TwrNodes = " << d_.tower_nodes
+                 << " elements as ElastoDyn does (AdjTwMa included).\n";
+            param("TwrMass", in_.tower->mass, "tower mass [kg]");
+            param("TwrCMz", in_.tower->cm[2], "tower centre of mass above its base [m]");
+            param("TwrIner", in_.tower->inertia[0],
+                  "tower inertia about a horizontal axis through its CM [kg m^2]");
+        }
+        if (!on("GenDOF")) {
+            param("psi0", mbd_number(v("Azimuth") - v("AzimB1Up")) + " deg",
+                  "rotor azimuth at t = 0 (Azimuth - AzimB1Up)");
+            param("Omega0", rpm(v("RotSpeed")), "fixed rotor speed (RotSpeed, GenDOF off) [rad/s]");
+        }
+    }
+
+    static std::string rpm(double value) {
+        return value == 0 ? "0" : mbd_number(value) + " * pi / 30";
+    }
+
+    void inputs() {
+        out_ << "\n# ---- loads (inputs; 0 unless given, e.g. `yamsc sim --u thrust=8e5`)\n";
+        input("thrust", "rotor thrust at the apex along the shaft [N]");
+        input("aero_torque", "aerodynamic torque on the rotor about the shaft [N m]");
+        input("gen_torque", "generator torque on the high-speed shaft [N m]");
+        if (platform())
+            for (const char* c : {"x", "y", "z"}) {
+                input(std::string("hydro_f") + c, std::string("platform force along ") + c +
+                                                      " (ground axes) at the reference point [N]");
+                input(std::string("hydro_m") + c,
+                      std::string("platform moment about ") + c + " (ground axes) [N m]");
+            }
+        for (const char* m : {"fa1", "ss1", "fa2", "ss2"})
+            if (tower_mode_on(m))
+                input(std::string("f_") + m,
+                      std::string("generalized force of distributed tower loads on mode ") + m +
+                          " [N]");
+        if (on("YawDOF")) input("yaw_moment", "yaw moment of the tower on the nacelle [N m]");
+        for (int k = 1; k <= d_.blades; ++k)
+            for (const auto& mode : blade_modes)
+                if (on(mode[0]))
+                    input(blade_dof(k, mode[1], "f_"),
+                          std::string("generalized aerodynamic force on the ") + mode[3] +
+                              " of blade " + std::to_string(k) + " [N]");
+    }
+    void input(const std::string& name, const std::string& doc) {
+        out_ << pad("input " + name, 34) << "# " << doc << "\n";
+    }
+    bool tower_mode_on(const std::string& m) const {
+        if (m == "fa1") return on("TwFADOF1");
+        if (m == "ss1") return on("TwSSDOF1");
+        if (m == "fa2") return on("TwFADOF2");
+        return on("TwSSDOF2");
+    }
+    static std::string blade_dof(int k, const std::string& mode, const std::string& prefix = "q_") {
+        return prefix + "b" + std::to_string(k) + "_" + mode;
+    }
+
+    void dofs() {
+        out_ << "\n# ---- DOFs (ElastoDyn's order)\n";
+        int count = 0;
+        for (const DofInfo& info : dof_table())
+            if (on(info.flag)) {
+                out_ << pad(std::string("dof ") + info.name, 34) << "# " << info.flag << ": "
+                     << info.doc << "\n";
+                ++count;
+            }
+        for (int k = 1; k <= d_.blades; ++k)
+            for (const auto& mode : blade_modes)
+                if (on(mode[0])) {
+                    out_ << pad("dof " + blade_dof(k, mode[1]), 34) << "# " << mode[0] << ": "
+                         << mode[3] << " of blade " << k << ", tip deflection [m]\n";
+                    ++count;
+                }
+        if (count == 0) out_ << "# (none: every DOF is off)\n";
+    }
+
+    void bodies() {
+        out_ << "\n# ---- bodies and joints\n";
+        std::string tower_parent = "ground";
+        std::string tower_at = "(0, 0, TowerBsHt)";
+        if (platform_frame()) {
+            out_ << "rigid platform {\n    mass = PtfmMass\n"
+                    "    com = (PtfmCMxt, PtfmCMyt, PtfmCMzt - PtfmRefzt)\n";
+            if (v("PtfmXYIner") != 0 || v("PtfmYZIner") != 0 || v("PtfmXZIner") != 0)
+                out_ << "    inertia = (PtfmRIner, PtfmPIner, PtfmYIner, "
+                     << (v("PtfmXYIner") != 0 ? "PtfmXYIner" : "0") << ", "
+                     << (v("PtfmYZIner") != 0 ? "PtfmYZIner" : "0") << ", "
+                     << (v("PtfmXZIner") != 0 ? "PtfmXZIner" : "0") << ")\n";
+            else
+                out_ << "    inertia = (PtfmRIner, PtfmPIner, PtfmYIner)\n";
+            out_ << "}\n";
+            // ElastoDyn's platform rotations are small-angle (closest orthonormal matrix);
+            // here they are exact rotations about x, then y, then z.
+            std::string steps = "at (0, 0, PtfmRefzt)";
+            const char* names[6][4] = {{"PtfmSgDOF", "translate x", "surge", "PtfmSurge"},
+                                       {"PtfmSwDOF", "translate y", "sway", "PtfmSway"},
+                                       {"PtfmHvDOF", "translate z", "heave", "PtfmHeave"},
+                                       {"PtfmRDOF", "rotate x", "roll", "PtfmRoll"},
+                                       {"PtfmPDOF", "rotate y", "pitch", "PtfmPitch"},
+                                       {"PtfmYDOF", "rotate z", "yaw", "PtfmYaw"}};
+            for (const auto& n : names) {
+                const bool angle = std::string(n[1]).rfind("rotate", 0) == 0;
+                if (on(n[0]))
+                    steps += std::string("; ") + n[1] + " " + n[2];
+                else if (v(n[3]) != 0) // held at the deck's value
+                    steps += std::string("; ") + n[1] + " " + mbd_number(v(n[3])) +
+                             (angle ? " deg" : "");
+            }
+            out_ << "joint ground -> platform { " << steps << " }\n";
+            tower_parent = "platform";
+            tower_at = "(0, 0, TowerBsHt - PtfmRefzt)";
+        }
+        std::string top; // how a joint starts at the tower top
+        if (flexible_tower()) {
+            std::string modes;
+            for (const char* m : {"fa1", "ss1", "fa2", "ss2"})
+                if (tower_mode_on(m))
+                    modes += (modes.empty() ? "" : ", ") + std::string(m) + " -> q_" + m;
+            out_ << "flexible tower {\n    beam " << mbd_string(in_.tower_path)
+                 << " elastodyn_tower {\n        length = TowerHt - TowerBsHt\n        modes = ("
+                 << modes << ")\n        stations = " << d_.tower_nodes << "\n    }\n}\n";
+            top = "joint tower.tip -> ";
+        } else {
+            out_ << "rigid tower { mass = TwrMass; com = (0, 0, TwrCMz); inertia = (TwrIner, "
+                    "TwrIner, 0) }\n";
+            top = "joint tower -> ";
+        }
+        out_ << "joint " << tower_parent << " -> tower { at " << tower_at << " }\n";
+        const std::string top_at = flexible_tower() ? "" : "at (0, 0, TowerHt - TowerBsHt)";
+        if (v("YawBrMass") != 0) {
+            out_ << "rigid yaw_bearing { mass = YawBrMass }\n"
+                 << top << "yaw_bearing" << (top_at.empty() ? "" : " { " + top_at + " }") << "\n";
+        }
+        // ElastoDyn's nacelle has inertia about the yaw axis only.
+        out_ << "rigid nacelle {\n    mass = NacMass\n    com = (NacCMxn, NacCMyn, NacCMzn)\n"
+                "    inertia = (0, 0, NacYIner - NacMass * (NacCMxn^2 + NacCMyn^2))\n}\n";
+        // ElastoDyn turns the tower top by an orthonormal matrix of the slopes (its
+        // SmllRotTrans), which `exact` matches; `small` (I + skew) is not orthonormal and
+        // costs ~0.4 % of accuracy in a 2 m free decay.
+        std::string yaw_steps = flexible_tower() ? "elastic_rotation = exact" : top_at;
+        if (on("YawDOF"))
+            yaw_steps += (yaw_steps.empty() ? "" : "; ") + std::string("rotate z nac_yaw");
+        else if (v("NacYaw") != 0)
+            yaw_steps += (yaw_steps.empty() ? "" : "; ") + std::string("rotate z ") +
+                         mbd_number(v("NacYaw")) + " deg";
+        out_ << top << "nacelle" << (yaw_steps.empty() ? "" : " { " + yaw_steps + " }") << "\n";
+        rotor();
+    }
+
+    void rotor() {
+        const std::string shaft = "at (0, 0, Twr2Shft); rotate y -ShftTilt; at (OverHang, 0, 0)";
+        const std::string spin = on("GenDOF") ? "psi" : "psi0 + Omega0 * t";
+        const std::string gen_inertia = "GenIner * GBRatio^2";
+        std::string rotor_name = flexible_blades() ? "hub" : "rotor";
+        std::string rotor_parent = "nacelle", rotor_steps = shaft + "; rotate x " + spin;
+        if (on("DrTrDOF")) {
+            out_ << "# The generator side of the drivetrain (its inertia seen from the low-speed "
+                    "shaft)\n# and the rotor, twisted by drtr against the drivetrain spring.\n";
+            out_ << "rigid gen_shaft { mass = 0; inertia = (" << gen_inertia << ", 0, 0) }\n";
+            out_ << "joint nacelle -> gen_shaft { " << shaft << "; rotate x " << spin << " }\n";
+            rotor_parent = "gen_shaft";
+            rotor_steps = "rotate x drtr";
+        }
+        const std::string axial = on("DrTrDOF") ? "" : " + " + gen_inertia;
+        if (flexible_blades()) {
+            out_ << "rigid hub { mass = HubMass; com = (HubCM, 0, 0); inertia = (HubIner" << axial
+                 << ", 0, 0) }\n";
+        } else {
+            const RigidProperties& r = *in_.rotor;
+            const bool offset = r.cm[1] != 0 || r.cm[2] != 0;
+            const bool products = r.inertia[3] != 0 || r.inertia[4] != 0 || r.inertia[5] != 0;
+            out_ << "rigid rotor {\n    mass = RotMass\n    com = (RotCMx, "
+                 << (offset ? "RotCMy, RotCMz" : "0, 0") << ")\n    inertia = (RotIxx" << axial
+                 << ", RotIyy, RotIzz" << (products ? ", RotIxy, RotIyz, RotIxz" : "") << ")\n}\n";
+        }
+        out_ << "joint " << rotor_parent << " -> " << rotor_name << " { " << rotor_steps << " }\n";
+        if (on("DrTrDOF")) out_ << "spring drtr stiffness DTTorSpr damping DTTorDmp\n";
+        if (!flexible_blades()) return;
+        for (int k = 1; k <= d_.blades; ++k) {
+            const std::string n = std::to_string(k);
+            std::string modes;
+            for (const auto& mode : blade_modes)
+                if (on(mode[0]))
+                    modes += (modes.empty() ? "" : ", ") + std::string(mode[1]) + " -> " +
+                             blade_dof(k, mode[1]);
+            out_ << "flexible blade" << n << " {\n    beam "
+                 << mbd_string(in_.blade_paths[static_cast<std::size_t>(k - 1)])
+                 << " elastodyn_blade {\n        length = TipRad - HubRad\n        modes = ("
+                 << modes << ")\n        stations = " << d_.blade_nodes << "\n    }\n}\n";
+            std::string steps;
+            if (k > 1) steps = "rotate x " + mbd_number(360.0 * (k - 1) / d_.blades) + " deg; ";
+            steps += "rotate y PreCone" + n + "; at (0, 0, HubRad)";
+            // ElastoDyn pitches a blade about its -z axis (towards feather).
+            if (v("BlPitch" + n) != 0) steps += "; rotate z -BlPitch" + n;
+            out_ << "joint hub -> blade" << n << " { " << steps << " }\n";
+            if (v("TipMass" + n) != 0)
+                out_ << "rigid tip_mass" << n << " { mass = TipMass" << n << " }\njoint blade" << n
+                     << ".tip -> tip_mass" << n << "\n";
+        }
+    }
+
+    void loads() {
+        out_ << "\n# ---- loads\n";
+        const std::string rotor = flexible_blades() ? "hub" : "rotor";
+        const std::string gen = on("DrTrDOF") ? "gen_shaft" : rotor;
+        out_ << "force  on " << rotor << " in " << rotor << " = (thrust, 0, 0)\n";
+        if (gen == rotor) {
+            out_ << "torque on " << rotor << " in " << rotor
+                 << " = (aero_torque - GBRatio * gen_torque, 0, 0)\n";
+        } else {
+            out_ << "torque on " << rotor << " in " << rotor << " = (aero_torque, 0, 0)\n";
+            out_ << "torque on " << gen << " in " << gen << " = (-GBRatio * gen_torque, 0, 0)\n";
+        }
+        out_ << "torque on nacelle in " << gen
+             << " = (GBRatio * gen_torque, 0, 0)     # the generator's reaction\n";
+        if (platform()) {
+            out_ << "force  on platform in ground = (hydro_fx, hydro_fy, hydro_fz)\n";
+            out_ << "torque on platform in ground = (hydro_mx, hydro_my, hydro_mz)\n";
+        }
+        for (const char* m : {"fa1", "ss1", "fa2", "ss2"})
+            if (tower_mode_on(m)) out_ << "genforce q_" << m << " = f_" << m << "\n";
+        if (on("YawDOF")) {
+            out_ << "torque on nacelle in nacelle = (0, 0, yaw_moment)\n";
+            out_ << "torque on tower in nacelle = (0, 0, -yaw_moment)\n";
+        }
+        for (int k = 1; k <= d_.blades; ++k)
+            for (const auto& mode : blade_modes)
+                if (on(mode[0]))
+                    out_ << "genforce " << blade_dof(k, mode[1]) << " = "
+                         << blade_dof(k, mode[1], "f_") << "\n";
+    }
+
+    void initial_state() {
+        std::vector<std::pair<std::string, std::string>> lines; // "name = value", comment
+        auto set = [&](const std::string& dof, const std::string& value, const std::string& doc) {
+            lines.emplace_back(dof + " = " + value, doc);
+        };
+        const char* platform_ic[6][3] = {
+            {"PtfmSgDOF", "surge", "PtfmSurge"}, {"PtfmSwDOF", "sway", "PtfmSway"},
+            {"PtfmHvDOF", "heave", "PtfmHeave"}, {"PtfmRDOF", "roll", "PtfmRoll"},
+            {"PtfmPDOF", "pitch", "PtfmPitch"},  {"PtfmYDOF", "yaw", "PtfmYaw"}};
+        for (int i = 0; i < 6; ++i)
+            if (on(platform_ic[i][0]))
+                set(platform_ic[i][1], mbd_number(v(platform_ic[i][2])) + (i >= 3 ? " deg" : ""),
+                    std::string(platform_ic[i][2]) + " (" + d_.where.at(lower(platform_ic[i][2])) +
+                        ")");
+        // ElastoDyn puts the tower-top displacement into the first mode of each direction.
+        if (on("TwFADOF1") || on("TwFADOF2"))
+            set(on("TwFADOF1") ? "q_fa1" : "q_fa2", mbd_number(v("TTDspFA")),
+                "TTDspFA (" + d_.where.at("ttdspfa") + ")");
+        if (on("TwSSDOF1") || on("TwSSDOF2"))
+            set(on("TwSSDOF1") ? "q_ss1" : "q_ss2", mbd_number(v("TTDspSS")),
+                "TTDspSS (" + d_.where.at("ttdspss") + "); OpenFAST's Q_TSS1 = -q_ss1");
+        if (on("YawDOF"))
+            set("nac_yaw", mbd_number(v("NacYaw")) + " deg",
+                "NacYaw (" + d_.where.at("nacyaw") + ")");
+        if (on("GenDOF")) {
+            set("psi", mbd_number(v("Azimuth") - v("AzimB1Up")) + " deg",
+                "Azimuth - AzimB1Up (" + d_.where.at("azimuth") + ")");
+            set("psi'", rpm(v("RotSpeed")),
+                "RotSpeed = " + mbd_number(v("RotSpeed")) + " rpm (" + d_.where.at("rotspeed") +
+                    ")");
+        }
+        if (flexible_blades() && (v("OoPDefl") != 0 || v("IPDefl") != 0)) {
+            diags_.warning(diag::Kind::NotSupported, {d_.ed, 0, 0},
+                           "OoPDefl and IPDefl are set as the tip deflections of the first flap "
+                           "and edge modes, without ElastoDyn's correction for pitch and twist");
+            for (int k = 1; k <= d_.blades; ++k) {
+                if (on("FlapDOF1") && v("OoPDefl") != 0)
+                    set(blade_dof(k, "flap1"), mbd_number(v("OoPDefl")), "OoPDefl");
+                if (on("EdgeDOF") && v("IPDefl") != 0)
+                    set(blade_dof(k, "edge1"), mbd_number(v("IPDefl")), "IPDefl");
+            }
+        }
+        if (lines.empty()) return;
+        out_ << "\n# ---- initial conditions of the deck (`yamsc sim` starts here; --ic "
+                "overrides)\n";
+        out_ << "initial {\n";
+        for (const auto& [assignment, doc] : lines)
+            out_ << "    " << pad(assignment, 28) << "# " << doc << "\n";
+        out_ << "}\n";
+        if (on("GenDOF") && v("RotSpeed") != 0)
+            out_ << "linearize { psi' = " << rpm(v("RotSpeed"))
+                 << " }   # `yamsc lin` and `sim --linear` about the rotor speed\n";
+    }
+
+    static std::string lower(std::string s) {
+        for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return s;
+    }
+
+    void outputs() {
+        out_ << "\n# ---- OpenFAST channels (names, signs and units of OpenFAST's outputs)\n";
+        const char* platform_out[6][4] = {{"PtfmSgDOF", "PtfmSurge", "surge", "m"},
+                                          {"PtfmSwDOF", "PtfmSway", "sway", "m"},
+                                          {"PtfmHvDOF", "PtfmHeave", "heave", "m"},
+                                          {"PtfmRDOF", "PtfmRoll", "roll * 180 / pi", "deg"},
+                                          {"PtfmPDOF", "PtfmPitch", "pitch * 180 / pi", "deg"},
+                                          {"PtfmYDOF", "PtfmYaw", "yaw * 180 / pi", "deg"}};
+        for (const auto& p : platform_out)
+            if (on(p[0])) output(p[1], p[2], p[3]);
+        if (on("TwFADOF1")) output("Q_TFA1", "q_fa1", "m");
+        if (on("TwSSDOF1")) output("Q_TSS1", "-q_ss1", "m");
+        if (on("TwFADOF2")) output("Q_TFA2", "q_fa2", "m");
+        if (on("TwSSDOF2")) output("Q_TSS2", "-q_ss2", "m");
+        if (on("YawDOF")) output("NacYaw", "nac_yaw * 180 / pi", "deg");
+        const std::string offset = v("AzimB1Up") != 0 ? " + AzimB1Up * 180 / pi" : "";
+        if (on("GenDOF")) {
+            const std::string azimuth = on("DrTrDOF") ? "(psi + drtr)" : "psi";
+            const std::string speed = on("DrTrDOF") ? "(psi' + drtr')" : "psi'";
+            output("Azimuth", azimuth + " * 180 / pi" + offset, "deg");
+            output("RotSpeed", speed + " * 30 / pi", "rpm");
+            output("GenSpeed", "GBRatio * psi' * 30 / pi", "rpm");
+        } else {
+            output("Azimuth",
+                   "(psi0 + Omega0 * t" + std::string(on("DrTrDOF") ? " + drtr" : "") +
+                       ") * 180 / pi" + offset,
+                   "deg");
+        }
+        if (on("DrTrDOF")) output("Q_DrTr", "drtr", "rad");
+        for (int k = 1; k <= d_.blades; ++k)
+            for (const auto& mode : blade_modes)
+                if (on(mode[0]))
+                    output("Q_B" + std::to_string(k) + mode[2], blade_dof(k, mode[1]), "m");
+    }
+    void output(const std::string& name, const std::string& value, const std::string& unit) {
+        out_ << pad("output " + name + " = " + value, 50) << "# [" << unit << "]\n";
+    }
+
+    const OpenFastModelInput& in_;
+    const OpenFastDeck& d_;
+    diag::Diagnostics& diags_;
+    std::ostringstream out_;
+};
+
+} // namespace
+
+std::string mbd_number(double v) {
+    if (v == 0) return "0";
+    char buffer[64];
+    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, v);
+    if (error != std::errc()) return "0";
+    std::string s(buffer, end);
+    return s;
+}
+
+std::string mbd_string(const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (c == '\n' || c == '\r') continue;
+        out += c;
+    }
+    return out + "\"";
+}
+
+std::string openfast_model_text(const OpenFastModelInput& in, diag::Diagnostics& diags) {
+    return Writer(in, diags).text();
+}
+
+} // namespace yamsc::driver

@@ -1,0 +1,33 @@
+#pragma once
+// The `.mbd` text of an ElastoDyn turbine (docs/openfast.md): a template model whose
+// bodies, joints and DOFs follow ElastoDyn's flags and whose loads are inputs.
+#include "driver/openfast_deck.hpp"
+#include "driver/openfast_rotor.hpp"
+
+#include <map>
+#include <optional>
+#include <string>
+
+namespace yamsc::driver {
+
+struct OpenFastModelInput {
+    const OpenFastDeck* deck = nullptr;
+    std::map<std::string, bool> dofs; ///< ElastoDyn flag -> on, after --dofs
+    std::string name;                 ///< the model's name
+    std::string source;               ///< how the deck was given, for the header comment
+    std::string tower_path;           ///< the tower file as the model names it
+    std::vector<std::string> blade_paths;
+    std::optional<RigidProperties> rotor; ///< when the blades are rigid
+    std::optional<RigidProperties> tower; ///< when the tower is rigid
+};
+
+/// The model text. Warnings about approximated initial conditions go to `diags`.
+std::string openfast_model_text(const OpenFastModelInput& in, diag::Diagnostics& diags);
+
+/// `v` in the fewest digits that read back exactly, in the model language's syntax.
+std::string mbd_number(double v);
+
+/// A string literal of the model language.
+std::string mbd_string(const std::string& text);
+
+} // namespace yamsc::driver

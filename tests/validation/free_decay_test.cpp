@@ -1,0 +1,135 @@
+// The paper's free-decay cases (sections 4.5 and 4.6) against OpenFAST: models written
+// by `yamsc from-openfast` from the reference decks, simulated with the nonlinear
+// generated code and with the linear model, compared with OpenFAST's outputs.
+// Targets (issue 5): mean relative error, normalised by the reference's range, under
+// 1 % (nonlinear) and 1.5 % (linear) on every DOF channel, R^2 above 0.99. The numbers
+// measured are much better (docs/validation.md); the tight bounds below catch a
+// regression long before the targets would.
+#include "driver/svg_plot.hpp"
+#include "validation_support.hpp"
+
+#include <yamsc/atomic_file.hpp>
+
+#include <fstream>
+#include <regex>
+
+using namespace validation;
+using yamsc::driver::ChannelScore;
+using yamsc::driver::Comparison;
+using yamsc::driver::Table;
+
+namespace {
+
+struct Bounds {
+    double nonlinear, linear; // mean relative error, fraction
+};
+
+/// Compares, checks, and records the scores for the report.
+Comparison check_case(const Case& c, const Table& sim, bool linear, const Bounds& measured) {
+    const Table reference = yamsc::driver::read_table(reference_csv(c));
+    const Comparison cmp = yamsc::driver::compare_tables(sim, reference);
+    const std::string report = c.model + (linear ? " linear\n" : " nonlinear\n") +
+                               yamsc::driver::format_comparison(cmp, reference_csv(c));
+    MESSAGE(report);
+    CHECK(cmp.missing.empty());
+    for (const std::string& channel : c.channels) {
+        CAPTURE(channel);
+        const ChannelScore* s = nullptr;
+        for (const ChannelScore& x : cmp.channels)
+            if (x.name == channel) s = &x;
+        REQUIRE(s);
+        CHECK(s->samples == static_cast<std::size_t>(c.tmax / 0.01 + 1.5));
+        CHECK(s->mean_rel_error < (linear ? 0.015 : 0.01)); // the targets of issue 5
+        CHECK(s->r2 > 0.99);
+        // What yamsc achieves today (docs/validation.md), with a little room.
+        CHECK(s->mean_rel_error < (linear ? measured.linear : measured.nonlinear));
+        CHECK(s->r2 > (linear ? 0.9995 : 0.99999));
+    }
+    return cmp;
+}
+
+/// OpenFAST, the nonlinear and the linear simulation of each channel, one panel each.
+void plot(const Case& c, const Table& nonlinear, const Table& linear) {
+    const Table reference = yamsc::driver::read_table(reference_csv(c));
+    std::vector<yamsc::driver::PlotPanel> panels;
+    for (const std::string& channel : c.channels) {
+        yamsc::driver::PlotPanel p;
+        p.y_label = channel;
+        const int n = nonlinear.find(channel), l = linear.find(channel),
+                  r = reference.find(channel);
+        REQUIRE((n > 0 && l > 0 && r > 0));
+        p.series.push_back({"yamsc, nonlinear", nonlinear.data[0],
+                            nonlinear.data[static_cast<std::size_t>(n)], false});
+        p.series.push_back(
+            {"yamsc, linear", linear.data[0], linear.data[static_cast<std::size_t>(l)], false});
+        p.series.push_back(
+            {"OpenFAST", reference.data[0], reference.data[static_cast<std::size_t>(r)], true});
+        panels.push_back(std::move(p));
+        // The differences, too small to see above.
+        yamsc::driver::PlotPanel e;
+        e.y_label = "yamsc - OpenFAST, " + channel;
+        for (const Table* sim : {&nonlinear, &linear}) {
+            const int j = sim->find(channel);
+            std::vector<double> diff;
+            for (std::size_t i = 0; i < reference.rows(); ++i)
+                diff.push_back(yamsc::driver::interpolate(sim->data[0],
+                                                          sim->data[static_cast<std::size_t>(j)],
+                                                          reference.data[0][i]) -
+                               reference.data[static_cast<std::size_t>(r)][i]);
+            e.series.push_back({sim == &nonlinear ? "yamsc, nonlinear" : "yamsc, linear",
+                                reference.data[0], diff, false});
+        }
+        panels.push_back(std::move(e));
+    }
+    yamsc::driver::PlotOptions o;
+    o.panel_height = 150;
+    o.title = "Free decay: " + c.folder + " (yamsc vs OpenFAST)";
+    yamsc::runtime::write_file_atomically(work_dir + "/" + c.model + ".svg",
+                                          yamsc::driver::svg_plot(panels, o));
+}
+
+std::vector<double> frequencies(const std::string& text) {
+    // "linear model about ...; modes [Hz]: 0.100658 0.799966"
+    std::vector<double> f;
+    const auto at = text.find("modes [Hz]:");
+    REQUIRE(at != std::string::npos);
+    std::istringstream in(text.substr(at + 11, text.find('\n', at) - at - 11));
+    for (double v; in >> v;) f.push_back(v);
+    return f;
+}
+
+} // namespace
+
+TEST_CASE("land-based 3 DOF (tower FA1, SS1, generator azimuth at 10 rpm) agrees with OpenFAST") {
+    convert(land_case);
+    std::string log;
+    const Table nonlinear = simulate(land_case, false);
+    const Table linear = simulate(land_case, true, &log);
+    check_case(land_case, nonlinear, false, {0.001, 0.003});
+    check_case(land_case, linear, true, {0.001, 0.003});
+    // Tower fore-aft and side-side, split by the gyroscopic coupling of the rotor.
+    const std::vector<double> f = frequencies(log);
+    REQUIRE(f.size() == 2);
+    CHECK(f[0] == doctest::Approx(0.4550).epsilon(0.002));
+    CHECK(f[1] == doctest::Approx(0.4681).epsilon(0.002));
+    plot(land_case, nonlinear, linear);
+}
+
+TEST_CASE("floating 3 DOF (surge, pitch, tower FA1) agrees with OpenFAST; linear frequencies") {
+    convert(floating_case);
+    std::string log;
+    const Table nonlinear = simulate(floating_case, false);
+    const Table linear = simulate(floating_case, true, &log);
+    check_case(floating_case, nonlinear, false, {0.001, 0.007});
+    check_case(floating_case, linear, true, {0.001, 0.007});
+    // The paper: 0.099 Hz (pitch) and 0.799 Hz (tower); OpenFAST's linearization 0.095 and
+    // 0.795 Hz. yamsc: 0.1007 and 0.8000 Hz (the nonlinear time series, which matches
+    // OpenFAST's to 0.02 %, has the pitch frequency of yamsc's linear model, not 0.095).
+    const std::vector<double> f = frequencies(log);
+    REQUIRE(f.size() == 2);
+    CHECK(f[0] == doctest::Approx(0.099).epsilon(0.025));
+    CHECK(f[1] == doctest::Approx(0.799).epsilon(0.002));
+    CHECK(f[0] == doctest::Approx(0.1007).epsilon(0.001));
+    CHECK(f[1] == doctest::Approx(0.8000).epsilon(0.001));
+    plot(floating_case, nonlinear, linear);
+}

@@ -1,0 +1,69 @@
+#pragma once
+// Shared by the validation tests: the reference decks, running yamsc's commands in
+// process, and reading numbers out of their text.
+#include "driver/channels.hpp"
+#include "driver/commands.hpp"
+#include "driver/compare.hpp"
+
+#include <doctest/doctest.h>
+
+#include <sstream>
+#include <string>
+#include <sys/stat.h>
+
+namespace validation {
+
+inline const std::string reference_dir = std::string(YAMSC_SHARED_DIR) + "/data/reference";
+inline const std::string work_dir = std::string(YAMSC_TEST_BINARY_DIR) + "/validation";
+
+/// One of the paper's free-decay cases with its OpenFAST reference.
+struct Case {
+    std::string folder; // under data/reference
+    std::string model;  // the model's name (file work_dir/<model>.mbd)
+    double tmax;
+    std::vector<std::string> channels; // DOF channels that must agree
+};
+
+inline const Case land_case{
+    "land_3dof_F0T2N0S1", "land_3dof", 4.0, {"Q_TFA1_[m]", "Q_TSS1_[m]", "Azimuth_[deg]"}};
+inline const Case floating_case{"floating_3dof_F2T1RNA",
+                                "floating_3dof",
+                                7.0,
+                                {"PtfmSurge_[m]", "PtfmPitch_[deg]", "Q_TFA1_[m]"}};
+
+inline std::string model_path(const Case& c) {
+    return work_dir + "/" + c.model + ".mbd";
+}
+inline std::string reference_csv(const Case& c) {
+    return reference_dir + "/" + c.folder + "/openfast_reference.csv";
+}
+
+/// `yamsc from-openfast <case>/Main_Spar_ED.fst -o <work>/<model>.mbd`, in process.
+inline std::string convert(const Case& c, std::vector<std::pair<std::string, bool>> dofs = {}) {
+    ::mkdir(work_dir.c_str(), 0755);
+    yamsc::driver::FromOpenFastOptions o;
+    o.deck = reference_dir + "/" + c.folder + "/Main_Spar_ED.fst";
+    o.output = model_path(c);
+    o.dofs = std::move(dofs);
+    std::ostringstream out, err;
+    REQUIRE_MESSAGE(yamsc::driver::from_openfast(o, out, err) == 0, err.str());
+    return out.str() + err.str();
+}
+
+/// `yamsc sim <model> --channels openfast [--linear] -o csv`: the table written.
+inline yamsc::driver::Table simulate(const Case& c, bool linear, std::string* log = nullptr) {
+    yamsc::driver::SimOptions o;
+    o.model = model_path(c);
+    o.tmax = c.tmax;
+    o.dt = 0.01;
+    o.channels = "openfast";
+    o.linear = linear;
+    o.verbose = linear; // prints the linear model's frequencies
+    o.output = work_dir + "/" + c.model + (linear ? "_linear" : "") + ".csv";
+    std::ostringstream out, err;
+    REQUIRE_MESSAGE(yamsc::driver::sim(o, out, err) == 0, err.str());
+    if (log) *log = out.str();
+    return yamsc::driver::read_table(o.output);
+}
+
+} // namespace validation
