@@ -3,7 +3,8 @@
 // data file it read, so it changes exactly when they do; the depfile names the
 // outputs, the model and those data files (spaces escaped); the bytes do not
 // depend on the working directory, the output folder or the file times; and no
-// temporary file is left behind, whether the run succeeds or fails.
+// temporary file is left behind, whether the run succeeds or fails. Inputs that
+// are not files (a folder, /dev/zero) are errors too.
 #include <doctest/doctest.h>
 
 #include <cstdint>
@@ -199,4 +200,16 @@ TEST_CASE("no temporary file is left behind, and a failed write leaves no output
     CHECK(slurp(work + "/never.hpp").empty());
     CHECK(temporaries(work).empty());
     CHECK(temporaries(source_dir + "/tests/bad").empty());
+}
+
+TEST_CASE("a folder or an endless file as the model is an error, not a hang") {
+    fresh_dir(work);
+    CHECK(yamsc(work, "check " + quoted(work)) == 1);
+    CHECK(slurp(work + "/stderr.txt").find("it is a folder") != std::string::npos);
+    // /dev/zero never ends: reading stops at the largest input any reader accepts.
+    CHECK(yamsc(work, "check /dev/zero") == 1);
+    CHECK(slurp(work + "/stderr.txt").find("'/dev/zero' is larger than 256 MiB") !=
+          std::string::npos);
+    CHECK(yamsc(work, "/dev/zero -o never.cpp") == 1);
+    CHECK(slurp(work + "/never.cpp").empty());
 }
