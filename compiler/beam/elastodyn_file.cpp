@@ -8,39 +8,6 @@ namespace yamsc::beam {
 
 namespace {
 
-struct Token {
-    std::string text; // quotes removed
-    int col = 0;      // 1-based column of its first character
-};
-
-/// Blank-separated tokens; "..." and '...' are single tokens (file names with blanks).
-std::vector<Token> tokenize(std::string_view line) {
-    std::vector<Token> out;
-    std::size_t i = 0;
-    while (i < line.size()) {
-        if (std::isspace(static_cast<unsigned char>(line[i])) || line[i] == ',') {
-            ++i;
-            continue;
-        }
-        Token t;
-        t.col = static_cast<int>(i) + 1;
-        if (line[i] == '"' || line[i] == '\'') {
-            const char quote = line[i++];
-            const std::size_t end = std::min(line.find(quote, i), line.size());
-            t.text = std::string(line.substr(i, end - i));
-            i = end + 1;
-        } else {
-            const std::size_t begin = i;
-            while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i])) &&
-                   line[i] != ',')
-                ++i;
-            t.text = std::string(line.substr(begin, i - begin));
-        }
-        out.push_back(std::move(t));
-    }
-    return out;
-}
-
 bool same_key(std::string_view a, std::string_view b) {
     if (a.size() != b.size()) return false;
     for (std::size_t i = 0; i < a.size(); ++i)
@@ -56,6 +23,34 @@ bool is_separator(const std::string& token) {
 }
 
 } // namespace
+
+std::vector<Token> tokenize(std::string_view line) {
+    std::vector<Token> out;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        if (std::isspace(static_cast<unsigned char>(line[i])) || line[i] == ',') {
+            ++i;
+            continue;
+        }
+        Token t;
+        t.col = static_cast<int>(i) + 1;
+        if (line[i] == '"' || line[i] == '\'') {
+            const char quote = line[i++];
+            const std::size_t end = std::min(line.find(quote, i), line.size());
+            t.text = std::string(line.substr(i, end - i));
+            t.quoted = true;
+            i = end + 1;
+        } else {
+            const std::size_t begin = i;
+            while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i])) &&
+                   line[i] != ',')
+                ++i;
+            t.text = std::string(line.substr(begin, i - begin));
+        }
+        out.push_back(std::move(t));
+    }
+    return out;
+}
 
 std::optional<double> parse_number(std::string_view token) {
     std::string text(token);

@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace yamsc::beam {
@@ -54,6 +55,17 @@ private:
     std::shared_ptr<const diag::SourceFile> file_;
     std::vector<Entry> entries_;
 };
+
+/// A blank- or comma-separated token of an ElastoDyn line; "..." and '...' are one
+/// token (file names with blanks), without the quotes.
+struct Token {
+    std::string text;
+    int col = 0; // 1-based column of its first character
+    bool quoted = false;
+};
+
+/// The tokens of one line.
+std::vector<Token> tokenize(std::string_view line);
 
 /// Parses a whole token as a number (Fortran 'D' exponents accepted).
 std::optional<double> parse_number(std::string_view token);

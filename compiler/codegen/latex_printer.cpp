@@ -39,45 +39,6 @@ std::string subscript_part(const std::string& part) {
     return escape_text(part);
 }
 
-/// f(x) for numbers (an argument that expanded to a constant).
-double apply(TapeFunction f, double x, double y) {
-    switch (f) {
-    case TapeFunction::sin:
-        return std::sin(x);
-    case TapeFunction::cos:
-        return std::cos(x);
-    case TapeFunction::tan:
-        return std::tan(x);
-    case TapeFunction::asin:
-        return std::asin(x);
-    case TapeFunction::acos:
-        return std::acos(x);
-    case TapeFunction::atan:
-        return std::atan(x);
-    case TapeFunction::atan2:
-        return std::atan2(x, y);
-    case TapeFunction::sinh:
-        return std::sinh(x);
-    case TapeFunction::cosh:
-        return std::cosh(x);
-    case TapeFunction::tanh:
-        return std::tanh(x);
-    case TapeFunction::asinh:
-        return std::asinh(x);
-    case TapeFunction::acosh:
-        return std::acosh(x);
-    case TapeFunction::atanh:
-        return std::atanh(x);
-    case TapeFunction::exp:
-        return std::exp(x);
-    case TapeFunction::log:
-        return std::log(x);
-    case TapeFunction::abs:
-        return std::fabs(x);
-    }
-    return std::nan("");
-}
-
 const char* function_command(TapeFunction f) {
     switch (f) {
     case TapeFunction::sin:
@@ -294,7 +255,7 @@ Expander::Poly Expander::compute(TapeId node) {
         }
         if (constant) {
             auto value = [](const Poly& p) { return p.empty() ? 0.0 : p.begin()->second; };
-            const double v = apply(f, value(args[0]), args.size() > 1 ? value(args[1]) : 0.0);
+            const double v = evaluate(f, value(args[0]), args.size() > 1 ? value(args[1]) : 0.0);
             if (std::isfinite(v)) return v == 0 ? Poly{} : Poly{{Monomial{}, v}};
         }
         std::string inner;

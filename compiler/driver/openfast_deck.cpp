@@ -32,39 +32,8 @@ std::string canonical(const std::string& key) {
     return out;
 }
 
-struct Token {
-    std::string text;
-    int col = 0;
-    bool quoted = false;
-};
-
-std::vector<Token> tokenize(std::string_view line) {
-    std::vector<Token> out;
-    std::size_t i = 0;
-    while (i < line.size()) {
-        if (std::isspace(static_cast<unsigned char>(line[i])) || line[i] == ',') {
-            ++i;
-            continue;
-        }
-        Token t;
-        t.col = static_cast<int>(i) + 1;
-        if (line[i] == '"' || line[i] == '\'') {
-            const char quote = line[i++];
-            const std::size_t end = std::min(line.find(quote, i), line.size());
-            t.text = std::string(line.substr(i, end - i));
-            t.quoted = true;
-            i = end + 1;
-        } else {
-            const std::size_t begin = i;
-            while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i])) &&
-                   line[i] != ',')
-                ++i;
-            t.text = std::string(line.substr(begin, i - begin));
-        }
-        out.push_back(std::move(t));
-    }
-    return out;
-}
+using beam::Token;
+using beam::tokenize;
 
 bool is_key(const Token& t) {
     if (t.quoted || t.text.empty() || !std::isalpha(static_cast<unsigned char>(t.text[0])))

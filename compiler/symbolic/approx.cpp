@@ -35,45 +35,6 @@ std::vector<std::vector<int>> monomials_up_to(std::size_t n, int order) {
     return out;
 }
 
-/// f(x) for a number x, as generated code would compute it.
-double apply(TapeFunction f, double x) {
-    switch (f) {
-    case TapeFunction::sin:
-        return std::sin(x);
-    case TapeFunction::cos:
-        return std::cos(x);
-    case TapeFunction::tan:
-        return std::tan(x);
-    case TapeFunction::asin:
-        return std::asin(x);
-    case TapeFunction::acos:
-        return std::acos(x);
-    case TapeFunction::atan:
-        return std::atan(x);
-    case TapeFunction::sinh:
-        return std::sinh(x);
-    case TapeFunction::cosh:
-        return std::cosh(x);
-    case TapeFunction::tanh:
-        return std::tanh(x);
-    case TapeFunction::asinh:
-        return std::asinh(x);
-    case TapeFunction::acosh:
-        return std::acosh(x);
-    case TapeFunction::atanh:
-        return std::atanh(x);
-    case TapeFunction::exp:
-        return std::exp(x);
-    case TapeFunction::log:
-        return std::log(x);
-    case TapeFunction::abs:
-        return std::fabs(x);
-    case TapeFunction::atan2:
-        break;
-    }
-    return std::nan("");
-}
-
 bool is_whole(double x) {
     return x >= 0 && x <= 64 && std::floor(x) == x;
 }
@@ -176,7 +137,7 @@ TapeId TaylorExpansion::call(TapeFunction f, TapeId argument) {
     // At a number (the usual expansion point 0) the value is a number: sin(0) = 0
     // must vanish, not stay a call.
     if (tape_->kind(argument) == TapeKind::number) {
-        const double v = apply(f, tape_->value(argument));
+        const double v = evaluate(f, tape_->value(argument));
         if (std::isfinite(v)) return tape_->number(v);
     }
     return tape_->call(f, {argument});

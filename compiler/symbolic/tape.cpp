@@ -594,4 +594,42 @@ TapeId ForwardDerivative::operator()(TapeId root) {
     return done_.at(root);
 }
 
+double evaluate(TapeFunction f, double x, double y) {
+    switch (f) {
+    case TapeFunction::sin:
+        return std::sin(x);
+    case TapeFunction::cos:
+        return std::cos(x);
+    case TapeFunction::tan:
+        return std::tan(x);
+    case TapeFunction::asin:
+        return std::asin(x);
+    case TapeFunction::acos:
+        return std::acos(x);
+    case TapeFunction::atan:
+        return std::atan(x);
+    case TapeFunction::atan2:
+        return std::atan2(x, y);
+    case TapeFunction::sinh:
+        return std::sinh(x);
+    case TapeFunction::cosh:
+        return std::cosh(x);
+    case TapeFunction::tanh:
+        return std::tanh(x);
+    case TapeFunction::asinh:
+        return std::asinh(x);
+    case TapeFunction::acosh:
+        return std::acosh(x);
+    case TapeFunction::atanh:
+        return std::atanh(x);
+    case TapeFunction::exp:
+        return std::exp(x);
+    case TapeFunction::log:
+        return std::log(x);
+    case TapeFunction::abs:
+        return std::fabs(x);
+    }
+    return std::nan("");
+}
+
 } // namespace yamsc::symbolic

@@ -51,6 +51,9 @@ enum class TapeFunction : std::uint8_t {
     abs,
 };
 
+/// f(x) (f(x, y) for atan2) for numbers, as the generated code computes it.
+double evaluate(TapeFunction f, double x, double y = 0.0);
+
 /// An operand with its weight: the coefficient of a term of a sum, the exponent
 /// of a factor of a product, 1 for the operands of power and call nodes.
 struct TapeTerm {
