@@ -111,7 +111,8 @@ def time_yamsc(exe: str, model: str, output: str, runs: int, timeout: float, row
     row.yamsc_s, row.yamsc_runs, row.yamsc_status = statistics.median(seconds), runs, "ok"
     median_run = stages[seconds.index(sorted(seconds)[len(seconds) // 2])]
     derived = median_run.get("derived the equations of motion")
-    jacobians = median_run.get("derived the Jacobians")
+    jacobians = median_run.get("derived the Jacobians",
+                               median_run.get("derived the tangent (directional derivatives)"))
     if derived is not None and jacobians is not None:
         row.derive_s, row.jacobians_s = derived, jacobians - derived
         row.codegen_s = max(0.0, sorted(seconds)[len(seconds) // 2] - jacobians)

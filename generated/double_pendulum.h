@@ -26,7 +26,9 @@
 //   y[1] "z_tip" "tip height [m]"
 //   y[2] "v_tip" "horizontal tip velocity [m/s]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
+// Operations per call, worst case: the code is straight-line (loops of fixed
+// length only), so every call does exactly these (the LDL^T solves of rhs and
+// rhs_jacobian and the four rhs calls of rk4_step included):
 //   mass_matrix      3 adds, 12 muls, 0 divs, 2 calls
 //   forcing          16 adds, 36 muls, 0 divs, 4 calls
 //   jacobians        26 adds, 85 muls, 0 divs, 4 calls
@@ -37,6 +39,7 @@
 //   state_space      60 adds, 146 muls, 15 divs, 4 calls
 //   output_matrices  12 adds, 22 muls, 0 divs, 4 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step         118 adds, 229 muls, 13 divs, 16 calls
 
 #ifndef double_pendulum_YAMSC_GENERATED_H
 #define double_pendulum_YAMSC_GENERATED_H
@@ -47,6 +50,9 @@ extern "C" {
 
 enum { double_pendulum_nq = 2, double_pendulum_nu = 2, double_pendulum_np = 7, double_pendulum_ny = 3 };
 
+// The floating-point type of every argument and parameter (--real).
+typedef double double_pendulum_real;
+
 extern const char* const double_pendulum_model_name;
 extern const char* const double_pendulum_dof_names[2];
 extern const char* const double_pendulum_input_names[2];
@@ -56,43 +62,45 @@ extern const char* const double_pendulum_output_names[3];
 // The parameters; double_pendulum_default_params() gives their defaults (NaN: no
 // default, set it before use).
 typedef struct double_pendulum_params {
-    double m1; // "point masses at the link ends [kg]"
-    double m2; // "point masses at the link ends [kg]"
-    double L1; // "link lengths [m]"
-    double L2; // "link lengths [m]"
-    double g; // "acceleration of gravity [m/s^2]"
-    double k; // "elbow spring stiffness [N m/rad]"
-    double c; // "elbow damping [N m s/rad]"
+    double_pendulum_real m1; // "point masses at the link ends [kg]"
+    double_pendulum_real m2; // "point masses at the link ends [kg]"
+    double_pendulum_real L1; // "link lengths [m]"
+    double_pendulum_real L2; // "link lengths [m]"
+    double_pendulum_real g; // "acceleration of gravity [m/s^2]"
+    double_pendulum_real k; // "elbow spring stiffness [N m/rad]"
+    double_pendulum_real c; // "elbow damping [N m s/rad]"
 } double_pendulum_params;
 
 double_pendulum_params double_pendulum_default_params(void);
 // The parameters as an array of np values, in declaration order, and back.
-void double_pendulum_params_to_array(const double_pendulum_params* p, double* a);
-double_pendulum_params double_pendulum_params_from_array(const double* a);
+void double_pendulum_params_to_array(const double_pendulum_params* p, double_pendulum_real* a);
+double_pendulum_params double_pendulum_params_from_array(const double_pendulum_real* a);
 
 // M(q) q'' = F(q, q', u, t); u may be NULL when nu == 0.
 // M(q) when it depends on q and p only
-void double_pendulum_mass_matrix(const double* q, const double_pendulum_params* p, double* M);
+void double_pendulum_mass_matrix(const double_pendulum_real* q, const double_pendulum_params* p, double_pendulum_real* M);
 // M(q) of M q'' = F (symmetric, row-major)
-void double_pendulum_mass_matrix_tu(double t, const double* q, const double* u, const double_pendulum_params* p, double* M);
+void double_pendulum_mass_matrix_tu(double_pendulum_real t, const double_pendulum_real* q, const double_pendulum_real* u, const double_pendulum_params* p, double_pendulum_real* M);
 // F(q, q', u, t) of M q'' = F
-void double_pendulum_forcing(double t, const double* q, const double* qd, const double* u, const double_pendulum_params* p, double* F);
+void double_pendulum_forcing(double_pendulum_real t, const double_pendulum_real* q, const double_pendulum_real* qd, const double_pendulum_real* u, const double_pendulum_params* p, double_pendulum_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
-void double_pendulum_jacobians(double t, const double* q, const double* qd, const double* u, const double_pendulum_params* p, double* dF_dq, double* dF_dqd, double* dF_du);
+void double_pendulum_jacobians(double_pendulum_real t, const double_pendulum_real* q, const double_pendulum_real* qd, const double_pendulum_real* u, const double_pendulum_params* p, double_pendulum_real* dF_dq, double_pendulum_real* dF_dqd, double_pendulum_real* dF_du);
 // the model's outputs y(q, q', u, t)
-void double_pendulum_outputs(double t, const double* q, const double* qd, const double* u, const double_pendulum_params* p, double* y);
+void double_pendulum_outputs(double_pendulum_real t, const double_pendulum_real* q, const double_pendulum_real* qd, const double_pendulum_real* u, const double_pendulum_params* p, double_pendulum_real* y);
 // x' = [q', M^-1 F] for x = [q, q']
-void double_pendulum_rhs(double t, const double* x, const double* u, const double_pendulum_params* p, double* xdot);
+void double_pendulum_rhs(double_pendulum_real t, const double_pendulum_real* x, const double_pendulum_real* u, const double_pendulum_params* p, double_pendulum_real* xdot);
 // d(rhs)/dx, 2nq x 2nq, row-major
-void double_pendulum_rhs_jacobian(double t, const double* x, const double* u, const double_pendulum_params* p, double* J);
+void double_pendulum_rhs_jacobian(double_pendulum_real t, const double_pendulum_real* x, const double_pendulum_real* u, const double_pendulum_params* p, double_pendulum_real* J);
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
-void double_pendulum_linear(const double* q0, const double* qd0, const double* u0, const double_pendulum_params* p, double* M0, double* C0, double* K0, double* Q0);
+void double_pendulum_linear(const double_pendulum_real* q0, const double_pendulum_real* qd0, const double_pendulum_real* u0, const double_pendulum_params* p, double_pendulum_real* M0, double_pendulum_real* C0, double_pendulum_real* K0, double_pendulum_real* Q0);
 // x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
-void double_pendulum_state_space(const double* q0, const double* qd0, const double* u0, const double_pendulum_params* p, double* A, double* B);
+void double_pendulum_state_space(const double_pendulum_real* q0, const double_pendulum_real* qd0, const double_pendulum_real* u0, const double_pendulum_params* p, double_pendulum_real* A, double_pendulum_real* B);
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
-void double_pendulum_output_matrices(const double* q0, const double* qd0, const double* u0, const double_pendulum_params* p, double* C, double* D);
+void double_pendulum_output_matrices(const double_pendulum_real* q0, const double_pendulum_real* qd0, const double_pendulum_real* u0, const double_pendulum_params* p, double_pendulum_real* C, double_pendulum_real* D);
 // the model's operating point (no linearize block: zeros)
-void double_pendulum_operating_point(const double_pendulum_params* p, double* q0, double* qd0, double* u0);
+void double_pendulum_operating_point(const double_pendulum_params* p, double_pendulum_real* q0, double_pendulum_real* qd0, double_pendulum_real* u0);
+// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)
+void double_pendulum_rk4_step(double_pendulum_real t, double_pendulum_real h, double_pendulum_real* x, const double_pendulum_real* u, const double_pendulum_params* p);
 
 #ifdef __cplusplus
 }

@@ -23,7 +23,9 @@
 //   y[0] "z_G" "height of the centre of mass [m]"
 //   y[1] "spin_rate" "spin rate [rad/s]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
+// Operations per call, worst case: the code is straight-line (loops of fixed
+// length only), so every call does exactly these (the LDL^T solves of rhs and
+// rhs_jacobian and the four rhs calls of rk4_step included):
 //   mass_matrix      7 adds, 33 muls, 0 divs, 4 calls
 //   forcing          18 adds, 54 muls, 0 divs, 4 calls
 //   jacobians        73 adds, 234 muls, 0 divs, 4 calls
@@ -34,6 +36,7 @@
 //   state_space      147 adds, 386 muls, 24 divs, 4 calls
 //   output_matrices  0 adds, 1 muls, 0 divs, 1 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step         184 adds, 435 muls, 25 divs, 16 calls
 
 #ifndef heavy_top_YAMSC_GENERATED_H
 #define heavy_top_YAMSC_GENERATED_H
@@ -44,6 +47,9 @@ extern "C" {
 
 enum { heavy_top_nq = 3, heavy_top_nu = 0, heavy_top_np = 5, heavy_top_ny = 2 };
 
+// The floating-point type of every argument and parameter (--real).
+typedef double heavy_top_real;
+
 extern const char* const heavy_top_model_name;
 extern const char* const heavy_top_dof_names[3];
 extern const char* const heavy_top_input_names[1];
@@ -53,41 +59,43 @@ extern const char* const heavy_top_output_names[2];
 // The parameters; heavy_top_default_params() gives their defaults (NaN: no
 // default, set it before use).
 typedef struct heavy_top_params {
-    double m; // "mass [kg]"
-    double l; // "distance from the tip to the centre of mass [m]"
-    double A; // "transverse moment of inertia about the centre of mass [kg m^2]"
-    double C; // "axial moment of inertia [kg m^2]"
-    double g; // "acceleration of gravity [m/s^2]"
+    heavy_top_real m; // "mass [kg]"
+    heavy_top_real l; // "distance from the tip to the centre of mass [m]"
+    heavy_top_real A; // "transverse moment of inertia about the centre of mass [kg m^2]"
+    heavy_top_real C; // "axial moment of inertia [kg m^2]"
+    heavy_top_real g; // "acceleration of gravity [m/s^2]"
 } heavy_top_params;
 
 heavy_top_params heavy_top_default_params(void);
 // The parameters as an array of np values, in declaration order, and back.
-void heavy_top_params_to_array(const heavy_top_params* p, double* a);
-heavy_top_params heavy_top_params_from_array(const double* a);
+void heavy_top_params_to_array(const heavy_top_params* p, heavy_top_real* a);
+heavy_top_params heavy_top_params_from_array(const heavy_top_real* a);
 
 // M(q) q'' = F(q, q', u, t); u may be NULL when nu == 0.
 // M(q) when it depends on q and p only
-void heavy_top_mass_matrix(const double* q, const heavy_top_params* p, double* M);
+void heavy_top_mass_matrix(const heavy_top_real* q, const heavy_top_params* p, heavy_top_real* M);
 // M(q) of M q'' = F (symmetric, row-major)
-void heavy_top_mass_matrix_tu(double t, const double* q, const double* u, const heavy_top_params* p, double* M);
+void heavy_top_mass_matrix_tu(heavy_top_real t, const heavy_top_real* q, const heavy_top_real* u, const heavy_top_params* p, heavy_top_real* M);
 // F(q, q', u, t) of M q'' = F
-void heavy_top_forcing(double t, const double* q, const double* qd, const double* u, const heavy_top_params* p, double* F);
+void heavy_top_forcing(heavy_top_real t, const heavy_top_real* q, const heavy_top_real* qd, const heavy_top_real* u, const heavy_top_params* p, heavy_top_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
-void heavy_top_jacobians(double t, const double* q, const double* qd, const double* u, const heavy_top_params* p, double* dF_dq, double* dF_dqd, double* dF_du);
+void heavy_top_jacobians(heavy_top_real t, const heavy_top_real* q, const heavy_top_real* qd, const heavy_top_real* u, const heavy_top_params* p, heavy_top_real* dF_dq, heavy_top_real* dF_dqd, heavy_top_real* dF_du);
 // the model's outputs y(q, q', u, t)
-void heavy_top_outputs(double t, const double* q, const double* qd, const double* u, const heavy_top_params* p, double* y);
+void heavy_top_outputs(heavy_top_real t, const heavy_top_real* q, const heavy_top_real* qd, const heavy_top_real* u, const heavy_top_params* p, heavy_top_real* y);
 // x' = [q', M^-1 F] for x = [q, q']
-void heavy_top_rhs(double t, const double* x, const double* u, const heavy_top_params* p, double* xdot);
+void heavy_top_rhs(heavy_top_real t, const heavy_top_real* x, const heavy_top_real* u, const heavy_top_params* p, heavy_top_real* xdot);
 // d(rhs)/dx, 2nq x 2nq, row-major
-void heavy_top_rhs_jacobian(double t, const double* x, const double* u, const heavy_top_params* p, double* J);
+void heavy_top_rhs_jacobian(heavy_top_real t, const heavy_top_real* x, const heavy_top_real* u, const heavy_top_params* p, heavy_top_real* J);
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
-void heavy_top_linear(const double* q0, const double* qd0, const double* u0, const heavy_top_params* p, double* M0, double* C0, double* K0, double* Q0);
+void heavy_top_linear(const heavy_top_real* q0, const heavy_top_real* qd0, const heavy_top_real* u0, const heavy_top_params* p, heavy_top_real* M0, heavy_top_real* C0, heavy_top_real* K0, heavy_top_real* Q0);
 // x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
-void heavy_top_state_space(const double* q0, const double* qd0, const double* u0, const heavy_top_params* p, double* A, double* B);
+void heavy_top_state_space(const heavy_top_real* q0, const heavy_top_real* qd0, const heavy_top_real* u0, const heavy_top_params* p, heavy_top_real* A, heavy_top_real* B);
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
-void heavy_top_output_matrices(const double* q0, const double* qd0, const double* u0, const heavy_top_params* p, double* C, double* D);
+void heavy_top_output_matrices(const heavy_top_real* q0, const heavy_top_real* qd0, const heavy_top_real* u0, const heavy_top_params* p, heavy_top_real* C, heavy_top_real* D);
 // the model's operating point (no linearize block: zeros)
-void heavy_top_operating_point(const heavy_top_params* p, double* q0, double* qd0, double* u0);
+void heavy_top_operating_point(const heavy_top_params* p, heavy_top_real* q0, heavy_top_real* qd0, heavy_top_real* u0);
+// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)
+void heavy_top_rk4_step(heavy_top_real t, heavy_top_real h, heavy_top_real* x, const heavy_top_real* u, const heavy_top_params* p);
 
 #ifdef __cplusplus
 }

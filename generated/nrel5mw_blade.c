@@ -23,7 +23,9 @@
 //   y[0] "tip_flap" "tip out-of-plane deflection (shapes are 1 at the tip) [m]"
 //   y[1] "tip_edge" "tip in-plane deflection [m]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
+// Operations per call, worst case: the code is straight-line (loops of fixed
+// length only), so every call does exactly these (the LDL^T solves of rhs and
+// rhs_jacobian and the four rhs calls of rk4_step included):
 //   mass_matrix      0 adds, 0 muls, 0 divs, 0 calls
 //   forcing          30 adds, 51 muls, 0 divs, 0 calls
 //   jacobians        14 adds, 17 muls, 0 divs, 0 calls
@@ -34,6 +36,7 @@
 //   state_space      72 adds, 79 muls, 30 divs, 0 calls
 //   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step         204 adds, 291 muls, 25 divs, 0 calls
 
 #include "nrel5mw_blade.h"
 
@@ -87,13 +90,13 @@ nrel5mw_blade_params nrel5mw_blade_default_params(void) {
     return p;
 }
 
-void nrel5mw_blade_params_to_array(const nrel5mw_blade_params* p, double* a) {
+void nrel5mw_blade_params_to_array(const nrel5mw_blade_params* p, nrel5mw_blade_real* a) {
     a[0] = p->Omega;
     a[1] = p->r_hub;
     a[2] = p->L_B;
 }
 
-nrel5mw_blade_params nrel5mw_blade_params_from_array(const double* a) {
+nrel5mw_blade_params nrel5mw_blade_params_from_array(const nrel5mw_blade_real* a) {
     nrel5mw_blade_params p = nrel5mw_blade_default_params();
     p.Omega = a[0];
     p.r_hub = a[1];
@@ -102,7 +105,7 @@ nrel5mw_blade_params nrel5mw_blade_params_from_array(const double* a) {
 }
 
 // M(q) of M q'' = F (symmetric, row-major)
-void nrel5mw_blade_mass_matrix(const double* q, const nrel5mw_blade_params* p, double* M) {
+void nrel5mw_blade_mass_matrix(const nrel5mw_blade_real* q, const nrel5mw_blade_params* p, nrel5mw_blade_real* M) {
     (void)q;
     (void)p;
     M[0] = 907.8170320078789;
@@ -117,14 +120,14 @@ void nrel5mw_blade_mass_matrix(const double* q, const nrel5mw_blade_params* p, d
 }
 
 // M(q) of M q'' = F (symmetric, row-major)
-void nrel5mw_blade_mass_matrix_tu(double t, const double* q, const double* u, const nrel5mw_blade_params* p, double* M) {
+void nrel5mw_blade_mass_matrix_tu(nrel5mw_blade_real t, const nrel5mw_blade_real* q, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* M) {
     (void)t;
     (void)u;
     nrel5mw_blade_mass_matrix(q, p, M);
 }
 
 // F(q, q', u, t) of M q'' = F
-void nrel5mw_blade_forcing(double t, const double* q, const double* qd, const double* u, const nrel5mw_blade_params* p, double* F) {
+void nrel5mw_blade_forcing(nrel5mw_blade_real t, const nrel5mw_blade_real* q, const nrel5mw_blade_real* qd, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* F) {
     (void)t;
     F[0] = 2.741630858313867e-14*q[1] + 1459.2938998123207*q[2] + u[0] - 16750.41764816945*q[0] - 37.23775760189005*qd[0] - 4e-17*p->Omega*p->Omega*p->r_hub*(8.190691833029857e+17*q[0] + 2.1193775878721972e+16*q[1] + 2.774742437436333e+17*q[2]) - 1e-14*p->Omega*p->Omega*(1.5460947015388272e+17*q[0] + 2.110450910191564e+16*q[1] + 8.467935078235902e+16*q[2]);
     F[1] = 2.741630858313867e-14*q[0] + 2.317440676728672e-14*q[2] + u[1] - 67129.3125250449*q[1] - 92.99490883515328*qd[1] - 4e-17*p->Omega*p->Omega*p->r_hub*(2.1193775878721972e+16*q[0] + 1.1316767189762511e+18*q[1] + 8.818928796399701e+16*q[2]) - 2e-15*p->Omega*p->Omega*(1.0552254550957819e+17*q[0] + 3.024824166685602e+17*q[1] + 8044373192394559.0*q[2]);
@@ -132,7 +135,7 @@ void nrel5mw_blade_forcing(double t, const double* q, const double* qd, const do
 }
 
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
-void nrel5mw_blade_jacobians(double t, const double* q, const double* qd, const double* u, const nrel5mw_blade_params* p, double* dF_dq, double* dF_dqd, double* dF_du) {
+void nrel5mw_blade_jacobians(nrel5mw_blade_real t, const nrel5mw_blade_real* q, const nrel5mw_blade_real* qd, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* dF_dq, nrel5mw_blade_real* dF_dqd, nrel5mw_blade_real* dF_du) {
     (void)t;
     (void)q;
     (void)qd;
@@ -171,7 +174,7 @@ void nrel5mw_blade_jacobians(double t, const double* q, const double* qd, const 
 }
 
 // the model's outputs y(q, q', u, t)
-void nrel5mw_blade_outputs(double t, const double* q, const double* qd, const double* u, const nrel5mw_blade_params* p, double* y) {
+void nrel5mw_blade_outputs(nrel5mw_blade_real t, const nrel5mw_blade_real* q, const nrel5mw_blade_real* qd, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* y) {
     (void)t;
     (void)qd;
     (void)u;
@@ -181,7 +184,7 @@ void nrel5mw_blade_outputs(double t, const double* q, const double* qd, const do
 }
 
 // x' = [q', M^-1 F] for x = [q, q']
-void nrel5mw_blade_rhs(double t, const double* x, const double* u, const nrel5mw_blade_params* p, double* xdot) {
+void nrel5mw_blade_rhs(nrel5mw_blade_real t, const nrel5mw_blade_real* x, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* xdot) {
     (void)t;
     double M[9];
     xdot[0] = x[3];
@@ -201,7 +204,7 @@ void nrel5mw_blade_rhs(double t, const double* x, const double* u, const nrel5mw
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
-void nrel5mw_blade_rhs_jacobian(double t, const double* x, const double* u, const nrel5mw_blade_params* p, double* J) {
+void nrel5mw_blade_rhs_jacobian(nrel5mw_blade_real t, const nrel5mw_blade_real* x, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* J) {
     (void)t;
     double M[9];
     double qdd[3];
@@ -260,7 +263,7 @@ void nrel5mw_blade_rhs_jacobian(double t, const double* x, const double* u, cons
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
-void nrel5mw_blade_linear(const double* q0, const double* qd0, const double* u0, const nrel5mw_blade_params* p, double* M0, double* C0, double* K0, double* Q0) {
+void nrel5mw_blade_linear(const nrel5mw_blade_real* q0, const nrel5mw_blade_real* qd0, const nrel5mw_blade_real* u0, const nrel5mw_blade_params* p, nrel5mw_blade_real* M0, nrel5mw_blade_real* C0, nrel5mw_blade_real* K0, nrel5mw_blade_real* Q0) {
     (void)q0;
     (void)qd0;
     (void)u0;
@@ -307,7 +310,7 @@ void nrel5mw_blade_linear(const double* q0, const double* qd0, const double* u0,
 }
 
 // x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
-void nrel5mw_blade_state_space(const double* q0, const double* qd0, const double* u0, const nrel5mw_blade_params* p, double* A, double* B) {
+void nrel5mw_blade_state_space(const nrel5mw_blade_real* q0, const nrel5mw_blade_real* qd0, const nrel5mw_blade_real* u0, const nrel5mw_blade_params* p, nrel5mw_blade_real* A, nrel5mw_blade_real* B) {
     (void)q0;
     (void)qd0;
     (void)u0;
@@ -382,7 +385,7 @@ void nrel5mw_blade_state_space(const double* q0, const double* qd0, const double
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
-void nrel5mw_blade_output_matrices(const double* q0, const double* qd0, const double* u0, const nrel5mw_blade_params* p, double* C, double* D) {
+void nrel5mw_blade_output_matrices(const nrel5mw_blade_real* q0, const nrel5mw_blade_real* qd0, const nrel5mw_blade_real* u0, const nrel5mw_blade_params* p, nrel5mw_blade_real* C, nrel5mw_blade_real* D) {
     (void)q0;
     (void)qd0;
     (void)u0;
@@ -408,7 +411,7 @@ void nrel5mw_blade_output_matrices(const double* q0, const double* qd0, const do
 }
 
 // the model's operating point (no linearize block: zeros)
-void nrel5mw_blade_operating_point(const nrel5mw_blade_params* p, double* q0, double* qd0, double* u0) {
+void nrel5mw_blade_operating_point(const nrel5mw_blade_params* p, nrel5mw_blade_real* q0, nrel5mw_blade_real* qd0, nrel5mw_blade_real* u0) {
     (void)p;
     q0[0] = 0.0;
     q0[1] = 0.0;
@@ -419,4 +422,20 @@ void nrel5mw_blade_operating_point(const nrel5mw_blade_params* p, double* q0, do
     u0[0] = 0.0;
     u0[1] = 0.0;
     u0[2] = 0.0;
+}
+
+// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)
+void nrel5mw_blade_rk4_step(nrel5mw_blade_real t, nrel5mw_blade_real h, nrel5mw_blade_real* x, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p) {
+    double k1[6], k2[6], k3[6], k4[6], stage[6];
+    const double half = 0.5*h;
+    const double sixth = h/6.0;
+    const double t_half = t + half;
+    nrel5mw_blade_rhs(t, x, u, p, k1);
+    for (int i = 0; i < 6; ++i) stage[i] = x[i] + half*k1[i];
+    nrel5mw_blade_rhs(t_half, stage, u, p, k2);
+    for (int i = 0; i < 6; ++i) stage[i] = x[i] + half*k2[i];
+    nrel5mw_blade_rhs(t_half, stage, u, p, k3);
+    for (int i = 0; i < 6; ++i) stage[i] = x[i] + h*k3[i];
+    nrel5mw_blade_rhs(t + h, stage, u, p, k4);
+    for (int i = 0; i < 6; ++i) x[i] += sixth*(k1[i] + 2.0*(k2[i] + k3[i]) + k4[i]);
 }

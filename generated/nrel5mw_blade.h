@@ -23,7 +23,9 @@
 //   y[0] "tip_flap" "tip out-of-plane deflection (shapes are 1 at the tip) [m]"
 //   y[1] "tip_edge" "tip in-plane deflection [m]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
+// Operations per call, worst case: the code is straight-line (loops of fixed
+// length only), so every call does exactly these (the LDL^T solves of rhs and
+// rhs_jacobian and the four rhs calls of rk4_step included):
 //   mass_matrix      0 adds, 0 muls, 0 divs, 0 calls
 //   forcing          30 adds, 51 muls, 0 divs, 0 calls
 //   jacobians        14 adds, 17 muls, 0 divs, 0 calls
@@ -34,6 +36,7 @@
 //   state_space      72 adds, 79 muls, 30 divs, 0 calls
 //   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step         204 adds, 291 muls, 25 divs, 0 calls
 
 #ifndef nrel5mw_blade_YAMSC_GENERATED_H
 #define nrel5mw_blade_YAMSC_GENERATED_H
@@ -44,6 +47,9 @@ extern "C" {
 
 enum { nrel5mw_blade_nq = 3, nrel5mw_blade_nu = 3, nrel5mw_blade_np = 3, nrel5mw_blade_ny = 2 };
 
+// The floating-point type of every argument and parameter (--real).
+typedef double nrel5mw_blade_real;
+
 extern const char* const nrel5mw_blade_model_name;
 extern const char* const nrel5mw_blade_dof_names[3];
 extern const char* const nrel5mw_blade_input_names[3];
@@ -53,39 +59,41 @@ extern const char* const nrel5mw_blade_output_names[2];
 // The parameters; nrel5mw_blade_default_params() gives their defaults (NaN: no
 // default, set it before use).
 typedef struct nrel5mw_blade_params {
-    double Omega; // "rotor speed [rad/s]"
-    double r_hub; // "hub radius: blade root from the rotor axis [m]"
-    double L_B; // "blade length, root to tip [m]"
+    nrel5mw_blade_real Omega; // "rotor speed [rad/s]"
+    nrel5mw_blade_real r_hub; // "hub radius: blade root from the rotor axis [m]"
+    nrel5mw_blade_real L_B; // "blade length, root to tip [m]"
 } nrel5mw_blade_params;
 
 nrel5mw_blade_params nrel5mw_blade_default_params(void);
 // The parameters as an array of np values, in declaration order, and back.
-void nrel5mw_blade_params_to_array(const nrel5mw_blade_params* p, double* a);
-nrel5mw_blade_params nrel5mw_blade_params_from_array(const double* a);
+void nrel5mw_blade_params_to_array(const nrel5mw_blade_params* p, nrel5mw_blade_real* a);
+nrel5mw_blade_params nrel5mw_blade_params_from_array(const nrel5mw_blade_real* a);
 
 // M(q) q'' = F(q, q', u, t); u may be NULL when nu == 0.
 // M(q) when it depends on q and p only
-void nrel5mw_blade_mass_matrix(const double* q, const nrel5mw_blade_params* p, double* M);
+void nrel5mw_blade_mass_matrix(const nrel5mw_blade_real* q, const nrel5mw_blade_params* p, nrel5mw_blade_real* M);
 // M(q) of M q'' = F (symmetric, row-major)
-void nrel5mw_blade_mass_matrix_tu(double t, const double* q, const double* u, const nrel5mw_blade_params* p, double* M);
+void nrel5mw_blade_mass_matrix_tu(nrel5mw_blade_real t, const nrel5mw_blade_real* q, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* M);
 // F(q, q', u, t) of M q'' = F
-void nrel5mw_blade_forcing(double t, const double* q, const double* qd, const double* u, const nrel5mw_blade_params* p, double* F);
+void nrel5mw_blade_forcing(nrel5mw_blade_real t, const nrel5mw_blade_real* q, const nrel5mw_blade_real* qd, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
-void nrel5mw_blade_jacobians(double t, const double* q, const double* qd, const double* u, const nrel5mw_blade_params* p, double* dF_dq, double* dF_dqd, double* dF_du);
+void nrel5mw_blade_jacobians(nrel5mw_blade_real t, const nrel5mw_blade_real* q, const nrel5mw_blade_real* qd, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* dF_dq, nrel5mw_blade_real* dF_dqd, nrel5mw_blade_real* dF_du);
 // the model's outputs y(q, q', u, t)
-void nrel5mw_blade_outputs(double t, const double* q, const double* qd, const double* u, const nrel5mw_blade_params* p, double* y);
+void nrel5mw_blade_outputs(nrel5mw_blade_real t, const nrel5mw_blade_real* q, const nrel5mw_blade_real* qd, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* y);
 // x' = [q', M^-1 F] for x = [q, q']
-void nrel5mw_blade_rhs(double t, const double* x, const double* u, const nrel5mw_blade_params* p, double* xdot);
+void nrel5mw_blade_rhs(nrel5mw_blade_real t, const nrel5mw_blade_real* x, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* xdot);
 // d(rhs)/dx, 2nq x 2nq, row-major
-void nrel5mw_blade_rhs_jacobian(double t, const double* x, const double* u, const nrel5mw_blade_params* p, double* J);
+void nrel5mw_blade_rhs_jacobian(nrel5mw_blade_real t, const nrel5mw_blade_real* x, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* J);
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
-void nrel5mw_blade_linear(const double* q0, const double* qd0, const double* u0, const nrel5mw_blade_params* p, double* M0, double* C0, double* K0, double* Q0);
+void nrel5mw_blade_linear(const nrel5mw_blade_real* q0, const nrel5mw_blade_real* qd0, const nrel5mw_blade_real* u0, const nrel5mw_blade_params* p, nrel5mw_blade_real* M0, nrel5mw_blade_real* C0, nrel5mw_blade_real* K0, nrel5mw_blade_real* Q0);
 // x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
-void nrel5mw_blade_state_space(const double* q0, const double* qd0, const double* u0, const nrel5mw_blade_params* p, double* A, double* B);
+void nrel5mw_blade_state_space(const nrel5mw_blade_real* q0, const nrel5mw_blade_real* qd0, const nrel5mw_blade_real* u0, const nrel5mw_blade_params* p, nrel5mw_blade_real* A, nrel5mw_blade_real* B);
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
-void nrel5mw_blade_output_matrices(const double* q0, const double* qd0, const double* u0, const nrel5mw_blade_params* p, double* C, double* D);
+void nrel5mw_blade_output_matrices(const nrel5mw_blade_real* q0, const nrel5mw_blade_real* qd0, const nrel5mw_blade_real* u0, const nrel5mw_blade_params* p, nrel5mw_blade_real* C, nrel5mw_blade_real* D);
 // the model's operating point (no linearize block: zeros)
-void nrel5mw_blade_operating_point(const nrel5mw_blade_params* p, double* q0, double* qd0, double* u0);
+void nrel5mw_blade_operating_point(const nrel5mw_blade_params* p, nrel5mw_blade_real* q0, nrel5mw_blade_real* qd0, nrel5mw_blade_real* u0);
+// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)
+void nrel5mw_blade_rk4_step(nrel5mw_blade_real t, nrel5mw_blade_real h, nrel5mw_blade_real* x, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p);
 
 #ifdef __cplusplus
 }

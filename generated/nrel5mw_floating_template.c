@@ -58,7 +58,9 @@
 //   y[4] "RotSpeed" "[rpm]"
 //   y[5] "GenSpeed" "[rpm]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
+// Operations per call, worst case: the code is straight-line (loops of fixed
+// length only), so every call does exactly these (the LDL^T solves of rhs and
+// rhs_jacobian and the four rhs calls of rk4_step included):
 //   mass_matrix      88 adds, 154 muls, 0 divs, 8 calls
 //   forcing          109 adds, 255 muls, 0 divs, 8 calls
 //   jacobians        301 adds, 829 muls, 0 divs, 8 calls
@@ -69,6 +71,7 @@
 //   state_space      776 adds, 1638 muls, 82 divs, 8 calls
 //   output_matrices  0 adds, 1 muls, 0 divs, 0 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step         842 adds, 1645 muls, 41 divs, 32 calls
 
 #include "nrel5mw_floating_template.h"
 
@@ -1417,7 +1420,7 @@ nrel5mw_floating_template_params nrel5mw_floating_template_default_params(void) 
     return p;
 }
 
-void nrel5mw_floating_template_params_to_array(const nrel5mw_floating_template_params* p, double* a) {
+void nrel5mw_floating_template_params_to_array(const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* a) {
     a[0] = p->Gravity;
     a[1] = p->TowerHt;
     a[2] = p->TowerBsHt;
@@ -1446,7 +1449,7 @@ void nrel5mw_floating_template_params_to_array(const nrel5mw_floating_template_p
     a[25] = p->RotIzz;
 }
 
-nrel5mw_floating_template_params nrel5mw_floating_template_params_from_array(const double* a) {
+nrel5mw_floating_template_params nrel5mw_floating_template_params_from_array(const nrel5mw_floating_template_real* a) {
     nrel5mw_floating_template_params p = nrel5mw_floating_template_default_params();
     p.Gravity = a[0];
     p.TowerHt = a[1];
@@ -1478,7 +1481,7 @@ nrel5mw_floating_template_params nrel5mw_floating_template_params_from_array(con
 }
 
 // M(q) of M q'' = F (symmetric, row-major)
-void nrel5mw_floating_template_mass_matrix(const double* q, const nrel5mw_floating_template_params* p, double* M) {
+void nrel5mw_floating_template_mass_matrix(const nrel5mw_floating_template_real* q, const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* M) {
     const double t0 = cos(q[1]);
     const double t1 = 0.028511726912336218*q[2];
     const double t2 = sin(t1);
@@ -1544,14 +1547,14 @@ void nrel5mw_floating_template_mass_matrix(const double* q, const nrel5mw_floati
 }
 
 // M(q) of M q'' = F (symmetric, row-major)
-void nrel5mw_floating_template_mass_matrix_tu(double t, const double* q, const double* u, const nrel5mw_floating_template_params* p, double* M) {
+void nrel5mw_floating_template_mass_matrix_tu(nrel5mw_floating_template_real t, const nrel5mw_floating_template_real* q, const nrel5mw_floating_template_real* u, const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* M) {
     (void)t;
     (void)u;
     nrel5mw_floating_template_mass_matrix(q, p, M);
 }
 
 // F(q, q', u, t) of M q'' = F
-void nrel5mw_floating_template_forcing(double t, const double* q, const double* qd, const double* u, const nrel5mw_floating_template_params* p, double* F) {
+void nrel5mw_floating_template_forcing(nrel5mw_floating_template_real t, const nrel5mw_floating_template_real* q, const nrel5mw_floating_template_real* qd, const nrel5mw_floating_template_real* u, const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* F) {
     (void)t;
     const double t0 = 0.028511726912336218*q[2];
     const double t1 = cos(t0);
@@ -1621,14 +1624,14 @@ void nrel5mw_floating_template_forcing(double t, const double* q, const double* 
 }
 
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
-void nrel5mw_floating_template_jacobians(double t, const double* q, const double* qd, const double* u, const nrel5mw_floating_template_params* p, double* dF_dq, double* dF_dqd, double* dF_du) {
+void nrel5mw_floating_template_jacobians(nrel5mw_floating_template_real t, const nrel5mw_floating_template_real* q, const nrel5mw_floating_template_real* qd, const nrel5mw_floating_template_real* u, const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* dF_dq, nrel5mw_floating_template_real* dF_dqd, nrel5mw_floating_template_real* dF_du) {
     double w[2];
     nrel5mw_floating_template_jacobians_part0(t, q, qd, u, p, dF_dq, dF_dqd, dF_du, w);
     nrel5mw_floating_template_jacobians_part1(t, q, qd, u, p, dF_dq, dF_dqd, dF_du, w);
 }
 
 // the model's outputs y(q, q', u, t)
-void nrel5mw_floating_template_outputs(double t, const double* q, const double* qd, const double* u, const nrel5mw_floating_template_params* p, double* y) {
+void nrel5mw_floating_template_outputs(nrel5mw_floating_template_real t, const nrel5mw_floating_template_real* q, const nrel5mw_floating_template_real* qd, const nrel5mw_floating_template_real* u, const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* y) {
     (void)t;
     (void)u;
     y[0] = q[0];
@@ -1640,7 +1643,7 @@ void nrel5mw_floating_template_outputs(double t, const double* q, const double* 
 }
 
 // x' = [q', M^-1 F] for x = [q, q']
-void nrel5mw_floating_template_rhs(double t, const double* x, const double* u, const nrel5mw_floating_template_params* p, double* xdot) {
+void nrel5mw_floating_template_rhs(nrel5mw_floating_template_real t, const nrel5mw_floating_template_real* x, const nrel5mw_floating_template_real* u, const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* xdot) {
     (void)t;
     double M[16];
     const double t0 = cos(x[1]);
@@ -1744,7 +1747,7 @@ void nrel5mw_floating_template_rhs(double t, const double* x, const double* u, c
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
-void nrel5mw_floating_template_rhs_jacobian(double t, const double* x, const double* u, const nrel5mw_floating_template_params* p, double* J) {
+void nrel5mw_floating_template_rhs_jacobian(nrel5mw_floating_template_real t, const nrel5mw_floating_template_real* x, const nrel5mw_floating_template_real* u, const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* J) {
     double M[16];
     double qdd[4];
     double w[69];
@@ -1756,7 +1759,7 @@ void nrel5mw_floating_template_rhs_jacobian(double t, const double* x, const dou
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
-void nrel5mw_floating_template_linear(const double* q0, const double* qd0, const double* u0, const nrel5mw_floating_template_params* p, double* M0, double* C0, double* K0, double* Q0) {
+void nrel5mw_floating_template_linear(const nrel5mw_floating_template_real* q0, const nrel5mw_floating_template_real* qd0, const nrel5mw_floating_template_real* u0, const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* M0, nrel5mw_floating_template_real* C0, nrel5mw_floating_template_real* K0, nrel5mw_floating_template_real* Q0) {
     double M[16];
     double qdd0[4];
     double w[70];
@@ -1767,7 +1770,7 @@ void nrel5mw_floating_template_linear(const double* q0, const double* qd0, const
 }
 
 // x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
-void nrel5mw_floating_template_state_space(const double* q0, const double* qd0, const double* u0, const nrel5mw_floating_template_params* p, double* A, double* B) {
+void nrel5mw_floating_template_state_space(const nrel5mw_floating_template_real* q0, const nrel5mw_floating_template_real* qd0, const nrel5mw_floating_template_real* u0, const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* A, nrel5mw_floating_template_real* B) {
     double M[16];
     double qdd0[4];
     double w[70];
@@ -1780,7 +1783,7 @@ void nrel5mw_floating_template_state_space(const double* q0, const double* qd0, 
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
-void nrel5mw_floating_template_output_matrices(const double* q0, const double* qd0, const double* u0, const nrel5mw_floating_template_params* p, double* C, double* D) {
+void nrel5mw_floating_template_output_matrices(const nrel5mw_floating_template_real* q0, const nrel5mw_floating_template_real* qd0, const nrel5mw_floating_template_real* u0, const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* C, nrel5mw_floating_template_real* D) {
     (void)q0;
     (void)qd0;
     (void)u0;
@@ -1895,7 +1898,7 @@ void nrel5mw_floating_template_output_matrices(const double* q0, const double* q
 }
 
 // the model's operating point (no linearize block: zeros)
-void nrel5mw_floating_template_operating_point(const nrel5mw_floating_template_params* p, double* q0, double* qd0, double* u0) {
+void nrel5mw_floating_template_operating_point(const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* q0, nrel5mw_floating_template_real* qd0, nrel5mw_floating_template_real* u0) {
     (void)p;
     q0[0] = 0.0;
     q0[1] = 0.0;
@@ -1915,4 +1918,20 @@ void nrel5mw_floating_template_operating_point(const nrel5mw_floating_template_p
     u0[7] = 0.0;
     u0[8] = 0.0;
     u0[9] = 0.0;
+}
+
+// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)
+void nrel5mw_floating_template_rk4_step(nrel5mw_floating_template_real t, nrel5mw_floating_template_real h, nrel5mw_floating_template_real* x, const nrel5mw_floating_template_real* u, const nrel5mw_floating_template_params* p) {
+    double k1[8], k2[8], k3[8], k4[8], stage[8];
+    const double half = 0.5*h;
+    const double sixth = h/6.0;
+    const double t_half = t + half;
+    nrel5mw_floating_template_rhs(t, x, u, p, k1);
+    for (int i = 0; i < 8; ++i) stage[i] = x[i] + half*k1[i];
+    nrel5mw_floating_template_rhs(t_half, stage, u, p, k2);
+    for (int i = 0; i < 8; ++i) stage[i] = x[i] + half*k2[i];
+    nrel5mw_floating_template_rhs(t_half, stage, u, p, k3);
+    for (int i = 0; i < 8; ++i) stage[i] = x[i] + h*k3[i];
+    nrel5mw_floating_template_rhs(t + h, stage, u, p, k4);
+    for (int i = 0; i < 8; ++i) x[i] += sixth*(k1[i] + 2.0*(k2[i] + k3[i]) + k4[i]);
 }

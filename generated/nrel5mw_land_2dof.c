@@ -31,7 +31,9 @@
 //   y[0] "tt_fa" "tower-top fore-aft displacement [m]"
 //   y[1] "rotor_speed" "[rad/s]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
+// Operations per call, worst case: the code is straight-line (loops of fixed
+// length only), so every call does exactly these (the LDL^T solves of rhs and
+// rhs_jacobian and the four rhs calls of rk4_step included):
 //   mass_matrix      16 adds, 36 muls, 0 divs, 4 calls
 //   forcing          30 adds, 88 muls, 0 divs, 4 calls
 //   jacobians        50 adds, 167 muls, 0 divs, 4 calls
@@ -42,6 +44,7 @@
 //   state_space      98 adds, 270 muls, 17 divs, 4 calls
 //   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step         206 adds, 489 muls, 13 divs, 16 calls
 
 #include "nrel5mw_land_2dof.h"
 
@@ -104,7 +107,7 @@ nrel5mw_land_2dof_params nrel5mw_land_2dof_default_params(void) {
     return p;
 }
 
-void nrel5mw_land_2dof_params_to_array(const nrel5mw_land_2dof_params* p, double* a) {
+void nrel5mw_land_2dof_params_to_array(const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* a) {
     a[0] = p->g;
     a[1] = p->L_T;
     a[2] = p->theta_t;
@@ -119,7 +122,7 @@ void nrel5mw_land_2dof_params_to_array(const nrel5mw_land_2dof_params* p, double
     a[11] = p->J_oR;
 }
 
-nrel5mw_land_2dof_params nrel5mw_land_2dof_params_from_array(const double* a) {
+nrel5mw_land_2dof_params nrel5mw_land_2dof_params_from_array(const nrel5mw_land_2dof_real* a) {
     nrel5mw_land_2dof_params p = nrel5mw_land_2dof_default_params();
     p.g = a[0];
     p.L_T = a[1];
@@ -137,7 +140,7 @@ nrel5mw_land_2dof_params nrel5mw_land_2dof_params_from_array(const double* a) {
 }
 
 // M(q) of M q'' = F (symmetric, row-major)
-void nrel5mw_land_2dof_mass_matrix(const double* q, const nrel5mw_land_2dof_params* p, double* M) {
+void nrel5mw_land_2dof_mass_matrix(const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* M) {
     const double t0 = 1.74496709999541e+30*q[0] - 9.260273972602776e+30*p->x_NG;
     const double t1 = q[0]*q[0];
     const double t2 = 1.1575342465753469e+33*p->z_NG + 1.739845015713223e+31*t1 + 6.250000000000012e+34;
@@ -156,14 +159,14 @@ void nrel5mw_land_2dof_mass_matrix(const double* q, const nrel5mw_land_2dof_para
 }
 
 // M(q) of M q'' = F (symmetric, row-major)
-void nrel5mw_land_2dof_mass_matrix_tu(double t, const double* q, const double* u, const nrel5mw_land_2dof_params* p, double* M) {
+void nrel5mw_land_2dof_mass_matrix_tu(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* M) {
     (void)t;
     (void)u;
     nrel5mw_land_2dof_mass_matrix(q, p, M);
 }
 
 // F(q, q', u, t) of M q'' = F
-void nrel5mw_land_2dof_forcing(double t, const double* q, const double* qd, const double* u, const nrel5mw_land_2dof_params* p, double* F) {
+void nrel5mw_land_2dof_forcing(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* qd, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* F) {
     (void)t;
     const double t0 = q[0]*qd[0]*qd[0];
     const double t1 = 1e+18*q[0]*p->g*p->M_N - p->M_N*(1.5030613745214768e+16*t0 - 1.852054794520555e+16*qd[0]*qd[0]*p->x_NG);
@@ -187,7 +190,7 @@ void nrel5mw_land_2dof_forcing(double t, const double* q, const double* qd, cons
 }
 
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
-void nrel5mw_land_2dof_jacobians(double t, const double* q, const double* qd, const double* u, const nrel5mw_land_2dof_params* p, double* dF_dq, double* dF_dqd, double* dF_du) {
+void nrel5mw_land_2dof_jacobians(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* qd, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* dF_dq, nrel5mw_land_2dof_real* dF_dqd, nrel5mw_land_2dof_real* dF_du) {
     (void)t;
     const double t0 = sin(p->theta_t);
     const double t1 = cos(p->theta_t);
@@ -234,7 +237,7 @@ void nrel5mw_land_2dof_jacobians(double t, const double* q, const double* qd, co
 }
 
 // the model's outputs y(q, q', u, t)
-void nrel5mw_land_2dof_outputs(double t, const double* q, const double* qd, const double* u, const nrel5mw_land_2dof_params* p, double* y) {
+void nrel5mw_land_2dof_outputs(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* qd, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* y) {
     (void)t;
     (void)u;
     (void)p;
@@ -243,7 +246,7 @@ void nrel5mw_land_2dof_outputs(double t, const double* q, const double* qd, cons
 }
 
 // x' = [q', M^-1 F] for x = [q, q']
-void nrel5mw_land_2dof_rhs(double t, const double* x, const double* u, const nrel5mw_land_2dof_params* p, double* xdot) {
+void nrel5mw_land_2dof_rhs(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* x, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* xdot) {
     (void)t;
     double M[4];
     const double t0 = 1.74496709999541e+30*x[0] - 9.260273972602776e+30*p->x_NG;
@@ -277,7 +280,7 @@ void nrel5mw_land_2dof_rhs(double t, const double* x, const double* u, const nre
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
-void nrel5mw_land_2dof_rhs_jacobian(double t, const double* x, const double* u, const nrel5mw_land_2dof_params* p, double* J) {
+void nrel5mw_land_2dof_rhs_jacobian(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* x, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* J) {
     (void)t;
     double M[4];
     double qdd[2];
@@ -343,7 +346,7 @@ void nrel5mw_land_2dof_rhs_jacobian(double t, const double* x, const double* u, 
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
-void nrel5mw_land_2dof_linear(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_2dof_params* p, double* M0, double* C0, double* K0, double* Q0) {
+void nrel5mw_land_2dof_linear(const nrel5mw_land_2dof_real* q0, const nrel5mw_land_2dof_real* qd0, const nrel5mw_land_2dof_real* u0, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* M0, nrel5mw_land_2dof_real* C0, nrel5mw_land_2dof_real* K0, nrel5mw_land_2dof_real* Q0) {
     double M[4];
     double qdd0[2];
     const double t0 = 1.74496709999541e+30*q0[0] - 9.260273972602776e+30*p->x_NG;
@@ -410,7 +413,7 @@ void nrel5mw_land_2dof_linear(const double* q0, const double* qd0, const double*
 }
 
 // x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
-void nrel5mw_land_2dof_state_space(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_2dof_params* p, double* A, double* B) {
+void nrel5mw_land_2dof_state_space(const nrel5mw_land_2dof_real* q0, const nrel5mw_land_2dof_real* qd0, const nrel5mw_land_2dof_real* u0, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* A, nrel5mw_land_2dof_real* B) {
     double M[4];
     double qdd0[2];
     const double t0 = 1.74496709999541e+30*q0[0] - 9.260273972602776e+30*p->x_NG;
@@ -488,7 +491,7 @@ void nrel5mw_land_2dof_state_space(const double* q0, const double* qd0, const do
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
-void nrel5mw_land_2dof_output_matrices(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_2dof_params* p, double* C, double* D) {
+void nrel5mw_land_2dof_output_matrices(const nrel5mw_land_2dof_real* q0, const nrel5mw_land_2dof_real* qd0, const nrel5mw_land_2dof_real* u0, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* C, nrel5mw_land_2dof_real* D) {
     (void)q0;
     (void)qd0;
     (void)u0;
@@ -510,7 +513,7 @@ void nrel5mw_land_2dof_output_matrices(const double* q0, const double* qd0, cons
 }
 
 // the model's operating point (no linearize block: zeros)
-void nrel5mw_land_2dof_operating_point(const nrel5mw_land_2dof_params* p, double* q0, double* qd0, double* u0) {
+void nrel5mw_land_2dof_operating_point(const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* q0, nrel5mw_land_2dof_real* qd0, nrel5mw_land_2dof_real* u0) {
     (void)p;
     q0[0] = 0.0;
     q0[1] = 0.0;
@@ -519,4 +522,20 @@ void nrel5mw_land_2dof_operating_point(const nrel5mw_land_2dof_params* p, double
     u0[0] = 0.0;
     u0[1] = 0.0;
     u0[2] = 0.0;
+}
+
+// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)
+void nrel5mw_land_2dof_rk4_step(nrel5mw_land_2dof_real t, nrel5mw_land_2dof_real h, nrel5mw_land_2dof_real* x, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p) {
+    double k1[4], k2[4], k3[4], k4[4], stage[4];
+    const double half = 0.5*h;
+    const double sixth = h/6.0;
+    const double t_half = t + half;
+    nrel5mw_land_2dof_rhs(t, x, u, p, k1);
+    for (int i = 0; i < 4; ++i) stage[i] = x[i] + half*k1[i];
+    nrel5mw_land_2dof_rhs(t_half, stage, u, p, k2);
+    for (int i = 0; i < 4; ++i) stage[i] = x[i] + half*k2[i];
+    nrel5mw_land_2dof_rhs(t_half, stage, u, p, k3);
+    for (int i = 0; i < 4; ++i) stage[i] = x[i] + h*k3[i];
+    nrel5mw_land_2dof_rhs(t + h, stage, u, p, k4);
+    for (int i = 0; i < 4; ++i) x[i] += sixth*(k1[i] + 2.0*(k2[i] + k3[i]) + k4[i]);
 }

@@ -31,7 +31,9 @@
 //   y[0] "tt_fa" "tower-top fore-aft displacement [m]"
 //   y[1] "rotor_speed" "[rad/s]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
+// Operations per call, worst case: the code is straight-line (loops of fixed
+// length only), so every call does exactly these (the LDL^T solves of rhs and
+// rhs_jacobian and the four rhs calls of rk4_step included):
 //   mass_matrix      16 adds, 36 muls, 0 divs, 4 calls
 //   forcing          30 adds, 88 muls, 0 divs, 4 calls
 //   jacobians        50 adds, 167 muls, 0 divs, 4 calls
@@ -42,6 +44,7 @@
 //   state_space      98 adds, 270 muls, 17 divs, 4 calls
 //   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step         206 adds, 489 muls, 13 divs, 16 calls
 
 #ifndef nrel5mw_land_2dof_YAMSC_GENERATED_H
 #define nrel5mw_land_2dof_YAMSC_GENERATED_H
@@ -52,6 +55,9 @@ extern "C" {
 
 enum { nrel5mw_land_2dof_nq = 2, nrel5mw_land_2dof_nu = 3, nrel5mw_land_2dof_np = 12, nrel5mw_land_2dof_ny = 2 };
 
+// The floating-point type of every argument and parameter (--real).
+typedef double nrel5mw_land_2dof_real;
+
 extern const char* const nrel5mw_land_2dof_model_name;
 extern const char* const nrel5mw_land_2dof_dof_names[2];
 extern const char* const nrel5mw_land_2dof_input_names[3];
@@ -61,48 +67,50 @@ extern const char* const nrel5mw_land_2dof_output_names[2];
 // The parameters; nrel5mw_land_2dof_default_params() gives their defaults (NaN: no
 // default, set it before use).
 typedef struct nrel5mw_land_2dof_params {
-    double g; // "acceleration of gravity [m/s^2]"
-    double L_T; // "tower length, ground to tower top [m]"
-    double theta_t; // "shaft tilt"
-    double M_N; // "nacelle mass [kg]"
-    double x_NG; // "nacelle centre of mass from the tower top [m]"
-    double z_NG; // "nacelle centre of mass from the tower top [m]"
-    double J_yN; // "nacelle inertia about y (fore-aft tilt) [kg m^2]"
-    double M_R; // "rotor mass, hub and blades [kg]"
-    double x_NR; // "rotor centre from the tower top [m]"
-    double z_NR; // "rotor centre from the tower top [m]"
-    double J_xR; // "rotor inertia about the shaft [kg m^2]"
-    double J_oR; // "rotor inertia about a diameter [kg m^2]"
+    nrel5mw_land_2dof_real g; // "acceleration of gravity [m/s^2]"
+    nrel5mw_land_2dof_real L_T; // "tower length, ground to tower top [m]"
+    nrel5mw_land_2dof_real theta_t; // "shaft tilt"
+    nrel5mw_land_2dof_real M_N; // "nacelle mass [kg]"
+    nrel5mw_land_2dof_real x_NG; // "nacelle centre of mass from the tower top [m]"
+    nrel5mw_land_2dof_real z_NG; // "nacelle centre of mass from the tower top [m]"
+    nrel5mw_land_2dof_real J_yN; // "nacelle inertia about y (fore-aft tilt) [kg m^2]"
+    nrel5mw_land_2dof_real M_R; // "rotor mass, hub and blades [kg]"
+    nrel5mw_land_2dof_real x_NR; // "rotor centre from the tower top [m]"
+    nrel5mw_land_2dof_real z_NR; // "rotor centre from the tower top [m]"
+    nrel5mw_land_2dof_real J_xR; // "rotor inertia about the shaft [kg m^2]"
+    nrel5mw_land_2dof_real J_oR; // "rotor inertia about a diameter [kg m^2]"
 } nrel5mw_land_2dof_params;
 
 nrel5mw_land_2dof_params nrel5mw_land_2dof_default_params(void);
 // The parameters as an array of np values, in declaration order, and back.
-void nrel5mw_land_2dof_params_to_array(const nrel5mw_land_2dof_params* p, double* a);
-nrel5mw_land_2dof_params nrel5mw_land_2dof_params_from_array(const double* a);
+void nrel5mw_land_2dof_params_to_array(const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* a);
+nrel5mw_land_2dof_params nrel5mw_land_2dof_params_from_array(const nrel5mw_land_2dof_real* a);
 
 // M(q) q'' = F(q, q', u, t); u may be NULL when nu == 0.
 // M(q) when it depends on q and p only
-void nrel5mw_land_2dof_mass_matrix(const double* q, const nrel5mw_land_2dof_params* p, double* M);
+void nrel5mw_land_2dof_mass_matrix(const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* M);
 // M(q) of M q'' = F (symmetric, row-major)
-void nrel5mw_land_2dof_mass_matrix_tu(double t, const double* q, const double* u, const nrel5mw_land_2dof_params* p, double* M);
+void nrel5mw_land_2dof_mass_matrix_tu(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* M);
 // F(q, q', u, t) of M q'' = F
-void nrel5mw_land_2dof_forcing(double t, const double* q, const double* qd, const double* u, const nrel5mw_land_2dof_params* p, double* F);
+void nrel5mw_land_2dof_forcing(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* qd, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
-void nrel5mw_land_2dof_jacobians(double t, const double* q, const double* qd, const double* u, const nrel5mw_land_2dof_params* p, double* dF_dq, double* dF_dqd, double* dF_du);
+void nrel5mw_land_2dof_jacobians(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* qd, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* dF_dq, nrel5mw_land_2dof_real* dF_dqd, nrel5mw_land_2dof_real* dF_du);
 // the model's outputs y(q, q', u, t)
-void nrel5mw_land_2dof_outputs(double t, const double* q, const double* qd, const double* u, const nrel5mw_land_2dof_params* p, double* y);
+void nrel5mw_land_2dof_outputs(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* qd, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* y);
 // x' = [q', M^-1 F] for x = [q, q']
-void nrel5mw_land_2dof_rhs(double t, const double* x, const double* u, const nrel5mw_land_2dof_params* p, double* xdot);
+void nrel5mw_land_2dof_rhs(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* x, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* xdot);
 // d(rhs)/dx, 2nq x 2nq, row-major
-void nrel5mw_land_2dof_rhs_jacobian(double t, const double* x, const double* u, const nrel5mw_land_2dof_params* p, double* J);
+void nrel5mw_land_2dof_rhs_jacobian(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* x, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* J);
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
-void nrel5mw_land_2dof_linear(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_2dof_params* p, double* M0, double* C0, double* K0, double* Q0);
+void nrel5mw_land_2dof_linear(const nrel5mw_land_2dof_real* q0, const nrel5mw_land_2dof_real* qd0, const nrel5mw_land_2dof_real* u0, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* M0, nrel5mw_land_2dof_real* C0, nrel5mw_land_2dof_real* K0, nrel5mw_land_2dof_real* Q0);
 // x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
-void nrel5mw_land_2dof_state_space(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_2dof_params* p, double* A, double* B);
+void nrel5mw_land_2dof_state_space(const nrel5mw_land_2dof_real* q0, const nrel5mw_land_2dof_real* qd0, const nrel5mw_land_2dof_real* u0, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* A, nrel5mw_land_2dof_real* B);
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
-void nrel5mw_land_2dof_output_matrices(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_2dof_params* p, double* C, double* D);
+void nrel5mw_land_2dof_output_matrices(const nrel5mw_land_2dof_real* q0, const nrel5mw_land_2dof_real* qd0, const nrel5mw_land_2dof_real* u0, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* C, nrel5mw_land_2dof_real* D);
 // the model's operating point (no linearize block: zeros)
-void nrel5mw_land_2dof_operating_point(const nrel5mw_land_2dof_params* p, double* q0, double* qd0, double* u0);
+void nrel5mw_land_2dof_operating_point(const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* q0, nrel5mw_land_2dof_real* qd0, nrel5mw_land_2dof_real* u0);
+// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)
+void nrel5mw_land_2dof_rk4_step(nrel5mw_land_2dof_real t, nrel5mw_land_2dof_real h, nrel5mw_land_2dof_real* x, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p);
 
 #ifdef __cplusplus
 }

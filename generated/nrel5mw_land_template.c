@@ -50,7 +50,9 @@
 //   y[5] "GenSpeed" "[rpm]"
 //   y[6] "Q_DrTr" "[rad]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
+// Operations per call, worst case: the code is straight-line (loops of fixed
+// length only), so every call does exactly these (the LDL^T solves of rhs and
+// rhs_jacobian and the four rhs calls of rk4_step included):
 //   mass_matrix      120 adds, 343 muls, 0 divs, 12 calls
 //   forcing          228 adds, 589 muls, 0 divs, 12 calls
 //   jacobians        1149 adds, 3384 muls, 0 divs, 12 calls
@@ -61,6 +63,7 @@
 //   state_space      1917 adds, 4831 muls, 95 divs, 12 calls
 //   output_matrices  0 adds, 1 muls, 0 divs, 0 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step         1472 adds, 3495 muls, 61 divs, 48 calls
 
 #include "nrel5mw_land_template.h"
 
@@ -3156,7 +3159,7 @@ nrel5mw_land_template_params nrel5mw_land_template_default_params(void) {
     return p;
 }
 
-void nrel5mw_land_template_params_to_array(const nrel5mw_land_template_params* p, double* a) {
+void nrel5mw_land_template_params_to_array(const nrel5mw_land_template_params* p, nrel5mw_land_template_real* a) {
     a[0] = p->Gravity;
     a[1] = p->TowerHt;
     a[2] = p->TowerBsHt;
@@ -3179,7 +3182,7 @@ void nrel5mw_land_template_params_to_array(const nrel5mw_land_template_params* p
     a[19] = p->RotIzz;
 }
 
-nrel5mw_land_template_params nrel5mw_land_template_params_from_array(const double* a) {
+nrel5mw_land_template_params nrel5mw_land_template_params_from_array(const nrel5mw_land_template_real* a) {
     nrel5mw_land_template_params p = nrel5mw_land_template_default_params();
     p.Gravity = a[0];
     p.TowerHt = a[1];
@@ -3205,7 +3208,7 @@ nrel5mw_land_template_params nrel5mw_land_template_params_from_array(const doubl
 }
 
 // M(q) of M q'' = F (symmetric, row-major)
-void nrel5mw_land_template_mass_matrix(const double* q, const nrel5mw_land_template_params* p, double* M) {
+void nrel5mw_land_template_mass_matrix(const nrel5mw_land_template_real* q, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* M) {
     const double t0 = cos(q[4]);
     const double t1 = sin(q[2]);
     const double t2 = sin(q[3]);
@@ -3299,14 +3302,14 @@ void nrel5mw_land_template_mass_matrix(const double* q, const nrel5mw_land_templ
 }
 
 // M(q) of M q'' = F (symmetric, row-major)
-void nrel5mw_land_template_mass_matrix_tu(double t, const double* q, const double* u, const nrel5mw_land_template_params* p, double* M) {
+void nrel5mw_land_template_mass_matrix_tu(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* M) {
     (void)t;
     (void)u;
     nrel5mw_land_template_mass_matrix(q, p, M);
 }
 
 // F(q, q', u, t) of M q'' = F
-void nrel5mw_land_template_forcing(double t, const double* q, const double* qd, const double* u, const nrel5mw_land_template_params* p, double* F) {
+void nrel5mw_land_template_forcing(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* qd, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* F) {
     (void)t;
     const double t0 = sin(q[2]);
     const double t1 = -p->ShftTilt;
@@ -3428,7 +3431,7 @@ void nrel5mw_land_template_forcing(double t, const double* q, const double* qd, 
 }
 
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
-void nrel5mw_land_template_jacobians(double t, const double* q, const double* qd, const double* u, const nrel5mw_land_template_params* p, double* dF_dq, double* dF_dqd, double* dF_du) {
+void nrel5mw_land_template_jacobians(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* qd, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* dF_dq, nrel5mw_land_template_real* dF_dqd, nrel5mw_land_template_real* dF_du) {
     double w[267];
     nrel5mw_land_template_jacobians_part0(t, q, qd, u, p, dF_dq, dF_dqd, dF_du, w);
     nrel5mw_land_template_jacobians_part1(t, q, qd, u, p, dF_dq, dF_dqd, dF_du, w);
@@ -3436,7 +3439,7 @@ void nrel5mw_land_template_jacobians(double t, const double* q, const double* qd
 }
 
 // the model's outputs y(q, q', u, t)
-void nrel5mw_land_template_outputs(double t, const double* q, const double* qd, const double* u, const nrel5mw_land_template_params* p, double* y) {
+void nrel5mw_land_template_outputs(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* qd, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* y) {
     (void)t;
     (void)u;
     y[0] = q[0];
@@ -3449,7 +3452,7 @@ void nrel5mw_land_template_outputs(double t, const double* q, const double* qd, 
 }
 
 // x' = [q', M^-1 F] for x = [q, q']
-void nrel5mw_land_template_rhs(double t, const double* x, const double* u, const nrel5mw_land_template_params* p, double* xdot) {
+void nrel5mw_land_template_rhs(nrel5mw_land_template_real t, const nrel5mw_land_template_real* x, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* xdot) {
     (void)t;
     double M[25];
     const double t0 = cos(x[4]);
@@ -3625,7 +3628,7 @@ void nrel5mw_land_template_rhs(double t, const double* x, const double* u, const
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
-void nrel5mw_land_template_rhs_jacobian(double t, const double* x, const double* u, const nrel5mw_land_template_params* p, double* J) {
+void nrel5mw_land_template_rhs_jacobian(nrel5mw_land_template_real t, const nrel5mw_land_template_real* x, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* J) {
     double M[25];
     double qdd[5];
     double w[375];
@@ -3640,7 +3643,7 @@ void nrel5mw_land_template_rhs_jacobian(double t, const double* x, const double*
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
-void nrel5mw_land_template_linear(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_template_params* p, double* M0, double* C0, double* K0, double* Q0) {
+void nrel5mw_land_template_linear(const nrel5mw_land_template_real* q0, const nrel5mw_land_template_real* qd0, const nrel5mw_land_template_real* u0, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* M0, nrel5mw_land_template_real* C0, nrel5mw_land_template_real* K0, nrel5mw_land_template_real* Q0) {
     double M[25];
     double qdd0[5];
     double w[381];
@@ -3654,7 +3657,7 @@ void nrel5mw_land_template_linear(const double* q0, const double* qd0, const dou
 }
 
 // x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
-void nrel5mw_land_template_state_space(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_template_params* p, double* A, double* B) {
+void nrel5mw_land_template_state_space(const nrel5mw_land_template_real* q0, const nrel5mw_land_template_real* qd0, const nrel5mw_land_template_real* u0, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* A, nrel5mw_land_template_real* B) {
     double M[25];
     double qdd0[5];
     double w[375];
@@ -3670,7 +3673,7 @@ void nrel5mw_land_template_state_space(const double* q0, const double* qd0, cons
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
-void nrel5mw_land_template_output_matrices(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_template_params* p, double* C, double* D) {
+void nrel5mw_land_template_output_matrices(const nrel5mw_land_template_real* q0, const nrel5mw_land_template_real* qd0, const nrel5mw_land_template_real* u0, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* C, nrel5mw_land_template_real* D) {
     (void)q0;
     (void)qd0;
     (void)u0;
@@ -3789,7 +3792,7 @@ void nrel5mw_land_template_output_matrices(const double* q0, const double* qd0, 
 }
 
 // the model's operating point (its linearize block)
-void nrel5mw_land_template_operating_point(const nrel5mw_land_template_params* p, double* q0, double* qd0, double* u0) {
+void nrel5mw_land_template_operating_point(const nrel5mw_land_template_params* p, nrel5mw_land_template_real* q0, nrel5mw_land_template_real* qd0, nrel5mw_land_template_real* u0) {
     (void)p;
     q0[0] = 0.0;
     q0[1] = 0.0;
@@ -3807,4 +3810,20 @@ void nrel5mw_land_template_operating_point(const nrel5mw_land_template_params* p
     u0[3] = 0.0;
     u0[4] = 0.0;
     u0[5] = 0.0;
+}
+
+// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)
+void nrel5mw_land_template_rk4_step(nrel5mw_land_template_real t, nrel5mw_land_template_real h, nrel5mw_land_template_real* x, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p) {
+    double k1[10], k2[10], k3[10], k4[10], stage[10];
+    const double half = 0.5*h;
+    const double sixth = h/6.0;
+    const double t_half = t + half;
+    nrel5mw_land_template_rhs(t, x, u, p, k1);
+    for (int i = 0; i < 10; ++i) stage[i] = x[i] + half*k1[i];
+    nrel5mw_land_template_rhs(t_half, stage, u, p, k2);
+    for (int i = 0; i < 10; ++i) stage[i] = x[i] + half*k2[i];
+    nrel5mw_land_template_rhs(t_half, stage, u, p, k3);
+    for (int i = 0; i < 10; ++i) stage[i] = x[i] + h*k3[i];
+    nrel5mw_land_template_rhs(t + h, stage, u, p, k4);
+    for (int i = 0; i < 10; ++i) x[i] += sixth*(k1[i] + 2.0*(k2[i] + k3[i]) + k4[i]);
 }

@@ -50,7 +50,9 @@
 //   y[5] "GenSpeed" "[rpm]"
 //   y[6] "Q_DrTr" "[rad]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
+// Operations per call, worst case: the code is straight-line (loops of fixed
+// length only), so every call does exactly these (the LDL^T solves of rhs and
+// rhs_jacobian and the four rhs calls of rk4_step included):
 //   mass_matrix      120 adds, 343 muls, 0 divs, 12 calls
 //   forcing          228 adds, 589 muls, 0 divs, 12 calls
 //   jacobians        1149 adds, 3384 muls, 0 divs, 12 calls
@@ -61,6 +63,7 @@
 //   state_space      1917 adds, 4831 muls, 95 divs, 12 calls
 //   output_matrices  0 adds, 1 muls, 0 divs, 0 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step         1472 adds, 3495 muls, 61 divs, 48 calls
 
 #ifndef nrel5mw_land_template_YAMSC_GENERATED_H
 #define nrel5mw_land_template_YAMSC_GENERATED_H
@@ -71,6 +74,9 @@ extern "C" {
 
 enum { nrel5mw_land_template_nq = 5, nrel5mw_land_template_nu = 6, nrel5mw_land_template_np = 20, nrel5mw_land_template_ny = 7 };
 
+// The floating-point type of every argument and parameter (--real).
+typedef double nrel5mw_land_template_real;
+
 extern const char* const nrel5mw_land_template_model_name;
 extern const char* const nrel5mw_land_template_dof_names[5];
 extern const char* const nrel5mw_land_template_input_names[6];
@@ -80,56 +86,58 @@ extern const char* const nrel5mw_land_template_output_names[7];
 // The parameters; nrel5mw_land_template_default_params() gives their defaults (NaN: no
 // default, set it before use).
 typedef struct nrel5mw_land_template_params {
-    double Gravity; // "gravitational acceleration [m/s^2] (Gravity)"
-    double TowerHt; // "height of the tower top above ground or MSL [m]"
-    double TowerBsHt; // "height of the tower base above ground or MSL [m]"
-    double Twr2Shft; // "height of the shaft above the tower top [m]"
-    double OverHang; // "rotor apex from the yaw axis, along the shaft [m]"
-    double ShftTilt; // "shaft tilt; < 0 raises the upwind end"
-    double NacCMxn; // "nacelle centre of mass from the tower top, downwind [m]"
-    double NacCMyn; // "... lateral (along y) [m]"
-    double NacCMzn; // "... vertical [m]"
-    double NacMass; // "nacelle mass [kg]"
-    double NacYIner; // "nacelle inertia about the yaw axis [kg m^2]"
-    double GenIner; // "generator inertia about the high-speed shaft [kg m^2]"
-    double GBRatio; // "gearbox ratio"
-    double DTTorSpr; // "drivetrain torsional stiffness [N m/rad]"
-    double DTTorDmp; // "drivetrain torsional damping [N m s/rad]"
-    double RotMass; // "rotor mass [kg]"
-    double RotCMx; // "rotor centre of mass from the apex, along the shaft [m]"
-    double RotIxx; // "rotor inertia about the shaft [kg m^2]"
-    double RotIyy; // "rotor inertia about y through its CM [kg m^2]"
-    double RotIzz; // "rotor inertia about z through its CM [kg m^2]"
+    nrel5mw_land_template_real Gravity; // "gravitational acceleration [m/s^2] (Gravity)"
+    nrel5mw_land_template_real TowerHt; // "height of the tower top above ground or MSL [m]"
+    nrel5mw_land_template_real TowerBsHt; // "height of the tower base above ground or MSL [m]"
+    nrel5mw_land_template_real Twr2Shft; // "height of the shaft above the tower top [m]"
+    nrel5mw_land_template_real OverHang; // "rotor apex from the yaw axis, along the shaft [m]"
+    nrel5mw_land_template_real ShftTilt; // "shaft tilt; < 0 raises the upwind end"
+    nrel5mw_land_template_real NacCMxn; // "nacelle centre of mass from the tower top, downwind [m]"
+    nrel5mw_land_template_real NacCMyn; // "... lateral (along y) [m]"
+    nrel5mw_land_template_real NacCMzn; // "... vertical [m]"
+    nrel5mw_land_template_real NacMass; // "nacelle mass [kg]"
+    nrel5mw_land_template_real NacYIner; // "nacelle inertia about the yaw axis [kg m^2]"
+    nrel5mw_land_template_real GenIner; // "generator inertia about the high-speed shaft [kg m^2]"
+    nrel5mw_land_template_real GBRatio; // "gearbox ratio"
+    nrel5mw_land_template_real DTTorSpr; // "drivetrain torsional stiffness [N m/rad]"
+    nrel5mw_land_template_real DTTorDmp; // "drivetrain torsional damping [N m s/rad]"
+    nrel5mw_land_template_real RotMass; // "rotor mass [kg]"
+    nrel5mw_land_template_real RotCMx; // "rotor centre of mass from the apex, along the shaft [m]"
+    nrel5mw_land_template_real RotIxx; // "rotor inertia about the shaft [kg m^2]"
+    nrel5mw_land_template_real RotIyy; // "rotor inertia about y through its CM [kg m^2]"
+    nrel5mw_land_template_real RotIzz; // "rotor inertia about z through its CM [kg m^2]"
 } nrel5mw_land_template_params;
 
 nrel5mw_land_template_params nrel5mw_land_template_default_params(void);
 // The parameters as an array of np values, in declaration order, and back.
-void nrel5mw_land_template_params_to_array(const nrel5mw_land_template_params* p, double* a);
-nrel5mw_land_template_params nrel5mw_land_template_params_from_array(const double* a);
+void nrel5mw_land_template_params_to_array(const nrel5mw_land_template_params* p, nrel5mw_land_template_real* a);
+nrel5mw_land_template_params nrel5mw_land_template_params_from_array(const nrel5mw_land_template_real* a);
 
 // M(q) q'' = F(q, q', u, t); u may be NULL when nu == 0.
 // M(q) when it depends on q and p only
-void nrel5mw_land_template_mass_matrix(const double* q, const nrel5mw_land_template_params* p, double* M);
+void nrel5mw_land_template_mass_matrix(const nrel5mw_land_template_real* q, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* M);
 // M(q) of M q'' = F (symmetric, row-major)
-void nrel5mw_land_template_mass_matrix_tu(double t, const double* q, const double* u, const nrel5mw_land_template_params* p, double* M);
+void nrel5mw_land_template_mass_matrix_tu(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* M);
 // F(q, q', u, t) of M q'' = F
-void nrel5mw_land_template_forcing(double t, const double* q, const double* qd, const double* u, const nrel5mw_land_template_params* p, double* F);
+void nrel5mw_land_template_forcing(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* qd, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
-void nrel5mw_land_template_jacobians(double t, const double* q, const double* qd, const double* u, const nrel5mw_land_template_params* p, double* dF_dq, double* dF_dqd, double* dF_du);
+void nrel5mw_land_template_jacobians(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* qd, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* dF_dq, nrel5mw_land_template_real* dF_dqd, nrel5mw_land_template_real* dF_du);
 // the model's outputs y(q, q', u, t)
-void nrel5mw_land_template_outputs(double t, const double* q, const double* qd, const double* u, const nrel5mw_land_template_params* p, double* y);
+void nrel5mw_land_template_outputs(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* qd, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* y);
 // x' = [q', M^-1 F] for x = [q, q']
-void nrel5mw_land_template_rhs(double t, const double* x, const double* u, const nrel5mw_land_template_params* p, double* xdot);
+void nrel5mw_land_template_rhs(nrel5mw_land_template_real t, const nrel5mw_land_template_real* x, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* xdot);
 // d(rhs)/dx, 2nq x 2nq, row-major
-void nrel5mw_land_template_rhs_jacobian(double t, const double* x, const double* u, const nrel5mw_land_template_params* p, double* J);
+void nrel5mw_land_template_rhs_jacobian(nrel5mw_land_template_real t, const nrel5mw_land_template_real* x, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* J);
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
-void nrel5mw_land_template_linear(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_template_params* p, double* M0, double* C0, double* K0, double* Q0);
+void nrel5mw_land_template_linear(const nrel5mw_land_template_real* q0, const nrel5mw_land_template_real* qd0, const nrel5mw_land_template_real* u0, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* M0, nrel5mw_land_template_real* C0, nrel5mw_land_template_real* K0, nrel5mw_land_template_real* Q0);
 // x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
-void nrel5mw_land_template_state_space(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_template_params* p, double* A, double* B);
+void nrel5mw_land_template_state_space(const nrel5mw_land_template_real* q0, const nrel5mw_land_template_real* qd0, const nrel5mw_land_template_real* u0, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* A, nrel5mw_land_template_real* B);
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
-void nrel5mw_land_template_output_matrices(const double* q0, const double* qd0, const double* u0, const nrel5mw_land_template_params* p, double* C, double* D);
+void nrel5mw_land_template_output_matrices(const nrel5mw_land_template_real* q0, const nrel5mw_land_template_real* qd0, const nrel5mw_land_template_real* u0, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* C, nrel5mw_land_template_real* D);
 // the model's operating point (its linearize block)
-void nrel5mw_land_template_operating_point(const nrel5mw_land_template_params* p, double* q0, double* qd0, double* u0);
+void nrel5mw_land_template_operating_point(const nrel5mw_land_template_params* p, nrel5mw_land_template_real* q0, nrel5mw_land_template_real* qd0, nrel5mw_land_template_real* u0);
+// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)
+void nrel5mw_land_template_rk4_step(nrel5mw_land_template_real t, nrel5mw_land_template_real h, nrel5mw_land_template_real* x, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p);
 
 #ifdef __cplusplus
 }

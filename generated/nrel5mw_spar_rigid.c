@@ -39,7 +39,9 @@
 //   y[1] "PtfmPitch_deg" "platform pitch [deg]"
 //   y[2] "RotSpeed_rpm" "rotor speed [rpm]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
+// Operations per call, worst case: the code is straight-line (loops of fixed
+// length only), so every call does exactly these (the LDL^T solves of rhs and
+// rhs_jacobian and the four rhs calls of rk4_step included):
 //   mass_matrix      27 adds, 55 muls, 0 divs, 6 calls
 //   forcing          31 adds, 80 muls, 0 divs, 6 calls
 //   jacobians        53 adds, 177 muls, 0 divs, 6 calls
@@ -50,6 +52,7 @@
 //   state_space      182 adds, 408 muls, 30 divs, 6 calls
 //   output_matrices  0 adds, 1 muls, 0 divs, 1 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step         300 adds, 607 muls, 25 divs, 24 calls
 
 #include "nrel5mw_spar_rigid.h"
 
@@ -119,7 +122,7 @@ nrel5mw_spar_rigid_params nrel5mw_spar_rigid_default_params(void) {
     return p;
 }
 
-void nrel5mw_spar_rigid_params_to_array(const nrel5mw_spar_rigid_params* p, double* a) {
+void nrel5mw_spar_rigid_params_to_array(const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* a) {
     a[0] = p->g;
     a[1] = p->M_P;
     a[2] = p->z_PG;
@@ -141,7 +144,7 @@ void nrel5mw_spar_rigid_params_to_array(const nrel5mw_spar_rigid_params* p, doub
     a[18] = p->J_R;
 }
 
-nrel5mw_spar_rigid_params nrel5mw_spar_rigid_params_from_array(const double* a) {
+nrel5mw_spar_rigid_params nrel5mw_spar_rigid_params_from_array(const nrel5mw_spar_rigid_real* a) {
     nrel5mw_spar_rigid_params p = nrel5mw_spar_rigid_default_params();
     p.g = a[0];
     p.M_P = a[1];
@@ -166,7 +169,7 @@ nrel5mw_spar_rigid_params nrel5mw_spar_rigid_params_from_array(const double* a) 
 }
 
 // M(q) of M q'' = F (symmetric, row-major)
-void nrel5mw_spar_rigid_mass_matrix(const double* q, const nrel5mw_spar_rigid_params* p, double* M) {
+void nrel5mw_spar_rigid_mass_matrix(const nrel5mw_spar_rigid_real* q, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* M) {
     const double t0 = cos(q[1]);
     const double t1 = sin(q[1]);
     const double t2 = t0*t0 + t1*t1;
@@ -192,14 +195,14 @@ void nrel5mw_spar_rigid_mass_matrix(const double* q, const nrel5mw_spar_rigid_pa
 }
 
 // M(q) of M q'' = F (symmetric, row-major)
-void nrel5mw_spar_rigid_mass_matrix_tu(double t, const double* q, const double* u, const nrel5mw_spar_rigid_params* p, double* M) {
+void nrel5mw_spar_rigid_mass_matrix_tu(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* q, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* M) {
     (void)t;
     (void)u;
     nrel5mw_spar_rigid_mass_matrix(q, p, M);
 }
 
 // F(q, q', u, t) of M q'' = F
-void nrel5mw_spar_rigid_forcing(double t, const double* q, const double* qd, const double* u, const nrel5mw_spar_rigid_params* p, double* F) {
+void nrel5mw_spar_rigid_forcing(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* q, const nrel5mw_spar_rigid_real* qd, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* F) {
     (void)t;
     const double t0 = sin(q[2]);
     const double t1 = -p->theta_t;
@@ -225,7 +228,7 @@ void nrel5mw_spar_rigid_forcing(double t, const double* q, const double* qd, con
 }
 
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
-void nrel5mw_spar_rigid_jacobians(double t, const double* q, const double* qd, const double* u, const nrel5mw_spar_rigid_params* p, double* dF_dq, double* dF_dqd, double* dF_du) {
+void nrel5mw_spar_rigid_jacobians(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* q, const nrel5mw_spar_rigid_real* qd, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* dF_dq, nrel5mw_spar_rigid_real* dF_dqd, nrel5mw_spar_rigid_real* dF_du) {
     (void)t;
     const double t0 = cos(q[1]);
     const double t1 = -p->theta_t;
@@ -273,7 +276,7 @@ void nrel5mw_spar_rigid_jacobians(double t, const double* q, const double* qd, c
 }
 
 // the model's outputs y(q, q', u, t)
-void nrel5mw_spar_rigid_outputs(double t, const double* q, const double* qd, const double* u, const nrel5mw_spar_rigid_params* p, double* y) {
+void nrel5mw_spar_rigid_outputs(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* q, const nrel5mw_spar_rigid_real* qd, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* y) {
     (void)t;
     (void)u;
     const double t0 = sin(q[1]);
@@ -283,7 +286,7 @@ void nrel5mw_spar_rigid_outputs(double t, const double* q, const double* qd, con
 }
 
 // x' = [q', M^-1 F] for x = [q, q']
-void nrel5mw_spar_rigid_rhs(double t, const double* x, const double* u, const nrel5mw_spar_rigid_params* p, double* xdot) {
+void nrel5mw_spar_rigid_rhs(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* x, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* xdot) {
     (void)t;
     double M[9];
     const double t0 = cos(x[1]);
@@ -323,7 +326,7 @@ void nrel5mw_spar_rigid_rhs(double t, const double* x, const double* u, const nr
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
-void nrel5mw_spar_rigid_rhs_jacobian(double t, const double* x, const double* u, const nrel5mw_spar_rigid_params* p, double* J) {
+void nrel5mw_spar_rigid_rhs_jacobian(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* x, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* J) {
     (void)t;
     double M[9];
     double qdd[3];
@@ -410,7 +413,7 @@ void nrel5mw_spar_rigid_rhs_jacobian(double t, const double* x, const double* u,
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
-void nrel5mw_spar_rigid_linear(const double* q0, const double* qd0, const double* u0, const nrel5mw_spar_rigid_params* p, double* M0, double* C0, double* K0, double* Q0) {
+void nrel5mw_spar_rigid_linear(const nrel5mw_spar_rigid_real* q0, const nrel5mw_spar_rigid_real* qd0, const nrel5mw_spar_rigid_real* u0, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* M0, nrel5mw_spar_rigid_real* C0, nrel5mw_spar_rigid_real* K0, nrel5mw_spar_rigid_real* Q0) {
     double M[9];
     double qdd0[3];
     const double t0 = cos(q0[1]);
@@ -495,7 +498,7 @@ void nrel5mw_spar_rigid_linear(const double* q0, const double* qd0, const double
 }
 
 // x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
-void nrel5mw_spar_rigid_state_space(const double* q0, const double* qd0, const double* u0, const nrel5mw_spar_rigid_params* p, double* A, double* B) {
+void nrel5mw_spar_rigid_state_space(const nrel5mw_spar_rigid_real* q0, const nrel5mw_spar_rigid_real* qd0, const nrel5mw_spar_rigid_real* u0, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* A, nrel5mw_spar_rigid_real* B) {
     double M[9];
     double qdd0[3];
     const double t0 = cos(q0[1]);
@@ -594,7 +597,7 @@ void nrel5mw_spar_rigid_state_space(const double* q0, const double* qd0, const d
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
-void nrel5mw_spar_rigid_output_matrices(const double* q0, const double* qd0, const double* u0, const nrel5mw_spar_rigid_params* p, double* C, double* D) {
+void nrel5mw_spar_rigid_output_matrices(const nrel5mw_spar_rigid_real* q0, const nrel5mw_spar_rigid_real* qd0, const nrel5mw_spar_rigid_real* u0, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* C, nrel5mw_spar_rigid_real* D) {
     (void)qd0;
     (void)u0;
     const double t0 = cos(q0[1]);
@@ -625,7 +628,7 @@ void nrel5mw_spar_rigid_output_matrices(const double* q0, const double* qd0, con
 }
 
 // the model's operating point (no linearize block: zeros)
-void nrel5mw_spar_rigid_operating_point(const nrel5mw_spar_rigid_params* p, double* q0, double* qd0, double* u0) {
+void nrel5mw_spar_rigid_operating_point(const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* q0, nrel5mw_spar_rigid_real* qd0, nrel5mw_spar_rigid_real* u0) {
     (void)p;
     q0[0] = 0.0;
     q0[1] = 0.0;
@@ -635,4 +638,20 @@ void nrel5mw_spar_rigid_operating_point(const nrel5mw_spar_rigid_params* p, doub
     qd0[2] = 0.0;
     u0[0] = 0.0;
     u0[1] = 0.0;
+}
+
+// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)
+void nrel5mw_spar_rigid_rk4_step(nrel5mw_spar_rigid_real t, nrel5mw_spar_rigid_real h, nrel5mw_spar_rigid_real* x, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p) {
+    double k1[6], k2[6], k3[6], k4[6], stage[6];
+    const double half = 0.5*h;
+    const double sixth = h/6.0;
+    const double t_half = t + half;
+    nrel5mw_spar_rigid_rhs(t, x, u, p, k1);
+    for (int i = 0; i < 6; ++i) stage[i] = x[i] + half*k1[i];
+    nrel5mw_spar_rigid_rhs(t_half, stage, u, p, k2);
+    for (int i = 0; i < 6; ++i) stage[i] = x[i] + half*k2[i];
+    nrel5mw_spar_rigid_rhs(t_half, stage, u, p, k3);
+    for (int i = 0; i < 6; ++i) stage[i] = x[i] + h*k3[i];
+    nrel5mw_spar_rigid_rhs(t + h, stage, u, p, k4);
+    for (int i = 0; i < 6; ++i) x[i] += sixth*(k1[i] + 2.0*(k2[i] + k3[i]) + k4[i]);
 }

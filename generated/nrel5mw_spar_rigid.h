@@ -39,7 +39,9 @@
 //   y[1] "PtfmPitch_deg" "platform pitch [deg]"
 //   y[2] "RotSpeed_rpm" "rotor speed [rpm]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
+// Operations per call, worst case: the code is straight-line (loops of fixed
+// length only), so every call does exactly these (the LDL^T solves of rhs and
+// rhs_jacobian and the four rhs calls of rk4_step included):
 //   mass_matrix      27 adds, 55 muls, 0 divs, 6 calls
 //   forcing          31 adds, 80 muls, 0 divs, 6 calls
 //   jacobians        53 adds, 177 muls, 0 divs, 6 calls
@@ -50,6 +52,7 @@
 //   state_space      182 adds, 408 muls, 30 divs, 6 calls
 //   output_matrices  0 adds, 1 muls, 0 divs, 1 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step         300 adds, 607 muls, 25 divs, 24 calls
 
 #ifndef nrel5mw_spar_rigid_YAMSC_GENERATED_H
 #define nrel5mw_spar_rigid_YAMSC_GENERATED_H
@@ -60,6 +63,9 @@ extern "C" {
 
 enum { nrel5mw_spar_rigid_nq = 3, nrel5mw_spar_rigid_nu = 2, nrel5mw_spar_rigid_np = 19, nrel5mw_spar_rigid_ny = 3 };
 
+// The floating-point type of every argument and parameter (--real).
+typedef double nrel5mw_spar_rigid_real;
+
 extern const char* const nrel5mw_spar_rigid_model_name;
 extern const char* const nrel5mw_spar_rigid_dof_names[3];
 extern const char* const nrel5mw_spar_rigid_input_names[2];
@@ -69,55 +75,57 @@ extern const char* const nrel5mw_spar_rigid_output_names[3];
 // The parameters; nrel5mw_spar_rigid_default_params() gives their defaults (NaN: no
 // default, set it before use).
 typedef struct nrel5mw_spar_rigid_params {
-    double g; // "acceleration of gravity [m/s^2]"
-    double M_P; // "platform mass [kg]"
-    double z_PG; // "platform centre of mass below the reference point (tower base) [m]"
-    double J_P; // "platform roll and pitch inertia about its centre of mass [kg m^2]"
-    double J_Pz; // "platform yaw inertia [kg m^2]"
-    double L_T; // "tower length, base (20 m above sea level) to top [m]"
-    double M_T; // "tower mass [kg]"
-    double z_TG; // "tower centre of mass above its base [m]"
-    double J_T; // "tower bending-plane inertia about its centre of mass [kg m^2]"
-    double M_N; // "nacelle mass [kg]"
-    double x_NG; // "nacelle centre of mass from the tower top [m]"
-    double z_NG; // "nacelle centre of mass from the tower top [m]"
-    double J_zN; // "nacelle inertia about the yaw axis [kg m^2]"
-    double theta_t; // "shaft tilt (rotor axis up-wind end raised) [rad]"
-    double x_NR; // "rotor apex along the shaft from the yaw axis (overhang) [m]"
-    double z_NR; // "shaft height above the tower top [m]"
-    double M_R; // "rotor mass: hub and three blades [kg]"
-    double J_xR; // "rotor inertia about the shaft [kg m^2]"
-    double J_R; // "rotor inertia about a diameter [kg m^2]"
+    nrel5mw_spar_rigid_real g; // "acceleration of gravity [m/s^2]"
+    nrel5mw_spar_rigid_real M_P; // "platform mass [kg]"
+    nrel5mw_spar_rigid_real z_PG; // "platform centre of mass below the reference point (tower base) [m]"
+    nrel5mw_spar_rigid_real J_P; // "platform roll and pitch inertia about its centre of mass [kg m^2]"
+    nrel5mw_spar_rigid_real J_Pz; // "platform yaw inertia [kg m^2]"
+    nrel5mw_spar_rigid_real L_T; // "tower length, base (20 m above sea level) to top [m]"
+    nrel5mw_spar_rigid_real M_T; // "tower mass [kg]"
+    nrel5mw_spar_rigid_real z_TG; // "tower centre of mass above its base [m]"
+    nrel5mw_spar_rigid_real J_T; // "tower bending-plane inertia about its centre of mass [kg m^2]"
+    nrel5mw_spar_rigid_real M_N; // "nacelle mass [kg]"
+    nrel5mw_spar_rigid_real x_NG; // "nacelle centre of mass from the tower top [m]"
+    nrel5mw_spar_rigid_real z_NG; // "nacelle centre of mass from the tower top [m]"
+    nrel5mw_spar_rigid_real J_zN; // "nacelle inertia about the yaw axis [kg m^2]"
+    nrel5mw_spar_rigid_real theta_t; // "shaft tilt (rotor axis up-wind end raised) [rad]"
+    nrel5mw_spar_rigid_real x_NR; // "rotor apex along the shaft from the yaw axis (overhang) [m]"
+    nrel5mw_spar_rigid_real z_NR; // "shaft height above the tower top [m]"
+    nrel5mw_spar_rigid_real M_R; // "rotor mass: hub and three blades [kg]"
+    nrel5mw_spar_rigid_real J_xR; // "rotor inertia about the shaft [kg m^2]"
+    nrel5mw_spar_rigid_real J_R; // "rotor inertia about a diameter [kg m^2]"
 } nrel5mw_spar_rigid_params;
 
 nrel5mw_spar_rigid_params nrel5mw_spar_rigid_default_params(void);
 // The parameters as an array of np values, in declaration order, and back.
-void nrel5mw_spar_rigid_params_to_array(const nrel5mw_spar_rigid_params* p, double* a);
-nrel5mw_spar_rigid_params nrel5mw_spar_rigid_params_from_array(const double* a);
+void nrel5mw_spar_rigid_params_to_array(const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* a);
+nrel5mw_spar_rigid_params nrel5mw_spar_rigid_params_from_array(const nrel5mw_spar_rigid_real* a);
 
 // M(q) q'' = F(q, q', u, t); u may be NULL when nu == 0.
 // M(q) when it depends on q and p only
-void nrel5mw_spar_rigid_mass_matrix(const double* q, const nrel5mw_spar_rigid_params* p, double* M);
+void nrel5mw_spar_rigid_mass_matrix(const nrel5mw_spar_rigid_real* q, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* M);
 // M(q) of M q'' = F (symmetric, row-major)
-void nrel5mw_spar_rigid_mass_matrix_tu(double t, const double* q, const double* u, const nrel5mw_spar_rigid_params* p, double* M);
+void nrel5mw_spar_rigid_mass_matrix_tu(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* q, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* M);
 // F(q, q', u, t) of M q'' = F
-void nrel5mw_spar_rigid_forcing(double t, const double* q, const double* qd, const double* u, const nrel5mw_spar_rigid_params* p, double* F);
+void nrel5mw_spar_rigid_forcing(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* q, const nrel5mw_spar_rigid_real* qd, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
-void nrel5mw_spar_rigid_jacobians(double t, const double* q, const double* qd, const double* u, const nrel5mw_spar_rigid_params* p, double* dF_dq, double* dF_dqd, double* dF_du);
+void nrel5mw_spar_rigid_jacobians(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* q, const nrel5mw_spar_rigid_real* qd, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* dF_dq, nrel5mw_spar_rigid_real* dF_dqd, nrel5mw_spar_rigid_real* dF_du);
 // the model's outputs y(q, q', u, t)
-void nrel5mw_spar_rigid_outputs(double t, const double* q, const double* qd, const double* u, const nrel5mw_spar_rigid_params* p, double* y);
+void nrel5mw_spar_rigid_outputs(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* q, const nrel5mw_spar_rigid_real* qd, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* y);
 // x' = [q', M^-1 F] for x = [q, q']
-void nrel5mw_spar_rigid_rhs(double t, const double* x, const double* u, const nrel5mw_spar_rigid_params* p, double* xdot);
+void nrel5mw_spar_rigid_rhs(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* x, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* xdot);
 // d(rhs)/dx, 2nq x 2nq, row-major
-void nrel5mw_spar_rigid_rhs_jacobian(double t, const double* x, const double* u, const nrel5mw_spar_rigid_params* p, double* J);
+void nrel5mw_spar_rigid_rhs_jacobian(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* x, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* J);
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
-void nrel5mw_spar_rigid_linear(const double* q0, const double* qd0, const double* u0, const nrel5mw_spar_rigid_params* p, double* M0, double* C0, double* K0, double* Q0);
+void nrel5mw_spar_rigid_linear(const nrel5mw_spar_rigid_real* q0, const nrel5mw_spar_rigid_real* qd0, const nrel5mw_spar_rigid_real* u0, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* M0, nrel5mw_spar_rigid_real* C0, nrel5mw_spar_rigid_real* K0, nrel5mw_spar_rigid_real* Q0);
 // x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
-void nrel5mw_spar_rigid_state_space(const double* q0, const double* qd0, const double* u0, const nrel5mw_spar_rigid_params* p, double* A, double* B);
+void nrel5mw_spar_rigid_state_space(const nrel5mw_spar_rigid_real* q0, const nrel5mw_spar_rigid_real* qd0, const nrel5mw_spar_rigid_real* u0, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* A, nrel5mw_spar_rigid_real* B);
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
-void nrel5mw_spar_rigid_output_matrices(const double* q0, const double* qd0, const double* u0, const nrel5mw_spar_rigid_params* p, double* C, double* D);
+void nrel5mw_spar_rigid_output_matrices(const nrel5mw_spar_rigid_real* q0, const nrel5mw_spar_rigid_real* qd0, const nrel5mw_spar_rigid_real* u0, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* C, nrel5mw_spar_rigid_real* D);
 // the model's operating point (no linearize block: zeros)
-void nrel5mw_spar_rigid_operating_point(const nrel5mw_spar_rigid_params* p, double* q0, double* qd0, double* u0);
+void nrel5mw_spar_rigid_operating_point(const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* q0, nrel5mw_spar_rigid_real* qd0, nrel5mw_spar_rigid_real* u0);
+// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)
+void nrel5mw_spar_rigid_rk4_step(nrel5mw_spar_rigid_real t, nrel5mw_spar_rigid_real h, nrel5mw_spar_rigid_real* x, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p);
 
 #ifdef __cplusplus
 }

@@ -19,7 +19,9 @@
 //   y[0] "x_tip" "horizontal position of the bob [m]"
 //   y[1] "z_tip" "height of the bob [m]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
+// Operations per call, worst case: the code is straight-line (loops of fixed
+// length only), so every call does exactly these (the LDL^T solves of rhs and
+// rhs_jacobian and the four rhs calls of rk4_step included):
 //   mass_matrix      0 adds, 2 muls, 0 divs, 0 calls
 //   forcing          0 adds, 3 muls, 0 divs, 1 calls
 //   jacobians        0 adds, 3 muls, 0 divs, 1 calls
@@ -30,6 +32,7 @@
 //   state_space      0 adds, 5 muls, 2 divs, 1 calls
 //   output_matrices  0 adds, 2 muls, 0 divs, 2 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step         16 adds, 31 muls, 5 divs, 4 calls
 
 #include "pendulum.h"
 
@@ -83,13 +86,13 @@ pendulum_params pendulum_default_params(void) {
     return p;
 }
 
-void pendulum_params_to_array(const pendulum_params* p, double* a) {
+void pendulum_params_to_array(const pendulum_params* p, pendulum_real* a) {
     a[0] = p->m;
     a[1] = p->L;
     a[2] = p->g;
 }
 
-pendulum_params pendulum_params_from_array(const double* a) {
+pendulum_params pendulum_params_from_array(const pendulum_real* a) {
     pendulum_params p = pendulum_default_params();
     p.m = a[0];
     p.L = a[1];
@@ -98,20 +101,20 @@ pendulum_params pendulum_params_from_array(const double* a) {
 }
 
 // M(q) of M q'' = F (symmetric, row-major)
-void pendulum_mass_matrix(const double* q, const pendulum_params* p, double* M) {
+void pendulum_mass_matrix(const pendulum_real* q, const pendulum_params* p, pendulum_real* M) {
     (void)q;
     M[0] = p->m*p->L*p->L;
 }
 
 // M(q) of M q'' = F (symmetric, row-major)
-void pendulum_mass_matrix_tu(double t, const double* q, const double* u, const pendulum_params* p, double* M) {
+void pendulum_mass_matrix_tu(pendulum_real t, const pendulum_real* q, const pendulum_real* u, const pendulum_params* p, pendulum_real* M) {
     (void)t;
     (void)u;
     pendulum_mass_matrix(q, p, M);
 }
 
 // F(q, q', u, t) of M q'' = F
-void pendulum_forcing(double t, const double* q, const double* qd, const double* u, const pendulum_params* p, double* F) {
+void pendulum_forcing(pendulum_real t, const pendulum_real* q, const pendulum_real* qd, const pendulum_real* u, const pendulum_params* p, pendulum_real* F) {
     (void)t;
     (void)qd;
     (void)u;
@@ -120,7 +123,7 @@ void pendulum_forcing(double t, const double* q, const double* qd, const double*
 }
 
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
-void pendulum_jacobians(double t, const double* q, const double* qd, const double* u, const pendulum_params* p, double* dF_dq, double* dF_dqd, double* dF_du) {
+void pendulum_jacobians(pendulum_real t, const pendulum_real* q, const pendulum_real* qd, const pendulum_real* u, const pendulum_params* p, pendulum_real* dF_dq, pendulum_real* dF_dqd, pendulum_real* dF_du) {
     (void)t;
     (void)qd;
     (void)u;
@@ -131,7 +134,7 @@ void pendulum_jacobians(double t, const double* q, const double* qd, const doubl
 }
 
 // the model's outputs y(q, q', u, t)
-void pendulum_outputs(double t, const double* q, const double* qd, const double* u, const pendulum_params* p, double* y) {
+void pendulum_outputs(pendulum_real t, const pendulum_real* q, const pendulum_real* qd, const pendulum_real* u, const pendulum_params* p, pendulum_real* y) {
     (void)t;
     (void)qd;
     (void)u;
@@ -142,7 +145,7 @@ void pendulum_outputs(double t, const double* q, const double* qd, const double*
 }
 
 // x' = [q', M^-1 F] for x = [q, q']
-void pendulum_rhs(double t, const double* x, const double* u, const pendulum_params* p, double* xdot) {
+void pendulum_rhs(pendulum_real t, const pendulum_real* x, const pendulum_real* u, const pendulum_params* p, pendulum_real* xdot) {
     (void)t;
     (void)u;
     double M[1];
@@ -155,7 +158,7 @@ void pendulum_rhs(double t, const double* x, const double* u, const pendulum_par
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
-void pendulum_rhs_jacobian(double t, const double* x, const double* u, const pendulum_params* p, double* J) {
+void pendulum_rhs_jacobian(pendulum_real t, const pendulum_real* x, const pendulum_real* u, const pendulum_params* p, pendulum_real* J) {
     (void)t;
     (void)u;
     double M[1];
@@ -174,7 +177,7 @@ void pendulum_rhs_jacobian(double t, const double* x, const double* u, const pen
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
-void pendulum_linear(const double* q0, const double* qd0, const double* u0, const pendulum_params* p, double* M0, double* C0, double* K0, double* Q0) {
+void pendulum_linear(const pendulum_real* q0, const pendulum_real* qd0, const pendulum_real* u0, const pendulum_params* p, pendulum_real* M0, pendulum_real* C0, pendulum_real* K0, pendulum_real* Q0) {
     (void)qd0;
     (void)u0;
     (void)Q0;
@@ -185,7 +188,7 @@ void pendulum_linear(const double* q0, const double* qd0, const double* u0, cons
 }
 
 // x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
-void pendulum_state_space(const double* q0, const double* qd0, const double* u0, const pendulum_params* p, double* A, double* B) {
+void pendulum_state_space(const pendulum_real* q0, const pendulum_real* qd0, const pendulum_real* u0, const pendulum_params* p, pendulum_real* A, pendulum_real* B) {
     (void)qd0;
     (void)u0;
     (void)B;
@@ -201,7 +204,7 @@ void pendulum_state_space(const double* q0, const double* qd0, const double* u0,
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
-void pendulum_output_matrices(const double* q0, const double* qd0, const double* u0, const pendulum_params* p, double* C, double* D) {
+void pendulum_output_matrices(const pendulum_real* q0, const pendulum_real* qd0, const pendulum_real* u0, const pendulum_params* p, pendulum_real* C, pendulum_real* D) {
     (void)qd0;
     (void)u0;
     (void)D;
@@ -214,9 +217,25 @@ void pendulum_output_matrices(const double* q0, const double* qd0, const double*
 }
 
 // the model's operating point (no linearize block: zeros)
-void pendulum_operating_point(const pendulum_params* p, double* q0, double* qd0, double* u0) {
+void pendulum_operating_point(const pendulum_params* p, pendulum_real* q0, pendulum_real* qd0, pendulum_real* u0) {
     (void)p;
     (void)u0;
     q0[0] = 0.0;
     qd0[0] = 0.0;
+}
+
+// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)
+void pendulum_rk4_step(pendulum_real t, pendulum_real h, pendulum_real* x, const pendulum_real* u, const pendulum_params* p) {
+    double k1[2], k2[2], k3[2], k4[2], stage[2];
+    const double half = 0.5*h;
+    const double sixth = h/6.0;
+    const double t_half = t + half;
+    pendulum_rhs(t, x, u, p, k1);
+    for (int i = 0; i < 2; ++i) stage[i] = x[i] + half*k1[i];
+    pendulum_rhs(t_half, stage, u, p, k2);
+    for (int i = 0; i < 2; ++i) stage[i] = x[i] + half*k2[i];
+    pendulum_rhs(t_half, stage, u, p, k3);
+    for (int i = 0; i < 2; ++i) stage[i] = x[i] + h*k3[i];
+    pendulum_rhs(t + h, stage, u, p, k4);
+    for (int i = 0; i < 2; ++i) x[i] += sixth*(k1[i] + 2.0*(k2[i] + k3[i]) + k4[i]);
 }

@@ -19,7 +19,9 @@
 //   y[0] "x_tip" "horizontal position of the bob [m]"
 //   y[1] "z_tip" "height of the bob [m]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
+// Operations per call, worst case: the code is straight-line (loops of fixed
+// length only), so every call does exactly these (the LDL^T solves of rhs and
+// rhs_jacobian and the four rhs calls of rk4_step included):
 //   mass_matrix      0 adds, 2 muls, 0 divs, 0 calls
 //   forcing          0 adds, 3 muls, 0 divs, 1 calls
 //   jacobians        0 adds, 3 muls, 0 divs, 1 calls
@@ -30,6 +32,7 @@
 //   state_space      0 adds, 5 muls, 2 divs, 1 calls
 //   output_matrices  0 adds, 2 muls, 0 divs, 2 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step         16 adds, 31 muls, 5 divs, 4 calls
 
 #ifndef pendulum_YAMSC_GENERATED_H
 #define pendulum_YAMSC_GENERATED_H
@@ -40,6 +43,9 @@ extern "C" {
 
 enum { pendulum_nq = 1, pendulum_nu = 0, pendulum_np = 3, pendulum_ny = 2 };
 
+// The floating-point type of every argument and parameter (--real).
+typedef double pendulum_real;
+
 extern const char* const pendulum_model_name;
 extern const char* const pendulum_dof_names[1];
 extern const char* const pendulum_input_names[1];
@@ -49,39 +55,41 @@ extern const char* const pendulum_output_names[2];
 // The parameters; pendulum_default_params() gives their defaults (NaN: no
 // default, set it before use).
 typedef struct pendulum_params {
-    double m; // "bob mass [kg]"
-    double L; // "rod length [m]"
-    double g; // "acceleration of gravity [m/s^2]"
+    pendulum_real m; // "bob mass [kg]"
+    pendulum_real L; // "rod length [m]"
+    pendulum_real g; // "acceleration of gravity [m/s^2]"
 } pendulum_params;
 
 pendulum_params pendulum_default_params(void);
 // The parameters as an array of np values, in declaration order, and back.
-void pendulum_params_to_array(const pendulum_params* p, double* a);
-pendulum_params pendulum_params_from_array(const double* a);
+void pendulum_params_to_array(const pendulum_params* p, pendulum_real* a);
+pendulum_params pendulum_params_from_array(const pendulum_real* a);
 
 // M(q) q'' = F(q, q', u, t); u may be NULL when nu == 0.
 // M(q) when it depends on q and p only
-void pendulum_mass_matrix(const double* q, const pendulum_params* p, double* M);
+void pendulum_mass_matrix(const pendulum_real* q, const pendulum_params* p, pendulum_real* M);
 // M(q) of M q'' = F (symmetric, row-major)
-void pendulum_mass_matrix_tu(double t, const double* q, const double* u, const pendulum_params* p, double* M);
+void pendulum_mass_matrix_tu(pendulum_real t, const pendulum_real* q, const pendulum_real* u, const pendulum_params* p, pendulum_real* M);
 // F(q, q', u, t) of M q'' = F
-void pendulum_forcing(double t, const double* q, const double* qd, const double* u, const pendulum_params* p, double* F);
+void pendulum_forcing(pendulum_real t, const pendulum_real* q, const pendulum_real* qd, const pendulum_real* u, const pendulum_params* p, pendulum_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
-void pendulum_jacobians(double t, const double* q, const double* qd, const double* u, const pendulum_params* p, double* dF_dq, double* dF_dqd, double* dF_du);
+void pendulum_jacobians(pendulum_real t, const pendulum_real* q, const pendulum_real* qd, const pendulum_real* u, const pendulum_params* p, pendulum_real* dF_dq, pendulum_real* dF_dqd, pendulum_real* dF_du);
 // the model's outputs y(q, q', u, t)
-void pendulum_outputs(double t, const double* q, const double* qd, const double* u, const pendulum_params* p, double* y);
+void pendulum_outputs(pendulum_real t, const pendulum_real* q, const pendulum_real* qd, const pendulum_real* u, const pendulum_params* p, pendulum_real* y);
 // x' = [q', M^-1 F] for x = [q, q']
-void pendulum_rhs(double t, const double* x, const double* u, const pendulum_params* p, double* xdot);
+void pendulum_rhs(pendulum_real t, const pendulum_real* x, const pendulum_real* u, const pendulum_params* p, pendulum_real* xdot);
 // d(rhs)/dx, 2nq x 2nq, row-major
-void pendulum_rhs_jacobian(double t, const double* x, const double* u, const pendulum_params* p, double* J);
+void pendulum_rhs_jacobian(pendulum_real t, const pendulum_real* x, const pendulum_real* u, const pendulum_params* p, pendulum_real* J);
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
-void pendulum_linear(const double* q0, const double* qd0, const double* u0, const pendulum_params* p, double* M0, double* C0, double* K0, double* Q0);
+void pendulum_linear(const pendulum_real* q0, const pendulum_real* qd0, const pendulum_real* u0, const pendulum_params* p, pendulum_real* M0, pendulum_real* C0, pendulum_real* K0, pendulum_real* Q0);
 // x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
-void pendulum_state_space(const double* q0, const double* qd0, const double* u0, const pendulum_params* p, double* A, double* B);
+void pendulum_state_space(const pendulum_real* q0, const pendulum_real* qd0, const pendulum_real* u0, const pendulum_params* p, pendulum_real* A, pendulum_real* B);
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
-void pendulum_output_matrices(const double* q0, const double* qd0, const double* u0, const pendulum_params* p, double* C, double* D);
+void pendulum_output_matrices(const pendulum_real* q0, const pendulum_real* qd0, const pendulum_real* u0, const pendulum_params* p, pendulum_real* C, pendulum_real* D);
 // the model's operating point (no linearize block: zeros)
-void pendulum_operating_point(const pendulum_params* p, double* q0, double* qd0, double* u0);
+void pendulum_operating_point(const pendulum_params* p, pendulum_real* q0, pendulum_real* qd0, pendulum_real* u0);
+// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)
+void pendulum_rk4_step(pendulum_real t, pendulum_real h, pendulum_real* x, const pendulum_real* u, const pendulum_params* p);
 
 #ifdef __cplusplus
 }

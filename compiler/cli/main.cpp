@@ -18,7 +18,8 @@ using yamsc::driver::UsageError;
 
 const char* usage_text = R"(usage:
   yamsc MODEL.mbd -o model.cpp [--header model.hpp] [--lang cpp|c|latex] [--namespace NS]
-                  [--depfile FILE] [--dump=ast|model|module] [-v]
+                  [--depfile FILE] [--dump=ast|model|module] [-v] [--real double|float]
+                  [--jacobians auto|unrolled|tangent] [--sensitivities p1,p2,..]
   yamsc check MODEL.mbd [--json]
   yamsc eval MODEL.mbd [--q v,..] [--qd v,..] [--u name=v,..] [--set name=v,..] [--t T] --json
   yamsc lin MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--json]
@@ -214,7 +215,9 @@ int run(int argc, char** argv) {
         }
         return from_openfast(o, std::cout, std::cerr);
     }
-    Args a(argc, argv, 1, {"-o", "--header", "--lang", "--namespace", "--dump", "--depfile"},
+    Args a(argc, argv, 1,
+           {"-o", "--header", "--lang", "--namespace", "--dump", "--depfile", "--real",
+            "--jacobians", "--sensitivities"},
            {"-v"});
     CompileOptions o;
     o.model = a.model();
@@ -224,6 +227,9 @@ int run(int argc, char** argv) {
     o.name_space = a.get("--namespace");
     o.dump = a.get("--dump");
     o.depfile = a.get("--depfile");
+    o.real = a.get("--real");
+    o.jacobians = a.get("--jacobians");
+    o.sensitivities = comma_list(a.get("--sensitivities"));
     o.verbose = a.has("-v");
     if (o.output.empty() && o.dump.empty()) throw UsageError("no output given (-o FILE)");
     return compile(o, std::cout, std::cerr);

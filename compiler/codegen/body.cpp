@@ -23,13 +23,13 @@ std::string join(const std::vector<std::string>& items, const char* separator) {
 std::string parameter_declaration(const Argument& a, const Syntax& syntax) {
     switch (a.kind) {
     case ArgumentKind::scalar:
-        return "double " + a.name;
+        return syntax.real_type + " " + a.name;
     case ArgumentKind::input_array:
-        return "const double* " + a.name;
+        return "const " + syntax.real_type + "* " + a.name;
     case ArgumentKind::params:
         return syntax.params_type + " " + a.name;
     case ArgumentKind::output_array:
-        return "double* " + a.name;
+        return syntax.real_type + "* " + a.name;
     }
     return a.name;
 }
@@ -60,25 +60,59 @@ PartParameters part_parameters(const Routine& routine, const Syntax& syntax,
         p.declarations.push_back(parameter_declaration(*routine.argument(name), syntax));
     for (const LocalArray& l : routine.locals) {
         p.names.push_back(l.name);
-        p.declarations.push_back("double* " + l.name);
+        p.declarations.push_back(syntax.real_type + "* " + l.name);
     }
     if (with_work_array) {
         p.names.push_back("w");
-        p.declarations.push_back("double* w");
+        p.declarations.push_back(syntax.real_type + "* w");
     }
     return p;
 }
 
-// One statement, appended to `main` (factorisations, solves) or `part`.
+// The loop of a sweep (module.hpp): one call of the internal routine per unit
+// direction, its result copied into a column of the target.
+std::string sweep_text(const Sweep& w, const Syntax& syntax, const CalleeCosts& callee_costs,
+                       OperationCount& count) {
+    std::vector<std::string> arguments = w.arguments;
+    arguments.at(static_cast<std::size_t>(w.seed_argument)) = "seed";
+    arguments.push_back("column");
+    const std::string row = w.stride == 1 ? "i" : fmt::format("i * {}", w.stride);
+    const std::string target =
+        w.offset == 0 ? row + " + k" : fmt::format("{} + {} + k", w.offset, row);
+    const std::string source = w.result_first == 0 ? "i" : fmt::format("{} + i", w.result_first);
+    const std::string value = w.scale == 1.0 ? "column[" + source + "]"
+                              : w.scale == -1.0
+                                  ? "-column[" + source + "]"
+                                  : format_literal(w.scale, syntax) + " * column[" + source + "]";
+    OperationCount per_column;
+    if (auto it = callee_costs.find(w.callee); it != callee_costs.end()) per_column = it->second;
+    if (w.scale != 1.0 && w.scale != -1.0) per_column.muls += w.rows;
+    for (int k = 0; k < w.count; ++k) count += per_column;
+    return fmt::format("    for (int k = 0; k < {0}; ++k) {{\n"
+                       "        {9} seed[{1}] = {{{10}}};\n"
+                       "        {9} column[{2}];\n"
+                       "        seed[{3}] = {11};\n"
+                       "        {4}{5}({6});\n"
+                       "        for (int i = 0; i < {7}; ++i) {8};\n"
+                       "    }}\n",
+                       w.count, std::max(w.seed_size, 1), std::max(w.result_size, 1),
+                       w.first == 0 ? "k" : fmt::format("{} + k", w.first), syntax.helper_prefix,
+                       w.callee, join(arguments, ", "), w.rows,
+                       fmt::format("{}[{}] = {}", w.target, target, value), syntax.real_type,
+                       format_literal(0.0, syntax), format_literal(1.0, syntax));
+}
+
+// One statement, appended to `main` (factorisations, solves, sweeps) or `part`.
 void print_statement(const Statement& s, const Routine& routine, const BodyPlan& plan,
-                     const Syntax& syntax, ExprPrinter& printer, std::string& main,
-                     std::string& part, OperationCount& count) {
+                     const Syntax& syntax, const CalleeCosts& callee_costs, ExprPrinter& printer,
+                     std::string& main, std::string& part, OperationCount& count) {
     switch (s.kind) {
     case Statement::Kind::define: {
         const int number = routine.exprs[static_cast<std::size_t>(s.expr)].temporary;
         const bool in_work_array = s.part >= 0 && plan.slot[static_cast<std::size_t>(number)] >= 0;
-        part += fmt::format("    {}{} = {};\n", in_work_array ? "" : "const double ",
-                            printer.temporary(number), printer.definition(s.expr));
+        part +=
+            fmt::format("    {}{} = {};\n", in_work_array ? "" : "const " + syntax.real_type + " ",
+                        printer.temporary(number), printer.definition(s.expr));
         break;
     }
     case Statement::Kind::assign:
@@ -96,13 +130,23 @@ void print_statement(const Statement& s, const Routine& routine, const BodyPlan&
                         s.step->n, array_at(s.step->target, s.step->offset), s.step->columns);
         count += ldlt_solve_count(s.step->n, s.step->columns);
         break;
+    case Statement::Kind::sweep:
+        main += sweep_text(s.step->sweep, syntax, callee_costs, count);
+        break;
+    case Statement::Kind::call:
+        main += fmt::format("    {}{}({});\n", syntax.helper_prefix, s.step->call.callee,
+                            join(s.step->call.arguments, ", "));
+        if (auto it = callee_costs.find(s.step->call.callee); it != callee_costs.end())
+            count += it->second;
+        break;
     }
 }
 
 } // namespace
 
 BodyText body_text(const Routine& routine, const ModelInfo& model, const Syntax& syntax,
-                   const std::vector<std::string>& signature, int max_statements) {
+                   const std::vector<std::string>& signature, int max_statements,
+                   const CalleeCosts& callee_costs) {
     check_signature(routine, signature);
     const BodyPlan plan = plan_body(routine, max_statements);
     const bool cut = plan.part_count > 0;
@@ -123,8 +167,9 @@ BodyText body_text(const Routine& routine, const ModelInfo& model, const Syntax&
             if (!a.used && std::find(signature.begin(), signature.end(), a.name) != signature.end())
                 main += fmt::format("    (void){};\n", a.name);
     for (const LocalArray& l : routine.locals)
-        main += fmt::format("    double {}[{}];\n", l.name, std::max(l.size, 1));
-    if (plan.slot_count > 0) main += fmt::format("    double w[{}];\n", plan.slot_count);
+        main += fmt::format("    {} {}[{}];\n", syntax.real_type, l.name, std::max(l.size, 1));
+    if (plan.slot_count > 0)
+        main += fmt::format("    {} w[{}];\n", syntax.real_type, plan.slot_count);
 
     const PartParameters parameters =
         part_parameters(routine, syntax, signature, plan.slot_count > 0);
@@ -144,8 +189,8 @@ BodyText body_text(const Routine& routine, const ModelInfo& model, const Syntax&
                 if (!std::binary_search(used.begin(), used.end(), p))
                     body.helpers += fmt::format("    (void){};\n", p);
         }
-        print_statement(s, routine, plan, syntax, printer, main, s.part >= 0 ? body.helpers : main,
-                        body.count);
+        print_statement(s, routine, plan, syntax, callee_costs, printer, main,
+                        s.part >= 0 ? body.helpers : main, body.count);
     }
     if (open_part >= 0) body.helpers += "}\n\n";
     body.count += printer.count();
@@ -155,7 +200,7 @@ BodyText body_text(const Routine& routine, const ModelInfo& model, const Syntax&
 bool uses_solver(const Module& module) {
     for (const Routine& r : module.routines)
         for (const Step& s : r.steps)
-            if (s.kind != StepKind::evaluate) return true;
+            if (s.kind == StepKind::factor || s.kind == StepKind::solve) return true;
     return false;
 }
 
@@ -166,13 +211,13 @@ std::string solver_helpers_text(const Syntax& syntax, const std::string& linkage
 // (row-major; only the lower triangle is read): on return the strict lower
 // triangle holds L (unit diagonal) and the diagonal holds D. No pivoting and no
 // square roots: a mass matrix is positive definite.
-{0}void {1}ldlt_factor(double* A, int n) {{
+{0}void {1}ldlt_factor({2}* A, int n) {{
     for (int j = 0; j < n; ++j) {{
-        double d = A[j * n + j];
+        {2} d = A[j * n + j];
         for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k] * A[k * n + k];
         A[j * n + j] = d;
         for (int i = j + 1; i < n; ++i) {{
-            double s = A[i * n + j];
+            {2} s = A[i * n + j];
             for (int k = 0; k < j; ++k) s -= A[i * n + k] * A[j * n + k] * A[k * n + k];
             A[i * n + j] = s / d;
         }}
@@ -180,23 +225,23 @@ std::string solver_helpers_text(const Syntax& syntax, const std::string& linkage
 }}
 
 // Solves (L D L^T) X = B in place for the n x m row-major block B.
-{0}void {1}ldlt_solve(const double* LD, int n, double* B, int m) {{
+{0}void {1}ldlt_solve(const {2}* LD, int n, {2}* B, int m) {{
     for (int c = 0; c < m; ++c) {{
         for (int i = 0; i < n; ++i) {{
-            double s = B[i * m + c];
+            {2} s = B[i * m + c];
             for (int k = 0; k < i; ++k) s -= LD[i * n + k] * B[k * m + c];
             B[i * m + c] = s;
         }}
         for (int i = 0; i < n; ++i) B[i * m + c] /= LD[i * n + i];
         for (int i = n - 1; i >= 0; --i) {{
-            double s = B[i * m + c];
+            {2} s = B[i * m + c];
             for (int k = i + 1; k < n; ++k) s -= LD[k * n + i] * B[k * m + c];
             B[i * m + c] = s;
         }}
     }}
 }}
 )",
-        linkage, syntax.helper_prefix);
+        linkage, syntax.helper_prefix, syntax.real_type);
 }
 
 } // namespace yamsc::codegen

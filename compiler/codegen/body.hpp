@@ -5,6 +5,7 @@
 #include "codegen/printer.hpp"
 #include "codegen/syntax.hpp"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,13 @@ struct BodyText {
 /// With more than `max_statements` statements (> 0) the work is cut into part
 /// functions, returned in `helpers` to be defined before the body's function.
 /// Throws diag::InternalError if the body needs an argument not in `signature`.
+/// The operations of one call of each internal routine, by name: what a sweep
+/// over it costs per column.
+using CalleeCosts = std::map<std::string, OperationCount>;
+
 BodyText body_text(const Routine& routine, const ModelInfo& model, const Syntax& syntax,
-                   const std::vector<std::string>& signature, int max_statements = 0);
+                   const std::vector<std::string>& signature, int max_statements = 0,
+                   const CalleeCosts& callee_costs = {});
 
 /// True when some routine factorises or solves (then the helpers must be emitted).
 bool uses_solver(const Module& module);

@@ -21,6 +21,12 @@ std::vector<Statement> statements_of(const Routine& r) {
         case StepKind::solve:
             out.push_back({Statement::Kind::solve, 0, nullptr, &step});
             break;
+        case StepKind::sweep:
+            out.push_back({Statement::Kind::sweep, 0, nullptr, &step});
+            break;
+        case StepKind::call:
+            out.push_back({Statement::Kind::call, 0, nullptr, &step});
+            break;
         }
     }
     return out;

@@ -13,10 +13,10 @@
 namespace yamsc::codegen {
 
 struct Statement {
-    enum class Kind { define, assign, factor, solve } kind = Kind::define;
+    enum class Kind { define, assign, factor, solve, sweep, call } kind = Kind::define;
     int expr = 0;                           // define: the temporary's expression
     const Assignment* assignment = nullptr; // assign
-    const Step* step = nullptr;             // factor, solve
+    const Step* step = nullptr;             // factor, solve, sweep, call
     int part = -1; // define, assign: the part function; -1 when the routine is not cut
 };
 

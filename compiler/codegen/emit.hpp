@@ -21,6 +21,9 @@ struct EmitOptions {
     /// A function with more statements is cut into part functions of at most
     /// this many (compilers are superlinear in function size); 0: never cut.
     int max_function_statements = 200;
+    /// The floating-point type of the generated C (`double` or `float`): every
+    /// argument, temporary, literal and math function follows it.
+    enum class Real { double_precision, single_precision } real = Real::double_precision;
 };
 
 struct EmittedFiles {

@@ -1,8 +1,11 @@
 // The C99 emitter: the same functions as in C++ with a `<prefix>_` on every
-// name, a `<prefix>_params` struct and `<prefix>_default_params(void)`;
-// clean under gcc -std=c99 -pedantic -Wall -Wextra -Werror.
+// name, a `<prefix>_params` struct and `<prefix>_default_params(void)`, plus
+// `<prefix>_rk4_step`; clean under gcc -std=c99 -pedantic -Wall -Wextra -Werror.
+// The API spells its floating-point type `<prefix>_real` (double, or float with
+// --real float); inside the functions the type is written out.
 #include "codegen/body.hpp"
 #include "codegen/emit.hpp"
+#include "codegen/emit_c_rk4.hpp"
 #include "codegen/functions.hpp"
 #include "codegen/header_comment.hpp"
 #include "codegen/text.hpp"
@@ -15,23 +18,30 @@ namespace {
 
 struct CNames {
     std::string prefix;
+    bool single_precision = false;
+    std::string real() const { return prefix + "_real"; }
     std::string function(const FunctionPlan& plan) const {
         const bool full_mass_matrix = plan.routine->name == "mass_matrix" && !plan.short_form;
         return prefix + "_" + plan.routine->name + (full_mass_matrix ? "_tu" : "");
     }
     std::string params_type() const { return prefix + "_params"; }
+    Rk4Names rk4() const { return {prefix, real(), params_type()}; }
 };
+
+Syntax syntax_of(const CNames& names) {
+    return c_syntax(names.prefix, names.single_precision);
+}
 
 std::string parameter_text(const CNames& names, const Argument& a) {
     switch (a.kind) {
     case ArgumentKind::scalar:
-        return "double " + a.name;
+        return names.real() + " " + a.name;
     case ArgumentKind::input_array:
-        return "const double* " + a.name;
+        return "const " + names.real() + "* " + a.name;
     case ArgumentKind::params:
         return "const " + names.params_type() + "* " + a.name;
     case ArgumentKind::output_array:
-        return "double* " + a.name;
+        return names.real() + "* " + a.name;
     }
     return a.name;
 }
@@ -71,6 +81,9 @@ std::string declarations(const Module& module, const CNames& names,
     std::string out =
         fmt::format("enum {{ {0}_nq = {1}, {0}_nu = {2}, {0}_np = {3}, {0}_ny = {4} }};\n\n", x,
                     m.nq(), m.nu(), m.np(), m.ny());
+    out += fmt::format("// The floating-point type of every argument and parameter (--real).\n"
+                       "typedef {} {};\n\n",
+                       names.single_precision ? "float" : "double", names.real());
     out += fmt::format("extern const char* const {}_model_name;\n", x);
     for (const NameArray& a : name_arrays(m))
         out += fmt::format("extern const char* const {}_{}[{}];\n", x, a.suffix, array_size(a));
@@ -80,7 +93,7 @@ std::string declarations(const Module& module, const CNames& names,
     out += fmt::format("typedef struct {} {{\n", names.params_type());
     if (m.params.empty()) out += "    int no_parameters; /* C has no empty structs */\n";
     for (const ParamInfo& p : m.params) {
-        out += fmt::format("    double {};", p.name);
+        out += fmt::format("    {} {};", names.real(), p.name);
         if (!p.doc.empty()) out += " // " + comment_quote(p.doc);
         out += "\n";
     }
@@ -88,9 +101,9 @@ std::string declarations(const Module& module, const CNames& names,
     out +=
         fmt::format("{0} {1}_default_params(void);\n"
                     "// The parameters as an array of np values, in declaration order, and back.\n"
-                    "void {1}_params_to_array(const {0}* p, double* a);\n"
-                    "{0} {1}_params_from_array(const double* a);\n\n",
-                    names.params_type(), x);
+                    "void {1}_params_to_array(const {0}* p, {2}* a);\n"
+                    "{0} {1}_params_from_array(const {2}* a);\n\n",
+                    names.params_type(), x, names.real());
     out += "// M(q) q'' = F(q, q', u, t); u may be NULL when nu == 0.\n";
     for (const FunctionPlan& plan : plans) {
         out += fmt::format("// {}\n", plan.short_form
@@ -98,6 +111,8 @@ std::string declarations(const Module& module, const CNames& names,
                                           : plan.routine->summary);
         out += signature(names, plan) + ";\n";
     }
+    out += "// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)\n";
+    out += rk4_signature(names.rk4()) + ";\n";
     return out;
 }
 
@@ -116,12 +131,25 @@ std::string data_definitions(const Module& module, const CNames& names) {
     return out;
 }
 
+// A parameter's default as a literal of the code's type.
+std::string default_literal(const ParamInfo& p, const Syntax& syntax) {
+    if (!p.default_value) return "NAN";
+    try {
+        return format_literal(*p.default_value, syntax);
+    } catch (const NumberOutOfRange& e) {
+        throw NumberOutOfRange("the default of parameter '" + p.name + "': " + e.what());
+    }
+}
+
 std::string params_functions(const ModelInfo& m, const CNames& names) {
     const std::string& type = names.params_type();
     const std::string& x = names.prefix;
+    const Syntax syntax = syntax_of(names);
     std::string defaults = fmt::format("{0} {1}_default_params(void) {{\n    {0} p;\n", type, x);
-    std::string to = fmt::format("void {}_params_to_array(const {}* p, double* a) {{\n", x, type);
-    std::string from = fmt::format("{0} {1}_params_from_array(const double* a) {{\n", type, x);
+    std::string to =
+        fmt::format("void {}_params_to_array(const {}* p, {}* a) {{\n", x, type, names.real());
+    std::string from =
+        fmt::format("{0} {1}_params_from_array(const {2}* a) {{\n", type, x, names.real());
     if (m.params.empty()) {
         defaults += "    p.no_parameters = 0;\n";
         to += "    (void)p;\n    (void)a;\n";
@@ -130,12 +158,23 @@ std::string params_functions(const ModelInfo& m, const CNames& names) {
     from += fmt::format("    {} p = {}_default_params();\n", type, x);
     for (std::size_t i = 0; i < m.params.size(); ++i) {
         const ParamInfo& p = m.params[i];
-        defaults += fmt::format("    p.{} = {};\n", p.name,
-                                p.default_value ? format_number(*p.default_value) : "NAN");
+        defaults += fmt::format("    p.{} = {};\n", p.name, default_literal(p, syntax));
         to += fmt::format("    a[{}] = p->{};\n", i, p.name);
         from += fmt::format("    p.{} = a[{}];\n", p.name, i);
     }
     return defaults + "    return p;\n}\n\n" + to + "}\n\n" + from + "    return p;\n}\n";
+}
+
+// The body of a plan's function; a constant out of the float range is
+// reported with the function it is in.
+BodyText printed_body(const FunctionPlan& plan, const ModelInfo& model, const Syntax& syntax,
+                      int max_statements, const CalleeCosts& callee_costs) {
+    try {
+        return body_text(*plan.routine, model, syntax, parameter_names(plan), max_statements,
+                         callee_costs);
+    } catch (const NumberOutOfRange& e) {
+        throw NumberOutOfRange("in " + plan.routine->name + ": " + e.what());
+    }
 }
 
 struct Definitions {
@@ -144,9 +183,28 @@ struct Definitions {
     std::vector<FunctionCost> costs;
 };
 
+// The internal routines of the tangent form, static and defined before the
+// functions whose sweeps call them; their costs price those sweeps.
+Definitions internal_definitions(const Module& module, const CNames& names, int max_statements,
+                                 CalleeCosts& callee_costs) {
+    const Syntax syntax = syntax_of(names);
+    Definitions d;
+    for (const FunctionPlan& plan : internal_function_plans(module)) {
+        const BodyText body =
+            printed_body(plan, module.model, syntax, max_statements, callee_costs);
+        d.helpers += body.helpers;
+        d.helpers += "// " + plan.routine->summary + "\nstatic " + signature(names, plan) + " {\n" +
+                     body.text + "}\n\n";
+        d.costs.push_back({plan.routine->name, body.count});
+        callee_costs[plan.routine->name] = body.count;
+    }
+    return d;
+}
+
 Definitions definitions(const Module& module, const CNames& names,
-                        const std::vector<FunctionPlan>& plans, int max_statements) {
-    const Syntax syntax = c_syntax(names.prefix);
+                        const std::vector<FunctionPlan>& plans, int max_statements,
+                        const CalleeCosts& callee_costs) {
+    const Syntax syntax = syntax_of(names);
     Definitions d;
     d.text = params_functions(module.model, names);
     for (const FunctionPlan& plan : plans) {
@@ -156,14 +214,21 @@ Definitions definitions(const Module& module, const CNames& names,
                 if (a->name == "t" || a->name == "u") d.text += "    (void)" + a->name + ";\n";
             d.text += fmt::format("    {}_mass_matrix(q, p, M);\n", names.prefix);
         } else {
-            BodyText body = body_text(*plan.routine, module.model, syntax, parameter_names(plan),
-                                      max_statements);
+            BodyText body = printed_body(plan, module.model, syntax, max_statements, callee_costs);
             d.text += body.text;
             d.helpers += body.helpers;
             d.costs.push_back({plan.routine->name, body.count});
         }
         d.text += "}\n";
     }
+    // rk4_step last: it calls rhs, and its cost is four of rhs's.
+    OperationCount rhs;
+    for (const FunctionCost& c : d.costs)
+        if (c.name == "rhs") rhs = c.count;
+    const int nx = 2 * module.model.nq();
+    d.text += "\n// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)\n" +
+              rk4_definition(names.rk4(), syntax, nx);
+    d.costs.push_back({"rk4_step", rk4_count(nx, rhs)});
     return d;
 }
 
@@ -172,6 +237,7 @@ Definitions definitions(const Module& module, const CNames& names,
 EmittedFiles emit_c(const Module& module, const EmitOptions& options) {
     CNames names;
     names.prefix = options.namespace_name.empty() ? module.model.name : options.namespace_name;
+    names.single_precision = options.real == EmitOptions::Real::single_precision;
     if (!is_c_identifier(names.prefix))
         throw diag::InternalError("code generation: '" + names.prefix + "' is not a C identifier");
     for (const ParamInfo& p : module.model.params)
@@ -181,12 +247,21 @@ EmittedFiles emit_c(const Module& module, const EmitOptions& options) {
     check_header_name(options.header_name);
 
     const std::vector<FunctionPlan> plans = function_plans(module);
-    const Definitions defs = definitions(module, names, plans, options.max_function_statements);
+    CalleeCosts callee_costs;
+    const Definitions internal =
+        internal_definitions(module, names, options.max_function_statements, callee_costs);
+    Definitions defs =
+        definitions(module, names, plans, options.max_function_statements, callee_costs);
+    defs.helpers = internal.helpers + defs.helpers;
+    defs.costs.insert(defs.costs.end(), internal.costs.begin(), internal.costs.end());
     const std::string comment = header_comment(module, options, "C", names.prefix, defs.costs);
     const std::string decls = declarations(module, names, plans);
 
     std::string body = data_definitions(module, names);
-    if (uses_solver(module)) body += "\n" + solver_helpers_text(c_syntax(names.prefix), "static ");
+    if (uses_solver(module)) {
+        const Syntax syntax = syntax_of(names);
+        body += "\n" + solver_helpers_text(syntax, "static ");
+    }
     if (!defs.helpers.empty()) body += "\n" + defs.helpers;
     body += "\n" + defs.text;
 

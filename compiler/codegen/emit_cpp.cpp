@@ -149,8 +149,25 @@ struct Definitions {
     std::vector<FunctionCost> costs;
 };
 
+// The internal routines of the tangent form, defined in the anonymous
+// namespace before the functions whose sweeps call them.
+Definitions internal_definitions(const Module& module, int max_statements, CalleeCosts& costs) {
+    const Syntax syntax = cpp_syntax();
+    Definitions d;
+    for (const FunctionPlan& plan : internal_function_plans(module)) {
+        BodyText body = body_text(*plan.routine, module.model, syntax, parameter_names(plan),
+                                  max_statements, costs);
+        d.helpers += body.helpers;
+        d.helpers +=
+            "// " + plan.routine->summary + "\n" + signature(plan) + " {\n" + body.text + "}\n\n";
+        d.costs.push_back({plan.routine->name, body.count});
+        costs[plan.routine->name] = body.count;
+    }
+    return d;
+}
+
 Definitions definitions(const Module& module, const std::vector<FunctionPlan>& plans,
-                        int max_statements) {
+                        int max_statements, const CalleeCosts& callee_costs) {
     const Syntax syntax = cpp_syntax();
     Definitions d;
     d.text = params_functions(module.model);
@@ -162,7 +179,7 @@ Definitions definitions(const Module& module, const std::vector<FunctionPlan>& p
             d.text += "    mass_matrix(q, p, M);\n";
         } else {
             BodyText body = body_text(*plan.routine, module.model, syntax, parameter_names(plan),
-                                      max_statements);
+                                      max_statements, callee_costs);
             d.text += body.text;
             d.helpers += body.helpers;
             d.costs.push_back({plan.routine->name, body.count});
@@ -186,7 +203,12 @@ EmittedFiles emit_cpp(const Module& module, const EmitOptions& options) {
     check_header_name(options.header_name);
 
     const std::vector<FunctionPlan> plans = function_plans(module);
-    const Definitions defs = definitions(module, plans, options.max_function_statements);
+    CalleeCosts callee_costs;
+    const Definitions internal =
+        internal_definitions(module, options.max_function_statements, callee_costs);
+    Definitions defs = definitions(module, plans, options.max_function_statements, callee_costs);
+    defs.helpers = internal.helpers + defs.helpers;
+    defs.costs.insert(defs.costs.end(), internal.costs.begin(), internal.costs.end());
     const std::string comment = header_comment(module, options, "C++17", ns, defs.costs);
     const std::string limits = any_param_without_default(module.model) ? "#include <limits>\n" : "";
     const std::string decls = declarations(module, ns, plans);

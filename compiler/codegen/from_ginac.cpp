@@ -91,6 +91,8 @@ GinacImporter::GinacImporter(Graph& graph, const symbolic::Equations& eq) : grap
         add(eq.params[i].sym, SymbolKind::param, static_cast<int>(i));
     for (std::size_t i = 0; i < eq.a.size(); ++i)
         add(eq.a[i], SymbolKind::acceleration, static_cast<int>(i));
+    for (std::size_t i = 0; i < eq.seed.size(); ++i)
+        add(eq.seed[i], SymbolKind::seed, static_cast<int>(i));
 }
 
 NodeId GinacImporter::memoised(const GiNaC::ex& e) const {

@@ -5,6 +5,7 @@ namespace yamsc::codegen {
 std::vector<FunctionPlan> function_plans(const Module& module) {
     std::vector<FunctionPlan> plans;
     for (const Routine& r : module.routines) {
+        if (r.internal) continue;
         FunctionPlan full;
         full.routine = &r;
         for (const Argument& a : r.arguments) full.parameters.push_back(&a);
@@ -18,6 +19,18 @@ std::vector<FunctionPlan> function_plans(const Module& module) {
             full.forwards_to_short = true;
         }
         plans.push_back(full);
+    }
+    return plans;
+}
+
+std::vector<FunctionPlan> internal_function_plans(const Module& module) {
+    std::vector<FunctionPlan> plans;
+    for (const Routine& r : module.routines) {
+        if (!r.internal) continue;
+        FunctionPlan plan;
+        plan.routine = &r;
+        for (const Argument& a : r.arguments) plan.parameters.push_back(&a);
+        plans.push_back(plan);
     }
     return plans;
 }

@@ -16,7 +16,10 @@ struct FunctionPlan {
     bool forwards_to_short = false; // the full mass_matrix calling the short one
 };
 
+/// The API functions (internal routines excluded).
 std::vector<FunctionPlan> function_plans(const Module& module);
+/// The internal routines (the tangent form's helpers), file-local in the output.
+std::vector<FunctionPlan> internal_function_plans(const Module& module);
 
 std::vector<std::string> parameter_names(const FunctionPlan& plan);
 

@@ -22,8 +22,9 @@ enum class SymbolKind : std::uint8_t {
     input,        // input channel u
     param,        // parameter
     acceleration, // the vector `a` of Equations::dMa_dq
+    seed,         // a direction of the tangent form, Equations::seed
 };
-inline constexpr int symbol_kind_count = 7;
+inline constexpr int symbol_kind_count = 8;
 
 struct SymbolRef {
     SymbolKind kind = SymbolKind::time;

@@ -42,9 +42,12 @@ std::string header_comment(const Module& module, const EmitOptions& options,
     out += fmt::format("// Source: {}\n", comment_quote(m.source_path));
     out += fmt::format("// Source digest: {}\n", comment_quote(m.source_digest));
     out += fmt::format("// Options: {}\n", comment_quote(options.command_line));
-    out += fmt::format("// Code: {}, {} {}, powers up to {} as products, inline depth <= {},\n"
+    const bool is_c = language == "C";
+    const bool single = options.real == EmitOptions::Real::single_precision;
+    out += fmt::format("// Code: {}{}, {} {}, powers up to {} as products, inline depth <= {},\n"
                        "//   functions of more than {} statements cut into parts\n",
-                       language, language == "C" ? "prefix" : "namespace", namespace_name,
+                       language, single ? " in single precision (float)" : "",
+                       is_c ? "prefix" : "namespace", namespace_name,
                        module.options.max_multiplied_power, module.options.max_inline_depth,
                        options.max_function_statements);
     out += "//\n// M(q) q'' = F(q, q', u, t); arrays are row-major; x = [q, q'].\n";
@@ -60,7 +63,12 @@ std::string header_comment(const Module& module, const EmitOptions& options,
         out += "\n";
     }
     list(out, "Outputs, ny", "y", m.outputs);
-    out += "//\n// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):\n";
+    if (is_c)
+        out += "//\n// Operations per call, worst case: the code is straight-line (loops of fixed\n"
+               "// length only), so every call does exactly these (the LDL^T solves of rhs and\n"
+               "// rhs_jacobian and the four rhs calls of rk4_step included):\n";
+    else
+        out += "//\n// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):\n";
     std::size_t width = 0;
     for (const FunctionCost& c : costs) width = std::max(width, c.name.size());
     for (const FunctionCost& c : costs)

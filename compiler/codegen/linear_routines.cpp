@@ -1,6 +1,7 @@
 #include "codegen/linear_routines.hpp"
 
 #include "codegen/routine_builder.hpp"
+#include "codegen/symbol_binding.hpp"
 #include "symbolic/linearize.hpp"
 
 #include <utility>
@@ -10,55 +11,10 @@ namespace {
 
 using NodeMatrix = std::vector<std::vector<NodeId>>;
 
-Expr load(const char* array, int index) {
-    Expr e;
-    e.kind = ExprKind::load;
-    e.array = array;
-    e.index = index;
-    return e;
-}
-
-Argument arg(const char* name, ArgumentKind kind) {
-    return Argument{name, kind, false};
-}
-
-/// Symbols read from the operating point (q0, qd0, u0), `a` from the solved
-/// accelerations qdd0, and t = 0: the linear functions have no time argument
-/// (a model with explicit time is linearized at t = 0).
-RoutineBuilder::Binding point_binding() {
-    return [](SymbolRef s) -> std::optional<Expr> {
-        switch (s.kind) {
-        case SymbolKind::time: {
-            Expr e;
-            e.kind = ExprKind::number;
-            e.value = 0.0;
-            return e;
-        }
-        case SymbolKind::q:
-            return load("q0", s.index);
-        case SymbolKind::qd:
-            return load("qd0", s.index);
-        case SymbolKind::input:
-            return load("u0", s.index);
-        case SymbolKind::param: {
-            Expr e;
-            e.kind = ExprKind::param;
-            e.index = s.index;
-            return e;
-        }
-        case SymbolKind::acceleration:
-            return load("qdd0", s.index);
-        case SymbolKind::qdd:
-            return std::nullopt;
-        }
-        return std::nullopt;
-    };
-}
-
 std::vector<Argument> point_arguments(std::vector<Argument> outputs) {
     std::vector<Argument> args{
-        arg("q0", ArgumentKind::input_array), arg("qd0", ArgumentKind::input_array),
-        arg("u0", ArgumentKind::input_array), arg("p", ArgumentKind::params)};
+        argument("q0", ArgumentKind::input_array), argument("qd0", ArgumentKind::input_array),
+        argument("u0", ArgumentKind::input_array), argument("p", ArgumentKind::params)};
     for (Argument& a : outputs) args.push_back(std::move(a));
     return args;
 }
@@ -90,11 +46,11 @@ Routine linear_routine(Graph& g, const LinearSources& in, int nq, int nu, bool a
     RoutineBuilder b(g, "linear",
                      "M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with "
                      "q''0 = M0^-1 F0 (eq. 25)",
-                     point_arguments({arg("M0", ArgumentKind::output_array),
-                                      arg("C0", ArgumentKind::output_array),
-                                      arg("K0", ArgumentKind::output_array),
-                                      arg("Q0", ArgumentKind::output_array)}),
-                     point_binding());
+                     point_arguments({argument("M0", ArgumentKind::output_array),
+                                      argument("C0", ArgumentKind::output_array),
+                                      argument("K0", ArgumentKind::output_array),
+                                      argument("Q0", ArgumentKind::output_array)}),
+                     bind(SymbolSource::operating_point()));
     for (int i = 0; i < nq; ++i)
         for (int j = 0; j <= i; ++j) b.assign("M0", i * nq + j, in.M[i][j]);
     for (int i = 0; i < nq; ++i)
@@ -117,9 +73,9 @@ Routine state_space_routine(Graph& g, const LinearSources& in, int nq, int nu, b
                             const Options& options) {
     RoutineBuilder b(g, "state_space",
                      "x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu",
-                     point_arguments({arg("A", ArgumentKind::output_array),
-                                      arg("B", ArgumentKind::output_array)}),
-                     point_binding());
+                     point_arguments({argument("A", ArgumentKind::output_array),
+                                      argument("B", ArgumentKind::output_array)}),
+                     bind(SymbolSource::operating_point()));
     const int nx = 2 * nq;
     const NodeId zero = g.number(0.0), one = g.number(1.0);
     for (int i = 0; i < nq; ++i)
@@ -155,9 +111,9 @@ Routine output_matrices_routine(GinacImporter& importer, const Graph& g,
     }
     RoutineBuilder b(g, "output_matrices",
                      "dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu",
-                     point_arguments({arg("C", ArgumentKind::output_array),
-                                      arg("D", ArgumentKind::output_array)}),
-                     point_binding());
+                     point_arguments({argument("C", ArgumentKind::output_array),
+                                      argument("D", ArgumentKind::output_array)}),
+                     bind(SymbolSource::operating_point()));
     for (std::size_t i = 0; i < C.size(); ++i)
         for (int j = 0; j < nx; ++j) b.assign("C", static_cast<int>(i) * nx + j, C[i][j]);
     for (std::size_t i = 0; i < D.size(); ++i)
@@ -187,19 +143,19 @@ void add_operating_point(Module& module, const symbolic::Equations& eq,
     for (const GiNaC::ex& e : op.qd) qd.push_back(importer.import(e));
     for (const GiNaC::ex& e : op.u) u.push_back(importer.import(e));
     // Only parameters: the checker allows nothing else in the point.
-    RoutineBuilder b(graph, "operating_point",
-                     op.declared ? "the model's operating point (its linearize block)"
-                                 : "the model's operating point (no linearize block: zeros)",
-                     {arg("p", ArgumentKind::params), arg("q0", ArgumentKind::output_array),
-                      arg("qd0", ArgumentKind::output_array),
-                      arg("u0", ArgumentKind::output_array)},
-                     [](SymbolRef s) -> std::optional<Expr> {
-                         if (s.kind != SymbolKind::param) return std::nullopt;
-                         Expr e;
-                         e.kind = ExprKind::param;
-                         e.index = s.index;
-                         return e;
-                     });
+    RoutineBuilder b(
+        graph, "operating_point",
+        op.declared ? "the model's operating point (its linearize block)"
+                    : "the model's operating point (no linearize block: zeros)",
+        {argument("p", ArgumentKind::params), argument("q0", ArgumentKind::output_array),
+         argument("qd0", ArgumentKind::output_array), argument("u0", ArgumentKind::output_array)},
+        [](SymbolRef s) -> std::optional<Expr> {
+            if (s.kind != SymbolKind::param) return std::nullopt;
+            Expr e;
+            e.kind = ExprKind::param;
+            e.index = s.index;
+            return e;
+        });
     for (std::size_t i = 0; i < q.size(); ++i) b.assign("q0", static_cast<int>(i), q[i]);
     for (std::size_t i = 0; i < qd.size(); ++i) b.assign("qd0", static_cast<int>(i), qd[i]);
     for (std::size_t i = 0; i < u.size(); ++i) b.assign("u0", static_cast<int>(i), u[i]);

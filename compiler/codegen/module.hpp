@@ -24,6 +24,9 @@ struct Options {
     /// A model compiled only to be simulated can leave them out: they about
     /// double what the C++ compiler has to digest.
     bool linear_model = true;
+    /// Parameters (by name) whose derivatives d(M0, C0, K0)/dp the routine
+    /// `linear_sensitivities` computes; empty: no such routine.
+    std::vector<std::string> sensitivity_params;
 };
 
 enum class ExprKind : std::uint8_t {
@@ -67,6 +70,33 @@ enum class StepKind {
     evaluate, // define `temporaries` (in order), then perform `assignments`
     factor,   // LDL^T-factorise the n x n local `matrix` in place (lower triangle read)
     solve,    // target + offset, an n x columns row-major block, := matrix^-1 * itself
+    sweep,    // a loop calling an internal routine once per unit direction (Sweep)
+    call,     // one call of an internal routine (Call), e.g. the prologue of sweeps
+};
+
+/// callee(arguments...): the caller's spelling of every argument, outputs included.
+struct Call {
+    std::string callee;
+    std::vector<std::string> arguments;
+};
+
+/// Column k < count of a matrix from an internal routine (the tangent form,
+/// docs/benchmarks.md): the callee is called with the unit direction
+/// e_(first + k) (of seed_size values) as its argument `seed_argument` and a
+/// scratch array of result_size values as its last argument (its only output);
+/// then target[offset + i * stride + k] = scale * result[result_first + i]
+/// for i < rows.
+struct Sweep {
+    std::string callee;
+    /// The caller's spelling of each callee argument but the last (the entry at
+    /// seed_argument is ignored): "t", "x + 2", "p", "0.0".
+    std::vector<std::string> arguments;
+    int seed_argument = 0;
+    int seed_size = 0, first = 0, count = 0;
+    int result_size = 0, result_first = 0, rows = 0;
+    std::string target;
+    int offset = 0, stride = 0;
+    double scale = 1.0;
 };
 
 struct Step {
@@ -78,6 +108,8 @@ struct Step {
     std::string target;
     int offset = 0;
     int columns = 0;
+    Sweep sweep; // StepKind::sweep
+    Call call;   // StepKind::call
 };
 
 enum class ArgumentKind { scalar, input_array, params, output_array };
@@ -96,6 +128,9 @@ struct LocalArray {
 struct Routine {
     std::string name; // mass_matrix, forcing, jacobians, outputs, rhs, rhs_jacobian, linear, ...
     std::string summary;
+    /// A helper of the tangent form, called by sweeps: file-local in the
+    /// generated code, defined before its callers, not part of the API.
+    bool internal = false;
     std::vector<Argument> arguments;
     std::vector<LocalArray> locals;
     std::vector<Expr> exprs;

@@ -4,6 +4,9 @@
 #include "codegen/linear_routines.hpp"
 #include "codegen/module.hpp"
 #include "codegen/routine_builder.hpp"
+#include "codegen/sensitivity_routines.hpp"
+#include "codegen/symbol_binding.hpp"
+#include "codegen/tangent_routines.hpp"
 #include "diag/diagnostics.hpp"
 
 #include <string>
@@ -67,65 +70,33 @@ ModelInfo model_info(const symbolic::Equations& eq) {
     return m;
 }
 
-Expr load(const char* array, int index) {
-    Expr e;
-    e.kind = ExprKind::load;
-    e.array = array;
-    e.index = index;
-    return e;
+/// M reads no rates: a q' in it would be a malformed model.
+SymbolSource without_rates() {
+    SymbolSource s;
+    s.qd.clear();
+    return s;
 }
 
-Argument arg(const char* name, ArgumentKind kind) {
-    return Argument{name, kind, false};
-}
-
-/// How symbols are read: from (q, qd) in the q-form routines, from x = [q, q']
-/// in rhs and rhs_jacobian. `a` is bound to the solved accelerations when
-/// `accelerations` names the local array holding them.
-RoutineBuilder::Binding binding(int nq, bool state_vector, bool with_rates,
-                                const char* accelerations) {
-    return [=](SymbolRef s) -> std::optional<Expr> {
-        switch (s.kind) {
-        case SymbolKind::time: {
-            Expr e;
-            e.kind = ExprKind::time;
-            return e;
-        }
-        case SymbolKind::q:
-            return state_vector ? load("x", s.index) : load("q", s.index);
-        case SymbolKind::qd:
-            if (!with_rates) return std::nullopt;
-            return state_vector ? load("x", nq + s.index) : load("qd", s.index);
-        case SymbolKind::input:
-            return load("u", s.index);
-        case SymbolKind::param: {
-            Expr e;
-            e.kind = ExprKind::param;
-            e.index = s.index;
-            return e;
-        }
-        case SymbolKind::acceleration:
-            if (accelerations == nullptr) return std::nullopt;
-            return load(accelerations, s.index);
-        case SymbolKind::qdd:
-            return std::nullopt;
-        }
-        return std::nullopt;
-    };
+/// rhs_jacobian: `a` bound to the accelerations solved into the local qdd.
+SymbolSource solved_accelerations(int nq) {
+    SymbolSource s = SymbolSource::state_vector(nq);
+    s.a = "qdd";
+    return s;
 }
 
 std::vector<Argument> q_form_arguments(std::vector<Argument> outputs) {
-    std::vector<Argument> args{arg("t", ArgumentKind::scalar), arg("q", ArgumentKind::input_array),
-                               arg("qd", ArgumentKind::input_array),
-                               arg("u", ArgumentKind::input_array), arg("p", ArgumentKind::params)};
+    std::vector<Argument> args{
+        argument("t", ArgumentKind::scalar), argument("q", ArgumentKind::input_array),
+        argument("qd", ArgumentKind::input_array), argument("u", ArgumentKind::input_array),
+        argument("p", ArgumentKind::params)};
     for (Argument& a : outputs) args.push_back(std::move(a));
     return args;
 }
 
 std::vector<Argument> x_form_arguments(const char* output) {
-    return {arg("t", ArgumentKind::scalar), arg("x", ArgumentKind::input_array),
-            arg("u", ArgumentKind::input_array), arg("p", ArgumentKind::params),
-            arg(output, ArgumentKind::output_array)};
+    return {argument("t", ArgumentKind::scalar), argument("x", ArgumentKind::input_array),
+            argument("u", ArgumentKind::input_array), argument("p", ArgumentKind::params),
+            argument(output, ArgumentKind::output_array)};
 }
 
 /// The lower triangle of M (all a factorisation reads), row by row.
@@ -138,10 +109,10 @@ void assign_lower_triangle(RoutineBuilder& b, const char* array, const NodeMatri
 Routine mass_matrix_routine(const Graph& g, const ImportedEquations& in, int nq,
                             const Options& options) {
     RoutineBuilder b(g, "mass_matrix", "M(q) of M q'' = F (symmetric, row-major)",
-                     {arg("t", ArgumentKind::scalar), arg("q", ArgumentKind::input_array),
-                      arg("u", ArgumentKind::input_array), arg("p", ArgumentKind::params),
-                      arg("M", ArgumentKind::output_array)},
-                     binding(nq, false, false, nullptr));
+                     {argument("t", ArgumentKind::scalar), argument("q", ArgumentKind::input_array),
+                      argument("u", ArgumentKind::input_array), argument("p", ArgumentKind::params),
+                      argument("M", ArgumentKind::output_array)},
+                     bind(without_rates()));
     assign_lower_triangle(b, "M", in.M);
     // M is symmetric: the upper triangle repeats the lower one.
     for (int i = 0; i < nq; ++i)
@@ -152,8 +123,7 @@ Routine mass_matrix_routine(const Graph& g, const ImportedEquations& in, int nq,
 Routine forcing_routine(const Graph& g, const ImportedEquations& in, int nq,
                         const Options& options) {
     RoutineBuilder b(g, "forcing", "F(q, q', u, t) of M q'' = F",
-                     q_form_arguments({arg("F", ArgumentKind::output_array)}),
-                     binding(nq, false, true, nullptr));
+                     q_form_arguments({argument("F", ArgumentKind::output_array)}), bind({}));
     for (int i = 0; i < nq; ++i) b.assign("F", i, in.F[static_cast<std::size_t>(i)]);
     return std::move(b).finish(options);
 }
@@ -161,10 +131,10 @@ Routine forcing_routine(const Graph& g, const ImportedEquations& in, int nq,
 Routine jacobians_routine(const Graph& g, const ImportedEquations& in, int nq, int nu,
                           const Options& options) {
     RoutineBuilder b(g, "jacobians", "dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)",
-                     q_form_arguments({arg("dF_dq", ArgumentKind::output_array),
-                                       arg("dF_dqd", ArgumentKind::output_array),
-                                       arg("dF_du", ArgumentKind::output_array)}),
-                     binding(nq, false, true, nullptr));
+                     q_form_arguments({argument("dF_dq", ArgumentKind::output_array),
+                                       argument("dF_dqd", ArgumentKind::output_array),
+                                       argument("dF_du", ArgumentKind::output_array)}),
+                     bind({}));
     for (int i = 0; i < nq; ++i)
         for (int j = 0; j < nq; ++j) b.assign("dF_dq", i * nq + j, in.dF_dq[i][j]);
     for (int i = 0; i < nq; ++i)
@@ -174,11 +144,9 @@ Routine jacobians_routine(const Graph& g, const ImportedEquations& in, int nq, i
     return std::move(b).finish(options);
 }
 
-Routine outputs_routine(const Graph& g, const ImportedEquations& in, int nq,
-                        const Options& options) {
+Routine outputs_routine(const Graph& g, const ImportedEquations& in, const Options& options) {
     RoutineBuilder b(g, "outputs", "the model's outputs y(q, q', u, t)",
-                     q_form_arguments({arg("y", ArgumentKind::output_array)}),
-                     binding(nq, false, true, nullptr));
+                     q_form_arguments({argument("y", ArgumentKind::output_array)}), bind({}));
     for (std::size_t i = 0; i < in.y.size(); ++i) b.assign("y", static_cast<int>(i), in.y[i]);
     return std::move(b).finish(options);
 }
@@ -186,7 +154,7 @@ Routine outputs_routine(const Graph& g, const ImportedEquations& in, int nq,
 Routine rhs_routine(const Graph& g, const ImportedEquations& in, const std::vector<NodeId>& rates,
                     int nq, const Options& options) {
     RoutineBuilder b(g, "rhs", "x' = [q', M^-1 F] for x = [q, q']", x_form_arguments("xdot"),
-                     binding(nq, true, true, nullptr));
+                     bind(SymbolSource::state_vector(nq)));
     if (nq > 0) b.local("M", nq * nq);
     for (int i = 0; i < nq; ++i) b.assign("xdot", i, rates[static_cast<std::size_t>(i)]);
     assign_lower_triangle(b, "M", in.M);
@@ -203,7 +171,7 @@ Routine rhs_routine(const Graph& g, const ImportedEquations& in, const std::vect
 Routine rhs_jacobian_routine(Graph& g, const ImportedEquations& in, int nq,
                              const Options& options) {
     RoutineBuilder b(g, "rhs_jacobian", "d(rhs)/dx, 2nq x 2nq, row-major", x_form_arguments("J"),
-                     binding(nq, true, true, "qdd"));
+                     bind(solved_accelerations(nq)));
     const int nx = 2 * nq;
     const NodeId zero = g.number(0.0);
     const NodeId one = g.number(1.0);
@@ -233,6 +201,13 @@ Routine rhs_jacobian_routine(Graph& g, const ImportedEquations& in, int nq,
 } // namespace
 
 Module build_module(const symbolic::Equations& eq, const Options& options) {
+    if (eq.tangent_form) {
+        Module m;
+        m.model = model_info(eq);
+        m.options = options;
+        add_tangent_routines(m, eq);
+        return m;
+    }
     check_shapes(eq);
     const int nq = eq.nq();
     Graph graph(options.max_multiplied_power);
@@ -261,13 +236,16 @@ Module build_module(const symbolic::Equations& eq, const Options& options) {
     m.routines.push_back(mass_matrix_routine(graph, in, nq, options));
     m.routines.push_back(forcing_routine(graph, in, nq, options));
     m.routines.push_back(jacobians_routine(graph, in, nq, eq.nu(), options));
-    m.routines.push_back(outputs_routine(graph, in, nq, options));
+    m.routines.push_back(outputs_routine(graph, in, options));
     m.routines.push_back(rhs_routine(graph, in, rates, nq, options));
     m.routines.push_back(rhs_jacobian_routine(graph, in, nq, options));
     if (options.linear_model)
         add_linear_routines(graph, importer, eq,
                             {in.M, in.F, in.dF_dq, in.dF_dqd, in.dF_du, in.dMa_dq}, options,
                             m.routines);
+    add_sensitivity_routine(graph, importer, eq,
+                            {in.M, in.F, in.dF_dq, in.dF_dqd, in.dF_du, in.dMa_dq}, options,
+                            m.routines); // only with options.sensitivity_params
     return m;
 }
 

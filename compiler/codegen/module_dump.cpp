@@ -22,7 +22,8 @@ void dump_routine(std::string& out, const Routine& r, const ModelInfo& model) {
         args += (args.empty() ? "" : ", ") + a.name;
         if (!a.used) unused += (unused.empty() ? "" : ", ") + a.name;
     }
-    out += fmt::format("\nroutine {}({})  # {}\n", r.name, args, r.summary);
+    out += fmt::format("\nroutine {}{}({})  # {}\n", r.internal ? "(internal) " : "", r.name, args,
+                       r.summary);
     if (!unused.empty()) out += fmt::format("  unused: {}\n", unused);
     for (const LocalArray& l : r.locals) out += fmt::format("  local {}[{}]\n", l.name, l.size);
     const Syntax syntax = neutral_syntax();
@@ -49,6 +50,21 @@ void dump_routine(std::string& out, const Routine& r, const ModelInfo& model) {
                                s.target, s.offset, s.n, s.columns);
             solver += ldlt_solve_count(s.n, s.columns);
             break;
+        case StepKind::call: {
+            std::string args;
+            for (const std::string& a : s.call.arguments) args += (args.empty() ? "" : ", ") + a;
+            out += fmt::format("  call {}({})\n", s.call.callee, args);
+            break;
+        }
+        case StepKind::sweep: {
+            const Sweep& w = s.sweep;
+            out +=
+                fmt::format("  sweep k < {}: {}[{} + i*{} + k] = {} * {}(.., e_({} + k), ..)[{} + "
+                            "i], i < {}\n",
+                            w.count, w.target, w.offset, w.stride, format_number(w.scale), w.callee,
+                            w.first, w.result_first, w.rows);
+            break;
+        }
         }
     }
     OperationCount total = printer.count();

@@ -102,7 +102,7 @@ ExprPrinter::Text ExprPrinter::inline_text(int expr) {
     }
     switch (e.kind) {
     case ExprKind::number:
-        return {format_number(e.value), e.value < 0.0 ? unary : atom};
+        return {format_literal(e.value, syntax_), e.value < 0.0 ? unary : atom};
     case ExprKind::load:
         return {e.array + "[" + std::to_string(e.index) + "]", atom};
     case ExprKind::param:
@@ -134,7 +134,7 @@ ExprPrinter::Text ExprPrinter::product(const std::vector<ExprOperand>& factors,
     std::vector<std::string> numerator;
     std::vector<std::string> denominator;
     const double magnitude = std::fabs(coefficient);
-    if (magnitude != 1.0) numerator.push_back(format_number(magnitude));
+    if (magnitude != 1.0) numerator.push_back(format_literal(magnitude, syntax_));
     for (const ExprOperand& f : factors) {
         const std::string text = operand(f.expr, unary);
         const long repeat = std::lround(std::fabs(f.weight));
@@ -142,7 +142,7 @@ ExprPrinter::Text ExprPrinter::product(const std::vector<ExprOperand>& factors,
     }
     if (numerator.size() > 1) count_.muls += static_cast<long>(numerator.size()) - 1;
     if (denominator.size() > 1) count_.muls += static_cast<long>(denominator.size()) - 1;
-    std::string text = numerator.empty() ? "1.0" : join(numerator, "*");
+    std::string text = numerator.empty() ? format_literal(1.0, syntax_) : join(numerator, "*");
     if (!denominator.empty()) {
         ++count_.divs;
         text += "/";
@@ -190,13 +190,14 @@ ExprPrinter::Text ExprPrinter::sum(const Expr& e) {
         const double magnitude = std::fabs(op.weight);
         if (magnitude == 1.0) return operand(op.expr, multiplicative);
         ++count_.muls;
-        return format_number(magnitude) + "*" + operand(op.expr, unary);
+        return format_literal(magnitude, syntax_) + "*" + operand(op.expr, unary);
     };
     std::vector<std::pair<bool, std::string>> printed; // (negative, magnitude's text)
     for (const bool negative : {false, true})
         for (const ExprOperand& op : terms)
             if ((sign_of(op) < 0.0) == negative) printed.emplace_back(negative, magnitude_text(op));
-    for (const double c : constants) printed.emplace_back(c < 0.0, format_number(std::fabs(c)));
+    for (const double c : constants)
+        printed.emplace_back(c < 0.0, format_literal(std::fabs(c), syntax_));
     count_.adds += static_cast<long>(printed.size()) - 1;
     std::string text;
     for (std::size_t i = 0; i < printed.size(); ++i) {

@@ -25,6 +25,8 @@ const char* symbol_kind_name(SymbolKind kind) {
         return "p";
     case SymbolKind::acceleration:
         return "a";
+    case SymbolKind::seed:
+        return "seed";
     }
     return "?";
 }
@@ -93,6 +95,20 @@ void RoutineBuilder::solve(const std::string& matrix, int n, const std::string& 
     routine_.steps.push_back(std::move(s));
 }
 
+void RoutineBuilder::sweep(Sweep sweep) {
+    Step s;
+    s.kind = StepKind::sweep;
+    s.sweep = std::move(sweep);
+    routine_.steps.push_back(std::move(s));
+}
+
+void RoutineBuilder::call(Call call) {
+    Step s;
+    s.kind = StepKind::call;
+    s.call = std::move(call);
+    routine_.steps.push_back(std::move(s));
+}
+
 Expr RoutineBuilder::leaf_of(const Node& symbol_node) const {
     std::optional<Expr> leaf = binding_(symbol_node.symbol);
     if (!leaf)
@@ -111,6 +127,17 @@ int RoutineBuilder::import(NodeId root) {
         NodeId node;
         std::size_t next;
     };
+    // A node the routine reads ready-made (frontier_) is a leaf, like a symbol.
+    auto as_leaf = [&](NodeId id) {
+        if (!frontier_) return false;
+        std::optional<Expr> leaf = frontier_(id);
+        if (!leaf) return false;
+        expr_of_node_[id] = static_cast<int>(routine_.exprs.size());
+        routine_.exprs.push_back(std::move(*leaf));
+        step_of_expr_.push_back(step);
+        return true;
+    };
+    if (as_leaf(root)) return expr_of_node_[root];
     std::vector<Frame> stack{{root, 0}};
     while (!stack.empty()) {
         Frame& top = stack.back();
@@ -118,7 +145,7 @@ int RoutineBuilder::import(NodeId root) {
         const OperandSpan operands = graph_.operands(top.node);
         if (top.next < operands.size()) {
             const NodeId child = operands[top.next++].node;
-            if (expr_of_node_[child] < 0) stack.push_back({child, 0});
+            if (expr_of_node_[child] < 0 && !as_leaf(child)) stack.push_back({child, 0});
             continue;
         }
         Expr e;
@@ -200,6 +227,13 @@ Routine RoutineBuilder::finish(const Options& options) && {
     for (const Step& s : routine_.steps) {
         for (const Assignment& a : s.assignments) mark_used(routine_, a.array);
         if (s.kind == StepKind::solve) mark_used(routine_, s.target);
+        if (s.kind == StepKind::sweep) mark_used(routine_, s.sweep.target);
+        const std::vector<std::string>* spellings = s.kind == StepKind::sweep  ? &s.sweep.arguments
+                                                    : s.kind == StepKind::call ? &s.call.arguments
+                                                                               : nullptr;
+        if (spellings != nullptr)
+            for (const std::string& spelling : *spellings) // "x + 2": the array is x
+                mark_used(routine_, spelling.substr(0, spelling.find(' ')));
     }
     return std::move(routine_);
 }

@@ -22,6 +22,11 @@ public:
     RoutineBuilder(const Graph& graph, std::string name, std::string summary,
                    std::vector<Argument> arguments, Binding binding);
 
+    /// Nodes the routine reads ready-made instead of computing them (e.g. from
+    /// a work array a prologue filled): the leaf for such a node, or nullopt.
+    using Frontier = std::function<std::optional<Expr>(NodeId)>;
+    void set_frontier(Frontier frontier) { frontier_ = std::move(frontier); }
+
     void local(std::string name, int size);
     /// array[index] = value, in the current evaluation step.
     void assign(const std::string& array, int index, NodeId value);
@@ -30,6 +35,10 @@ public:
     void factor(const std::string& matrix, int n);
     void solve(const std::string& matrix, int n, const std::string& target, int offset,
                int columns);
+    /// A loop of calls to an internal routine, one per unit direction (module.hpp).
+    void sweep(Sweep sweep);
+    /// One call of an internal routine.
+    void call(Call call);
 
     /// Chooses and names the temporaries: every non-leaf node used more than once,
     /// every call, every base of a repeated multiplication, and whatever keeps
@@ -43,6 +52,7 @@ private:
 
     const Graph& graph_;
     Binding binding_;
+    Frontier frontier_;
     Routine routine_;
     std::vector<int> expr_of_node_; // by NodeId; -1: not imported yet
     std::vector<int> step_of_expr_; // the evaluation step that first needs each expr

@@ -1,5 +1,7 @@
 #include "codegen/syntax.hpp"
 
+#include <cfloat>
+#include <cmath>
 #include <fmt/format.h>
 
 namespace yamsc::codegen {
@@ -26,9 +28,16 @@ Syntax cpp_syntax() {
     return s;
 }
 
-Syntax c_syntax(const std::string& prefix) {
+Syntax c_syntax(const std::string& prefix, bool single_precision) {
     Syntax s = with_prefix("");
     s.functions[static_cast<int>(Function::abs)] = "fabs";
+    if (single_precision) {
+        // C99's float functions: sinf, fabsf, powf, ...; a call of the double
+        // one would compute in double and convert back.
+        for (std::string& f : s.functions) f += "f";
+        s.single_precision = true;
+        s.real_type = "float";
+    }
     s.param_access = "p->";
     s.helper_prefix = prefix + "_";
     s.helper_linkage = "static ";
@@ -47,6 +56,30 @@ std::string format_number(double value) {
     std::string text = fmt::format("{}", value);
     if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
     return text;
+}
+
+std::string format_float(double value) {
+    // Checked before the conversion: a double beyond the float range has no
+    // float value to convert to, and clamping it to FLT_MAX would silently
+    // compute another model.
+    if (!std::isfinite(value) || std::fabs(value) > FLT_MAX)
+        throw NumberOutOfRange("the number " + format_number(value) +
+                               " does not fit in a float (at most 3.4e38 in magnitude): "
+                               "compile with --real double");
+    // A nonzero constant below the smallest float (1.4e-45) becomes a signed
+    // zero, as float arithmetic would round the term anyway: times any float
+    // it is below 5e-7, and in practice such constants are round-off of the
+    // model's data (4e-54 in the floating template's forcing).
+    const auto single = static_cast<float>(value);
+    // fmt's default for float is the shortest representation that round-trips
+    // as a float, so 9.81 prints as 9.81, not as the double 9.8100004196166992.
+    std::string text = fmt::format("{}", single);
+    if (text.find_first_of(".eE") == std::string::npos) text += ".0";
+    return text + "f";
+}
+
+std::string format_literal(double value, const Syntax& syntax) {
+    return syntax.single_precision ? format_float(value) : format_number(value);
 }
 
 } // namespace yamsc::codegen

@@ -15,13 +15,16 @@ namespace yamsc::driver {
 
 struct CompileOptions {
     std::string model;
-    std::string output;     // -o
-    std::string header;     // --header
-    std::string lang;       // cpp | c | latex; empty: from the extension of -o
-    std::string name_space; // --namespace
-    std::string dump;       // ast | model | equations | module: print and stop
-    std::string depfile;    // --depfile: make-style dependencies of the output
-    bool verbose = false;   // progress of each stage on stderr
+    std::string output;                     // -o
+    std::string header;                     // --header
+    std::string lang;                       // cpp | c | latex; empty: from the extension of -o
+    std::string name_space;                 // --namespace
+    std::string dump;                       // ast | model | equations | module: print and stop
+    std::string depfile;                    // --depfile: make-style dependencies of the output
+    std::string real;                       // --real float|double (C only); empty: double
+    std::string jacobians;                  // --jacobians auto|unrolled|tangent; empty: auto
+    std::vector<std::string> sensitivities; // --sensitivities p1,p2: d(M0,C0,K0)/dp routine
+    bool verbose = false;                   // progress of each stage on stderr
 };
 
 struct CheckOptions {

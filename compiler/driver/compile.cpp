@@ -73,10 +73,19 @@ void check_namespace(const std::string& ns, const std::string& lang) {
 
 /// Make-style dependency file: the outputs depend on the model file and on every
 /// data file it read (SID, ElastoDyn).
+/// Make-style dependencies, escaped as GCC escapes them and as make and Ninja
+/// read them: a space as "\ ", '#' as "\#", '$' as "$$". A line break cannot be
+/// written in a depfile at all.
 std::string depfile_text(const CompileOptions& o, const std::vector<std::string>& data_files) {
     auto escape = [](const std::string& s) {
         std::string out;
-        for (char c : s) out += (c == ' ' ? "\\ " : std::string(1, c));
+        for (char c : s) {
+            if (c == '\n' || c == '\r')
+                throw UsageError("--depfile: the path '" + s +
+                                 "' has a line break, which a "
+                                 "depfile cannot express");
+            out += c == ' ' ? "\\ " : c == '#' ? "\\#" : c == '$' ? "$$" : std::string(1, c);
+        }
         return out;
     };
     std::string targets = escape(o.output) + (o.header.empty() ? "" : " " + escape(o.header));
@@ -113,6 +122,43 @@ void write_latex(const CompileOptions& o, const FrontEnd& fe) {
         runtime::write_file_atomically(o.depfile, depfile_text(o, fe.model->files_read));
 }
 
+std::string join(const std::vector<std::string>& items) {
+    std::string s;
+    for (const std::string& item : items) s += (s.empty() ? "" : ",") + item;
+    return s;
+}
+
+codegen::EmitOptions::Real real_type(const CompileOptions& o, const std::string& lang) {
+    if (o.real.empty() || o.real == "double") return codegen::EmitOptions::Real::double_precision;
+    if (o.real != "float") throw UsageError("--real must be double or float, not '" + o.real + "'");
+    if (lang != "c") throw UsageError("--real float applies to --lang c only");
+    return codegen::EmitOptions::Real::single_precision;
+}
+
+/// The module options from the command line; parameter names are checked
+/// against the model so that a misspelt one is an error, not a silent no-op.
+codegen::Options module_options(const CompileOptions& o, const symbolic::Equations& eq) {
+    codegen::Options options;
+    for (const std::string& name : o.sensitivities) {
+        bool known = false;
+        for (const auto& p : eq.params) known = known || p.name == name;
+        if (!known)
+            throw UsageError("--sensitivities: '" + name + "' is not a parameter of the model");
+        options.sensitivity_params.push_back(name);
+    }
+    return options;
+}
+
+/// --jacobians; sensitivities are formed from the unrolled Jacobians.
+Derivatives derivatives_of(const CompileOptions& o) {
+    if (o.jacobians == "tangent" && !o.sensitivities.empty())
+        throw UsageError("--sensitivities needs --jacobians unrolled (or auto)");
+    if (o.jacobians == "unrolled" || !o.sensitivities.empty()) return Derivatives::unrolled;
+    if (o.jacobians == "tangent") return Derivatives::tangent;
+    if (o.jacobians.empty() || o.jacobians == "auto") return Derivatives::automatic;
+    throw UsageError("--jacobians must be auto, unrolled or tangent, not '" + o.jacobians + "'");
+}
+
 } // namespace
 
 int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
@@ -128,9 +174,12 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
     Until until = o.dump == "ast"     ? Until::ast
                   : o.dump == "model" ? Until::model
                                       : Until::jacobians;
-    FrontEnd fe = run_front_end(o.model, until, diags, progress);
+    FrontEnd fe = run_front_end(o.model, until, diags, progress, derivatives_of(o));
     err << diags.render();
     if (diags.has_errors()) return 1;
+    if (o.jacobians == "tangent" && fe.equations && !fe.equations->tangent_form)
+        throw UsageError("--jacobians tangent does not apply to a model with `approx` (which "
+                         "works on M itself)");
     if (o.dump == "ast") {
         out << ast::dump(*fe.ast);
         return 0;
@@ -144,7 +193,7 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
         progress("wrote " + o.output);
         return 0;
     }
-    codegen::Module module = codegen::build_module(*fe.equations);
+    codegen::Module module = codegen::build_module(*fe.equations, module_options(o, *fe.equations));
     codegen::add_operating_point(module, *fe.equations,
                                  symbolic::operating_point(*fe.model, *fe.equations));
     progress("built the code module (common subexpressions shared)");
@@ -156,16 +205,23 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
     emit.namespace_name = o.name_space;
     emit.header_name = o.header.empty() ? "" : basename(o.header);
     emit.compiler_version = YAMSC_VERSION;
+    emit.real = real_type(o, lang);
     // Only the options that shape the output are recorded, so identical inputs give
     // identical bytes wherever the files are written.
-    emit.command_line = "--lang " + lang +
-                        (o.name_space.empty() ? "" : " --namespace " + o.name_space) +
-                        (o.header.empty() ? "" : " --header " + emit.header_name);
+    emit.command_line =
+        "--lang " + lang + (o.name_space.empty() ? "" : " --namespace " + o.name_space) +
+        (o.header.empty() ? "" : " --header " + emit.header_name) +
+        (o.real.empty() ? "" : " --real " + o.real) +
+        (o.jacobians.empty() ? "" : " --jacobians " + o.jacobians) +
+        (o.sensitivities.empty() ? "" : " --sensitivities " + join(o.sensitivities));
     codegen::EmittedFiles files =
         lang == "c" ? codegen::emit_c(module, emit) : codegen::emit_cpp(module, emit);
-    // Write the header first: a source is never left referring to a missing header.
-    if (!o.header.empty()) runtime::write_file_atomically(o.header, files.header);
-    runtime::write_file_atomically(o.output, files.source);
+    // Both written before either is replaced, the header renamed first: a source
+    // is never left referring to a missing or stale header.
+    std::vector<std::pair<std::string, std::string>> outputs;
+    if (!o.header.empty()) outputs.emplace_back(o.header, files.header);
+    outputs.emplace_back(o.output, files.source);
+    runtime::write_files_atomically(outputs);
     if (!o.depfile.empty())
         runtime::write_file_atomically(o.depfile, depfile_text(o, fe.model->files_read));
     progress("wrote " + o.output + (o.header.empty() ? "" : " and " + o.header) + " (" +

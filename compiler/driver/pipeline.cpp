@@ -32,7 +32,8 @@ std::string timed(const char* what, double s) {
 } // namespace
 
 FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& diags,
-                       const std::function<void(const std::string&)>& progress) {
+                       const std::function<void(const std::string&)>& progress,
+                       Derivatives derivatives) {
     auto say = [&](const std::string& s) {
         if (progress) progress(s);
     };
@@ -45,7 +46,12 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
     fe.model = model::check(*fe.ast, diags);
     if (!fe.model || diags.has_errors() || until == Until::model) return fe;
     say(timed("parsed and checked", clock.seconds()));
-    fe.equations = symbolic::derive(*fe.model, diags);
+    // Only the Jacobian stage can use the tangent form; `approx` needs M itself.
+    const bool tangent =
+        until == Until::jacobians && fe.model->approximations.empty() &&
+        (derivatives == Derivatives::tangent ||
+         (derivatives == Derivatives::automatic && fe.model->dofs.size() >= tangent_form_min_dofs));
+    fe.equations = symbolic::derive(*fe.model, diags, !tangent);
     if (!fe.equations || diags.has_errors()) return fe;
     fe.equations->source_path = path;
     // The digest covers the data files too: generated code changes when they do.
@@ -60,7 +66,10 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
         if (!symbolic::approximate(*fe.model, *fe.equations, diags)) return fe;
         say(timed("approximated (approx)", clock.seconds()));
     }
-    if (until == Until::jacobians) {
+    if (until == Until::jacobians && tangent) {
+        symbolic::derive_tangent(*fe.equations);
+        say(timed("derived the tangent (directional derivatives)", clock.seconds()));
+    } else if (until == Until::jacobians) {
         symbolic::derive_jacobians(*fe.equations);
         say(timed("derived the Jacobians", clock.seconds()));
     }

@@ -2,11 +2,11 @@
 
 #include "beam/elastodyn.hpp"
 #include "beam/make_sid.hpp"
+#include "diag/read_text.hpp"
 #include "sid/reader.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -20,15 +20,9 @@ namespace {
 std::shared_ptr<const diag::SourceFile> read_data_file(const std::string& name, const Loc& loc,
                                                        FlexibleInputs& in) {
     std::string path = !name.empty() && name[0] == '/' ? name : in.base_dir + name;
-    std::ifstream file(path, std::ios::binary);
-    std::ostringstream text;
-    if (file) text << file.rdbuf();
-    if (!file || file.bad()) {
-        in.diags.error(Kind::Io, loc, "cannot read '" + path + "'");
-        return nullptr;
-    }
-    in.files_read.push_back(path);
-    return std::make_shared<diag::SourceFile>(path, text.str());
+    auto file = diag::read_text_file(path, in.diags, loc);
+    if (file) in.files_read.push_back(path);
+    return file;
 }
 
 /// A SID of nq modes whose order-0 entries are all unknown (NaN): the shape of a

@@ -33,7 +33,8 @@ struct Wrench {
 
 class Kane {
 public:
-    Kane(const model::Model& m, diag::Diagnostics& diags) : m_(m), diags_(diags), sym_(m) {}
+    Kane(const model::Model& m, diag::Diagnostics& diags, bool mass_matrix)
+        : m_(m), diags_(diags), sym_(m), mass_matrix_(mass_matrix) {}
 
     std::optional<Equations> run() {
         frames_ = body_frames(m_, sym_);
@@ -71,7 +72,9 @@ public:
                     it->second = it->second + add;
             }
             // Mass matrix: Σ m JvG_r·JvG_s + Jω_r·(J Jω_s), upper triangle mirrored.
-            for (auto it_r = JvG.begin(); it_r != JvG.end(); ++it_r) {
+            // O(DOFs²) sums per body, grown with GiNaC's operators: by far the
+            // largest cost of large models, skipped in the tangent form.
+            for (auto it_r = JvG.begin(); mass_matrix_ && it_r != JvG.end(); ++it_r) {
                 for (auto it_s = it_r; it_s != JvG.end(); ++it_s) {
                     auto r = static_cast<std::size_t>(it_r->first);
                     auto s = static_cast<std::size_t>(it_s->first);
@@ -109,6 +112,7 @@ public:
             for (std::size_t s = 0; s < r; ++s) eq_.M[r][s] = eq_.M[s][r];
         generalized_loads(load_terms);
         if (!move_accelerations_into_mass(load_terms)) return std::nullopt;
+        if (!mass_matrix_) eq_.M.clear(); // partial (flexible bodies wrote their blocks)
         eq_.Ma.resize(nq);
         for (std::size_t r = 0; r < nq; ++r)
             eq_.Ma[r] = Ma_terms_[r].empty() ? ex(0) : ex(add(Ma_terms_[r]));
@@ -239,6 +243,7 @@ private:
     const model::Model& m_;
     diag::Diagnostics& diags_;
     Symbols sym_;
+    bool mass_matrix_;
     std::vector<FrameState> frames_;
     std::vector<exvector> Ma_terms_; // terms of (M a)_r
     Equations eq_;
@@ -246,8 +251,8 @@ private:
 
 } // namespace
 
-std::optional<Equations> derive(const model::Model& m, diag::Diagnostics& diags) {
-    return Kane(m, diags).run();
+std::optional<Equations> derive(const model::Model& m, diag::Diagnostics& diags, bool mass_matrix) {
+    return Kane(m, diags, mass_matrix).run();
 }
 
 } // namespace yamsc::symbolic

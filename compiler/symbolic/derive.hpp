@@ -8,9 +8,16 @@ namespace yamsc::symbolic {
 /// Derives the equations of motion of a checked model (paper eq. 4-10, 21-22).
 /// Reports user errors (e.g. loads nonlinear in q'') into `diags` and returns
 /// nullopt on error.
-std::optional<Equations> derive(const model::Model& m, diag::Diagnostics& diags);
+/// With `mass_matrix` false, M is not assembled (eq.M stays empty; M a is):
+/// the tangent form, whose cost is O(bodies x DOFs) instead of O(bodies x DOFs²).
+std::optional<Equations> derive(const model::Model& m, diag::Diagnostics& diags,
+                                bool mass_matrix = true);
 
 /// Fills the exact Jacobians dF/dq, dF/dq', dF/du and d(M a)/dq.
 void derive_jacobians(Equations& eq);
+
+/// Fills the tangent form instead (eq.seed, eq.dG, eq.dY; tangent_form = true):
+/// one directional derivative pass over F - M a and the outputs.
+void derive_tangent(Equations& eq);
 
 } // namespace yamsc::symbolic

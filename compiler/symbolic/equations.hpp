@@ -71,6 +71,16 @@ struct Equations {
     // derive() together with `a`; when empty, derive_jacobians forms Σ_s M_rs a_s.
     Row Ma;
 
+    // The tangent form (symbolic/tangent.cpp), for models too large for the
+    // unrolled Jacobians above: M is left empty (its columns are M e_k = (M a)
+    // at a = e_k), and the derivatives are one directional derivative along
+    // the seed symbols `seed` = [dq, dq', du] (2 nq + nu): dG of G = F - M a
+    // (a held) and dY of the outputs. Generated code evaluates them in a loop
+    // over the unit directions.
+    bool tangent_form = false;
+    std::vector<GiNaC::symbol> seed;
+    Row dG, dY;
+
     int nq() const { return static_cast<int>(dofs.size()); }
     int nu() const { return static_cast<int>(inputs.size()); }
     int np() const { return static_cast<int>(params.size()); }

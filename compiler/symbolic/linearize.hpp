@@ -15,6 +15,9 @@
 #include "model/model.hpp"
 #include "symbolic/equations.hpp"
 
+#include <cstddef>
+#include <vector>
+
 namespace yamsc::symbolic {
 
 /// The operating point as expressions of the parameters: one per DOF, rate and
@@ -33,5 +36,21 @@ struct OutputJacobians {
     Matrix C, D;
 };
 OutputJacobians output_jacobians(const Equations& eq);
+
+/// Partial derivatives, with respect to one parameter, of what the linear model
+/// is built from (docs/linearization.md, "Parameter sensitivities"): of M (lower
+/// triangle only, the rest is 0), F and the Jacobians dF_dq, dF_dqd, dF_du,
+/// dMa_dq of derive_jacobians, at fixed (t, q, q', u, a).
+struct ParameterDerivatives {
+    Matrix M, dF_dq, dF_dqd, dF_du, dMa_dq;
+    Row F;
+};
+
+/// One ParameterDerivatives per entry of `params` (indices into eq.params), in
+/// that order, by forward mode on one Tape: each derivative shares the nodes of
+/// the equations and of the other derivatives, so the cost per parameter is the
+/// number of nodes that depend on it. Requires derive_jacobians to have run.
+std::vector<ParameterDerivatives> parameter_derivatives(const Equations& eq,
+                                                        const std::vector<std::size_t>& params);
 
 } // namespace yamsc::symbolic

@@ -457,8 +457,23 @@ GiNaC::ex Tape::to_ginac(TapeId root) {
 
 // ---- forward-mode derivatives -------------------------------------------------------------
 
+ForwardDerivative::ForwardDerivative(Tape& tape, std::size_t variable)
+    : ForwardDerivative(tape, [&] {
+          std::vector<TapeId> seeds(tape.variable_count(), tape.zero());
+          seeds.at(variable) = tape.one();
+          return seeds;
+      }()) {}
+
+ForwardDerivative::ForwardDerivative(Tape& tape, std::vector<TapeId> seeds)
+    : tape_(tape), seeds_(std::move(seeds)), mask_(tape.dependence_words(), 0) {
+    if (seeds_.size() != tape.variable_count())
+        throw diag::InternalError("a directional derivative needs one seed per variable");
+    for (std::size_t v = 0; v < seeds_.size(); ++v)
+        if (seeds_[v] != tape.zero()) mask_[v / 64] |= std::uint64_t{1} << (v % 64);
+}
+
 TapeId ForwardDerivative::memo(TapeId node) const {
-    if (!tape_.depends(node, variable_)) return tape_.zero();
+    if (!relevant(node)) return tape_.zero();
     return done_.at(node);
 }
 
@@ -471,7 +486,8 @@ TapeId ForwardDerivative::rule(TapeId node) {
     case TapeKind::number:
         return t.zero();
     case TapeKind::symbol:
-        return t.variable_of(node) == static_cast<int>(variable_) ? t.one() : t.zero();
+        return t.variable_of(node) < 0 ? t.zero()
+                                       : seeds_[static_cast<std::size_t>(t.variable_of(node))];
     case TapeKind::add: {
         std::vector<TapeTerm> terms;
         for (std::uint32_t i = 0; i < count; ++i) {
@@ -575,7 +591,7 @@ TapeId ForwardDerivative::rule(TapeId node) {
 }
 
 TapeId ForwardDerivative::operator()(TapeId root) {
-    if (!tape_.depends(root, variable_)) return tape_.zero();
+    if (!relevant(root)) return tape_.zero();
     if (auto it = done_.find(root); it != done_.end()) return it->second;
     // Post-order over the operands that depend on the variable and are not done.
     std::vector<std::pair<TapeId, std::uint32_t>> stack{{root, 0}};
@@ -583,8 +599,7 @@ TapeId ForwardDerivative::operator()(TapeId root) {
         auto& [id, next] = stack.back();
         if (next < tape_.operand_count(id)) {
             const TapeId child = tape_.operands(id)[next++].node;
-            if (tape_.depends(child, variable_) && done_.find(child) == done_.end())
-                stack.emplace_back(child, 0);
+            if (relevant(child) && done_.find(child) == done_.end()) stack.emplace_back(child, 0);
             continue;
         }
         const TapeId node = id;

@@ -93,6 +93,14 @@ public:
     bool depends(TapeId id, std::size_t variable) const {
         return (deps_[id * words_ + variable / 64] >> (variable % 64)) & 1u;
     }
+    /// True when the node depends on any variable of `mask` (a set of words_
+    /// 64-bit words, bit v for variable v).
+    bool depends_on_any(TapeId id, const std::vector<std::uint64_t>& mask) const {
+        for (std::size_t w = 0; w < words_; ++w)
+            if (deps_[id * words_ + w] & mask[w]) return true;
+        return false;
+    }
+    std::size_t dependence_words() const { return words_; }
     std::size_t size() const { return nodes_.size(); }
     std::size_t variable_count() const { return variable_count_; }
     TapeId zero() const { return zero_; }
@@ -134,19 +142,26 @@ private:
     std::unordered_map<const GiNaC::basic*, std::pair<GiNaC::ex, TapeId>> imported_;
 };
 
-/// d/d(variable) of tape nodes by forward mode, memoised for one variable.
+/// Forward-mode derivatives of tape nodes, memoised: either d/d(variable) for
+/// one variable, or the directional derivative sum_v seed_v d/d(variable v)
+/// along seed nodes (symbols of a direction, typically), which costs one pass
+/// over the nodes that depend on a seeded variable however many there are.
 class ForwardDerivative {
 public:
-    ForwardDerivative(Tape& tape, std::size_t variable) : tape_(tape), variable_(variable) {}
-    /// The node of d(node)/d(variable); iterative.
+    ForwardDerivative(Tape& tape, std::size_t variable);
+    /// seeds[v]: the derivative of variable v (tape.zero() for none).
+    ForwardDerivative(Tape& tape, std::vector<TapeId> seeds);
+    /// The node of the derivative of `node`; iterative.
     TapeId operator()(TapeId node);
 
 private:
     TapeId rule(TapeId node);
     TapeId memo(TapeId node) const;
+    bool relevant(TapeId node) const { return tape_.depends_on_any(node, mask_); }
 
     Tape& tape_;
-    std::size_t variable_;
+    std::vector<TapeId> seeds_;       // by variable
+    std::vector<std::uint64_t> mask_; // the variables with a nonzero seed
     std::unordered_map<TapeId, TapeId> done_;
 };
 

@@ -4,7 +4,7 @@
 // outputs, the model and those data files (spaces escaped); the bytes do not
 // depend on the working directory, the output folder or the file times; and no
 // temporary file is left behind, whether the run succeeds or fails. Inputs that
-// are not files (a folder, /dev/zero) are errors too.
+// are not files (a folder, /dev/zero), as the model or as its data, are errors too.
 #include <doctest/doctest.h>
 
 #include <cstdint>
@@ -130,7 +130,7 @@ TEST_CASE("the source digest is the digest of the model text and of every data f
     CHECK(first.find("3600") == std::string::npos);
 }
 
-TEST_CASE("the depfile names the outputs, the model and every data file, spaces escaped") {
+TEST_CASE("the depfile names the outputs, the model and every data file, escaped for make") {
     fresh_dir(work);
     write_mast(work);
     REQUIRE(yamsc(work, quoted(work + "/mast.mbd") + " -o " + quoted(work + "/m.cpp") +
@@ -157,6 +157,16 @@ TEST_CASE("the depfile names the outputs, the model and every data file, spaces 
                                                " --depfile " + quoted(work + "/bad.d")) == 1);
     CHECK(slurp(work + "/bad.d").empty());
     CHECK(temporaries(work).empty());
+
+    // '#' and '$' are escaped as make and Ninja read them.
+    const std::string odd = work + "/odd #1 $HOME";
+    REQUIRE(std::system(("mkdir -p " + quoted(odd)).c_str()) == 0);
+    write_mast(odd);
+    REQUIRE(yamsc(work, quoted(odd + "/mast.mbd") + " -o " + quoted(odd + "/out.cpp") +
+                            " --depfile " + quoted(odd + "/out.d")) == 0);
+    const std::string folder = escaped(work) + "/odd\\ \\#1\\ $$HOME"; // work has no # or $
+    CHECK(slurp(odd + "/out.d") ==
+          folder + "/out.cpp: " + folder + "/mast.mbd " + folder + "/mast.sid\n");
 }
 
 TEST_CASE("the bytes do not depend on the working directory or the output folder") {
@@ -212,4 +222,33 @@ TEST_CASE("a folder or an endless file as the model is an error, not a hang") {
           std::string::npos);
     CHECK(yamsc(work, "/dev/zero -o never.cpp") == 1);
     CHECK(slurp(work + "/never.cpp").empty());
+}
+
+TEST_CASE("a header and its source are replaced together or not at all") {
+    fresh_dir(work);
+    spit(work + "/keep.h", "old header");
+    // The source cannot be written (no such folder): the header stays as it was.
+    CHECK(yamsc(work, quoted(source_dir + "/models/pendulum.mbd") +
+                          " -o missing/p.c --header keep.h") == 1);
+    CHECK(slurp(work + "/keep.h") == "old header");
+    CHECK(slurp(work + "/stderr.txt").find("cannot write 'missing/p.c'") != std::string::npos);
+    CHECK(temporaries(work).empty());
+}
+
+TEST_CASE("a folder or an endless file named as a model's data is an error at its location") {
+    fresh_dir(work);
+    spit(work + "/endless.mbd", "model m\ndof q\n"
+                                "flexible tower { sid = \"/dev/zero\"; modes = (q) }\n"
+                                "joint ground -> tower\n");
+    CHECK(yamsc(work, "check " + quoted(work + "/endless.mbd")) == 1);
+    CHECK(slurp(work + "/stderr.txt")
+              .find("endless.mbd:3:24: error: '/dev/zero' is larger than 256 MiB") !=
+          std::string::npos);
+    spit(work + "/folder.mbd", "model m\ndof q\n"
+                               "flexible tower { sid = \".\"; modes = (q) }\n"
+                               "joint ground -> tower\n");
+    CHECK(yamsc(work, "check " + quoted(work + "/folder.mbd")) == 1);
+    CHECK(slurp(work + "/stderr.txt").find("folder.mbd:3:24: error: cannot read") !=
+          std::string::npos);
+    CHECK(slurp(work + "/stderr.txt").find("it is a folder") != std::string::npos);
 }

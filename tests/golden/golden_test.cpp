@@ -1,5 +1,5 @@
 // Text and compile layers: the committed generated/ files are exactly what the
-// compiler writes for models/*.mbd (golden files); two runs in separate
+// compiler writes for models/*.mbd (golden files: C++, C and LaTeX); two runs in separate
 // processes give identical bytes; every generated file compiles with strict
 // flags (C++17 and C99 -pedantic, gcc and clang when present); the C and C++
 // outputs compute the same numbers.
@@ -44,15 +44,19 @@ std::vector<std::string> model_names() {
     return out;
 }
 
-/// Compiles a model into `dir` (cpp + hpp, c + h) from the source folder, with the
-/// model path relative as in scripts/update-golden.sh.
+/// Compiles a model into `dir` (cpp + hpp, c + h, tex) from the source folder, with
+/// the model path relative as in scripts/update-golden.sh.
 void generate(const std::string& name, const std::string& dir) {
     run("mkdir -p " + dir);
     std::string base = "cd " + source_dir + " && " + YAMSC_EXE + " models/" + name + ".mbd";
     REQUIRE(run(base + " -o " + dir + "/" + name + ".cpp --header " + dir + "/" + name + ".hpp") ==
             0);
     REQUIRE(run(base + " -o " + dir + "/" + name + ".c --header " + dir + "/" + name + ".h") == 0);
+    REQUIRE(run(base + " --lang latex -o " + dir + "/" + name + ".tex") == 0);
 }
+
+/// The golden files of one model: the code and its LaTeX document.
+const char* const golden_extensions[] = {".cpp", ".hpp", ".c", ".h", ".tex"};
 
 bool have(const std::string& tool) {
     return run("command -v " + tool + " >/dev/null 2>&1") == 0;
@@ -66,7 +70,7 @@ TEST_CASE("generated/ matches what the compiler writes for models/") {
     for (const auto& name : names) {
         CAPTURE(name);
         generate(name, work + "/fresh");
-        for (const char* ext : {".cpp", ".hpp", ".c", ".h"}) {
+        for (const char* ext : golden_extensions) {
             std::string golden = source_dir + "/generated/" + name + ext;
             INFO("golden file " << golden
                                 << " differs: run scripts/update-golden.sh and review the diff");
@@ -80,7 +84,7 @@ TEST_CASE("two runs in separate processes write identical bytes") {
         CAPTURE(name);
         generate(name, work + "/run1");
         generate(name, work + "/run2");
-        for (const char* ext : {".cpp", ".hpp", ".c", ".h"})
+        for (const char* ext : golden_extensions)
             CHECK(read(work + "/run1/" + name + ext) == read(work + "/run2/" + name + ext));
     }
 }

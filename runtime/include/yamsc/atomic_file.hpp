@@ -4,6 +4,8 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace yamsc::runtime {
 
@@ -17,6 +19,11 @@ void write_file_atomically(const std::string& path,
 
 /// The same for content already in memory.
 void write_file_atomically(const std::string& path, const std::string& content);
+
+/// Several files that belong together (a header and its source): every
+/// temporary file is written before any target is replaced, so a failed write
+/// leaves all targets as they were. Only the renames, in order, remain.
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files);
 
 /// The temporary name used for `path` by this process.
 std::string temporary_path_for(const std::string& path);

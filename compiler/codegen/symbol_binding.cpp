@@ -1,0 +1,72 @@
+#include "codegen/symbol_binding.hpp"
+
+#include <utility>
+
+namespace yamsc::codegen {
+
+Expr load(const std::string& array, int index) {
+    Expr e;
+    e.kind = ExprKind::load;
+    e.array = array;
+    e.index = index;
+    return e;
+}
+
+Argument argument(const char* name, ArgumentKind kind) {
+    return Argument{name, kind, false};
+}
+
+SymbolSource SymbolSource::state_vector(int nq) {
+    SymbolSource s;
+    s.q = "x";
+    s.qd = "x";
+    s.qd_offset = nq;
+    return s;
+}
+
+SymbolSource SymbolSource::operating_point() {
+    SymbolSource s;
+    s.time.clear();
+    s.q = "q0";
+    s.qd = "qd0";
+    s.u = "u0";
+    s.a = "qdd0";
+    return s;
+}
+
+RoutineBuilder::Binding bind(SymbolSource source) {
+    return [s = std::move(source)](SymbolRef ref) -> std::optional<Expr> {
+        auto from = [&](const std::string& array, int offset) -> std::optional<Expr> {
+            if (array.empty()) return std::nullopt;
+            return load(array, offset + ref.index);
+        };
+        switch (ref.kind) {
+        case SymbolKind::time: {
+            Expr e;
+            e.kind = s.time.empty() ? ExprKind::number : ExprKind::time;
+            return e;
+        }
+        case SymbolKind::q:
+            return from(s.q, s.q_offset);
+        case SymbolKind::qd:
+            return from(s.qd, s.qd_offset);
+        case SymbolKind::input:
+            return from(s.u, 0);
+        case SymbolKind::param: {
+            Expr e;
+            e.kind = ExprKind::param;
+            e.index = ref.index;
+            return e;
+        }
+        case SymbolKind::acceleration:
+            return from(s.a, 0);
+        case SymbolKind::qdd:
+            return from(s.qdd, 0);
+        case SymbolKind::seed:
+            return from(s.seed, 0);
+        }
+        return std::nullopt;
+    };
+}
+
+} // namespace yamsc::codegen
