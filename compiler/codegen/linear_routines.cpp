@@ -11,14 +11,6 @@ namespace {
 
 using NodeMatrix = std::vector<std::vector<NodeId>>;
 
-std::vector<Argument> point_arguments(std::vector<Argument> outputs) {
-    std::vector<Argument> args{
-        argument("q0", ArgumentKind::input_array), argument("qd0", ArgumentKind::input_array),
-        argument("u0", ArgumentKind::input_array), argument("p", ArgumentKind::params)};
-    for (Argument& a : outputs) args.push_back(std::move(a));
-    return args;
-}
-
 bool uses_accelerations(const Graph& g, const NodeMatrix& m) {
     const std::uint32_t bit = 1u << static_cast<int>(SymbolKind::acceleration);
     for (const auto& row : m)

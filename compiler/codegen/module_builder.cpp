@@ -84,21 +84,6 @@ SymbolSource solved_accelerations(int nq) {
     return s;
 }
 
-std::vector<Argument> q_form_arguments(std::vector<Argument> outputs) {
-    std::vector<Argument> args{
-        argument("t", ArgumentKind::scalar), argument("q", ArgumentKind::input_array),
-        argument("qd", ArgumentKind::input_array), argument("u", ArgumentKind::input_array),
-        argument("p", ArgumentKind::params)};
-    for (Argument& a : outputs) args.push_back(std::move(a));
-    return args;
-}
-
-std::vector<Argument> x_form_arguments(const char* output) {
-    return {argument("t", ArgumentKind::scalar), argument("x", ArgumentKind::input_array),
-            argument("u", ArgumentKind::input_array), argument("p", ArgumentKind::params),
-            argument(output, ArgumentKind::output_array)};
-}
-
 /// The lower triangle of M (all a factorisation reads), row by row.
 void assign_lower_triangle(RoutineBuilder& b, const char* array, const NodeMatrix& M) {
     const int n = static_cast<int>(M.size());

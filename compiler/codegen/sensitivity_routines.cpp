@@ -156,15 +156,14 @@ Routine sensitivity_routine(Graph& g, const LinearSources& in,
     std::string names;
     for (const std::string& name : options.sensitivity_params)
         names += (names.empty() ? "" : ", ") + name;
-    RoutineBuilder b(
-        g, "linear_sensitivities",
-        "d(M0, C0, K0, Q0)/dp of linear() for p = (" + names +
-            "): one nq x nq block per parameter, in that order (nq x nu for dQ0)",
-        {argument("q0", ArgumentKind::input_array), argument("qd0", ArgumentKind::input_array),
-         argument("u0", ArgumentKind::input_array), argument("p", ArgumentKind::params),
-         argument("dM0", ArgumentKind::output_array), argument("dC0", ArgumentKind::output_array),
-         argument("dK0", ArgumentKind::output_array), argument("dQ0", ArgumentKind::output_array)},
-        bind(point_with_acceleration_derivatives()));
+    RoutineBuilder b(g, "linear_sensitivities",
+                     "d(M0, C0, K0, Q0)/dp of linear() for p = (" + names +
+                         "): one nq x nq block per parameter, in that order (nq x nu for dQ0)",
+                     point_arguments({argument("dM0", ArgumentKind::output_array),
+                                      argument("dC0", ArgumentKind::output_array),
+                                      argument("dK0", ArgumentKind::output_array),
+                                      argument("dQ0", ArgumentKind::output_array)}),
+                     bind(point_with_acceleration_derivatives()));
     // Without `a` in dMa_dq (M independent of q) K0 does not involve q''0.
     const bool accelerations = uses_accelerations(g, in.dMa_dq);
     if (accelerations) {

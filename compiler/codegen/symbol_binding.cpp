@@ -69,4 +69,27 @@ RoutineBuilder::Binding bind(SymbolSource source) {
     };
 }
 
+std::vector<Argument> q_form_arguments(std::vector<Argument> outputs) {
+    std::vector<Argument> args{
+        argument("t", ArgumentKind::scalar), argument("q", ArgumentKind::input_array),
+        argument("qd", ArgumentKind::input_array), argument("u", ArgumentKind::input_array),
+        argument("p", ArgumentKind::params)};
+    for (Argument& a : outputs) args.push_back(std::move(a));
+    return args;
+}
+
+std::vector<Argument> x_form_arguments(const char* output) {
+    return {argument("t", ArgumentKind::scalar), argument("x", ArgumentKind::input_array),
+            argument("u", ArgumentKind::input_array), argument("p", ArgumentKind::params),
+            argument(output, ArgumentKind::output_array)};
+}
+
+std::vector<Argument> point_arguments(std::vector<Argument> outputs) {
+    std::vector<Argument> args{
+        argument("q0", ArgumentKind::input_array), argument("qd0", ArgumentKind::input_array),
+        argument("u0", ArgumentKind::input_array), argument("p", ArgumentKind::params)};
+    for (Argument& a : outputs) args.push_back(std::move(a));
+    return args;
+}
+
 } // namespace yamsc::codegen

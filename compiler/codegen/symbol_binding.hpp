@@ -7,6 +7,7 @@
 #include "codegen/routine_builder.hpp"
 
 #include <string>
+#include <vector>
 
 namespace yamsc::codegen {
 
@@ -37,5 +38,11 @@ struct SymbolSource {
 };
 
 RoutineBuilder::Binding bind(SymbolSource source);
+
+/// The argument lists of the public routines: (t, q, qd, u, p, outputs...),
+/// (t, x, u, p, output) and, for the linear model, (q0, qd0, u0, p, outputs...).
+std::vector<Argument> q_form_arguments(std::vector<Argument> outputs);
+std::vector<Argument> x_form_arguments(const char* output);
+std::vector<Argument> point_arguments(std::vector<Argument> outputs);
 
 } // namespace yamsc::codegen

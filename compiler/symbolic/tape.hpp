@@ -17,7 +17,11 @@
 // with to_ginac(): imported nodes come back as the very GiNaC objects they
 // came from, new nodes are built as already-evaluated GiNaC objects without
 // flattening or evaluation (see tape.cpp), so the result shares everything
-// with the input and costs GiNaC nothing to build.
+// with the input and costs GiNaC nothing to build. The price: such objects are
+// not in GiNaC's canonical form (operands in tape order, sums inside sums), so
+// GiNaC's own equality and cancellation do not see through them (`a*b - b*a`
+// can stay). Compare them numerically or through codegen's canonical Graph
+// (what the code generator and the LaTeX printer do), never with GiNaC's ==.
 #include <ginac/ginac.h>
 
 #include <cstdint>

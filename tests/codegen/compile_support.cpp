@@ -150,25 +150,6 @@ bool run(const std::string& command, std::string& log) {
 
 } // namespace
 
-std::string scratch_dir(const std::string& name) {
-    const fs::path dir = fs::path(YAMSC_TEST_BINARY_DIR) / "codegen_scratch" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir.string();
-}
-
-std::string read_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-void write_file(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-}
-
 RunResult compile_and_run(Language lang, const std::vector<ModelUnderTest>& models,
                           const std::string& dir_name) {
     const bool c = lang == Language::c;

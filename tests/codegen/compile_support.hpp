@@ -5,6 +5,7 @@
 #include "codegen/emit.hpp"
 #include "codegen/module.hpp"
 #include "fixtures.hpp"
+#include "test_files.hpp"
 
 #include <map>
 #include <string>
@@ -37,8 +38,10 @@ RunResult compile_and_run(Language lang, const std::vector<ModelUnderTest>& mode
                           const std::string& dir_name);
 
 /// A fresh directory under YAMSC_TEST_BINARY_DIR.
-std::string scratch_dir(const std::string& name);
-std::string read_file(const std::string& path);
-void write_file(const std::string& path, const std::string& text);
+inline std::string scratch_dir(const std::string& name) {
+    return test_support::scratch_dir("codegen_scratch", name);
+}
+using test_support::read_file;
+using test_support::write_file;
 
 } // namespace codegen_test

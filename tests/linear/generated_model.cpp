@@ -9,31 +9,6 @@
 
 namespace linear_test {
 
-namespace fs = std::filesystem;
-
-std::string scratch_dir(const std::string& name) {
-    const fs::path dir = fs::path(YAMSC_TEST_BINARY_DIR) / "linear_scratch" / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir.string();
-}
-
-bool run(const std::string& command) {
-    return std::system(command.c_str()) == 0;
-}
-
-std::string read_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-void write_file(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-}
-
 namespace {
 
 // The evaluation program. Step h of the differences: cbrt(eps) scaled, which
@@ -115,21 +90,6 @@ int main() {
 }
 )";
 
-std::map<int, Values> parse(const std::string& text) {
-    std::map<int, Values> out;
-    std::istringstream lines(text);
-    std::string line;
-    while (std::getline(lines, line)) {
-        std::istringstream words(line);
-        int k = 0;
-        std::string name, w;
-        words >> k >> name;
-        std::vector<double>& v = out[k][name];
-        while (words >> w) v.push_back(std::strtod(w.c_str(), nullptr));
-    }
-    return out;
-}
-
 std::string replace_all(std::string s, const std::string& from, const std::string& to) {
     for (auto pos = s.find(from); pos != std::string::npos; pos = s.find(from, pos + to.size()))
         s.replace(pos, from.size(), to);
@@ -160,7 +120,7 @@ GeneratedModel::GeneratedModel(const std::string& model, const std::string& ns) 
     REQUIRE_MESSAGE(run(compile), read_file(dir_ + "/compile.log"));
     write_file(dir_ + "/none.txt", "");
     REQUIRE(run(exe_ + " < " + dir_ + "/none.txt > " + dir_ + "/sizes.txt"));
-    Values head = parse(read_file(dir_ + "/sizes.txt"))[-1];
+    Values head = parse_printed(read_file(dir_ + "/sizes.txt"))[-1];
     const std::vector<double>& sizes = head["sizes"];
     REQUIRE(sizes.size() == 4);
     nq = static_cast<int>(sizes[0]);
@@ -186,7 +146,7 @@ std::vector<Values> GeneratedModel::evaluate(const std::vector<Point>& points) c
     }
     write_file(dir_ + "/points.txt", in.str());
     REQUIRE(run(exe_ + " < " + dir_ + "/points.txt > " + dir_ + "/values.txt"));
-    std::map<int, Values> all = parse(read_file(dir_ + "/values.txt"));
+    std::map<int, Values> all = parse_printed(read_file(dir_ + "/values.txt"));
     std::vector<Values> out;
     for (std::size_t k = 0; k < points.size(); ++k) out.push_back(all[static_cast<int>(k)]);
     return out;
@@ -200,6 +160,21 @@ std::vector<double> GeneratedModel::operating_point(const std::vector<double>& p
     std::vector<double> out = v["op_q"];
     out.insert(out.end(), v["op_qd"].begin(), v["op_qd"].end());
     out.insert(out.end(), v["op_u"].begin(), v["op_u"].end());
+    return out;
+}
+
+std::map<int, Values> parse_printed(const std::string& text) {
+    std::map<int, Values> out;
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) {
+        std::istringstream words(line);
+        int k = 0;
+        std::string name, w;
+        words >> k >> name;
+        std::vector<double>& v = out[k][name];
+        while (words >> w) v.push_back(std::strtod(w.c_str(), nullptr));
+    }
     return out;
 }
 

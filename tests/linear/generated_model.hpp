@@ -4,6 +4,8 @@
 // functions (operating_point, linear, state_space, output_matrices) and, for
 // comparison, central finite differences of rhs and outputs, at points given
 // on its standard input.
+#include "test_files.hpp"
+
 #include <map>
 #include <string>
 #include <vector>
@@ -39,10 +41,17 @@ private:
 };
 
 /// A fresh directory under the test build folder.
-std::string scratch_dir(const std::string& name);
+inline std::string scratch_dir(const std::string& name) {
+    return test_support::scratch_dir("linear_scratch", name);
+}
 /// Runs a shell command; true on exit status 0.
-bool run(const std::string& command);
-std::string read_file(const std::string& path);
-void write_file(const std::string& path, const std::string& text);
+inline bool run(const std::string& command) {
+    return test_support::exit_status(command) == 0;
+}
+using test_support::read_file;
+/// "<k> <name> <values...>" lines, as the evaluation programs print them, by
+/// point k (-1 for the header line) and name.
+std::map<int, Values> parse_printed(const std::string& text);
+using test_support::write_file;
 
 } // namespace linear_test

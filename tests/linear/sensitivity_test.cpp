@@ -139,27 +139,12 @@ struct SensitivityModel {
                         read_file(dir + "/compile.log"));
         write_file(dir + "/none.txt", "");
         REQUIRE(run(exe + " < " + dir + "/none.txt > " + dir + "/head.txt"));
-        Values head = parse(read_file(dir + "/head.txt"))[-1];
+        Values head = parse_printed(read_file(dir + "/head.txt"))[-1];
         REQUIRE(head["sizes"].size() == 3);
         nq = static_cast<int>(head["sizes"][0]);
         nu = static_cast<int>(head["sizes"][1]);
         np = static_cast<int>(head["sizes"][2]);
         defaults = head["defaults"];
-    }
-
-    static std::map<int, Values> parse(const std::string& text) {
-        std::map<int, Values> out;
-        std::istringstream lines(text);
-        std::string line;
-        while (std::getline(lines, line)) {
-            std::istringstream words(line);
-            int k = 0;
-            std::string name, w;
-            words >> k >> name;
-            std::vector<double>& v = out[k][name];
-            while (words >> w) v.push_back(std::strtod(w.c_str(), nullptr));
-        }
-        return out;
     }
 
     std::vector<Values> evaluate(const std::vector<Point>& points) const {
@@ -175,7 +160,7 @@ struct SensitivityModel {
         }
         write_file(dir + "/points.txt", in.str());
         REQUIRE(run(exe + " < " + dir + "/points.txt > " + dir + "/values.txt"));
-        std::map<int, Values> all = parse(read_file(dir + "/values.txt"));
+        std::map<int, Values> all = parse_printed(read_file(dir + "/values.txt"));
         std::vector<Values> out;
         for (std::size_t k = 0; k < points.size(); ++k) out.push_back(all[static_cast<int>(k)]);
         return out;

@@ -4,9 +4,8 @@
 // agrees at random points; the tangent rhs_jacobian agrees with central
 // finite differences of the tangent rhs; and the automatic choice and the
 // option's errors behave as documented (docs/cli.md, docs/benchmarks.md).
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
+#include "test_files.hpp"
+
 #include <doctest/doctest.h>
 #include <fstream>
 #include <map>
@@ -16,22 +15,14 @@
 namespace {
 
 std::string scratch(const std::string& name) {
-    const std::string dir = std::string(YAMSC_TEST_BINARY_DIR) + "/tangent_scratch/" + name;
-    REQUIRE(std::system(("rm -rf '" + dir + "' && mkdir -p '" + dir + "'").c_str()) == 0);
-    return dir;
+    return test_support::scratch_dir("tangent_scratch", name);
 }
 
 int run(const std::string& command) {
-    const int status = std::system(command.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return test_support::exit_status(command);
 }
 
-std::string read(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test_support::read_file;
 
 std::string model_path(const std::string& name) {
     return std::string(YAMSC_SOURCE_DIR) + "/models/" + name + ".mbd";
@@ -149,7 +140,7 @@ std::map<std::string, double> compare_forms(const std::string& model, const std:
                 "/driver.cpp -o " + dir + "/driver 2> " + dir + "/compile.log") == 0);
     REQUIRE(run(dir + "/driver > " + dir + "/out.txt") == 0);
     std::map<std::string, double> worst;
-    std::istringstream out(read(dir + "/out.txt"));
+    std::istringstream out(read_file(dir + "/out.txt"));
     std::string name;
     double value = 0;
     while (out >> name >> value) worst[name] = value;
@@ -183,18 +174,20 @@ TEST_CASE("the tangent form is chosen from 25 DOFs on, and explained when asked 
     // 12 links = 24 DOFs: unrolled; 13 links = 26 DOFs: tangent (internal mass_times).
     REQUIRE(run(yamsc + " " + chain(12, dir) + " -o " + dir + "/c12.cpp") == 0);
     REQUIRE(run(yamsc + " " + chain(13, dir) + " -o " + dir + "/c13.cpp") == 0);
-    CHECK(read(dir + "/c12.cpp").find("mass_times(") == std::string::npos);
-    CHECK(read(dir + "/c13.cpp").find("mass_times(") != std::string::npos);
-    CHECK(read(dir + "/c13.cpp").find("--jacobians") == std::string::npos); // auto: not recorded
+    CHECK(read_file(dir + "/c12.cpp").find("mass_times(") == std::string::npos);
+    CHECK(read_file(dir + "/c13.cpp").find("mass_times(") != std::string::npos);
+    CHECK(read_file(dir + "/c13.cpp").find("--jacobians") ==
+          std::string::npos); // auto: not recorded
 
     // Usage errors (exit 2) with a reason.
     const std::string err = dir + "/err.txt";
     CHECK(run(yamsc + " " + model_path("pendulum") + " -o " + dir +
               "/p.cpp --jacobians sideways 2> " + err) == 2);
-    CHECK(read(err).find("--jacobians must be auto, unrolled or tangent") != std::string::npos);
+    CHECK(read_file(err).find("--jacobians must be auto, unrolled or tangent") !=
+          std::string::npos);
     CHECK(run(yamsc + " " + model_path("pendulum") + " -o " + dir +
               "/p.cpp --jacobians tangent --sensitivities g 2> " + err) == 2);
-    CHECK(read(err).find("--sensitivities needs") != std::string::npos);
+    CHECK(read_file(err).find("--sensitivities needs") != std::string::npos);
     std::ofstream(dir + "/approx.mbd") << "model approx_pendulum\n"
                                           "param g = 9.81\n"
                                           "dof theta\n"
@@ -204,5 +197,5 @@ TEST_CASE("the tangent form is chosen from 25 DOFs on, and explained when asked 
                                           "approx theta order 1\n";
     CHECK(run(yamsc + " " + dir + "/approx.mbd -o " + dir + "/a.cpp --jacobians tangent 2> " +
               err) == 2);
-    CHECK(read(err).find("does not apply to a model with `approx`") != std::string::npos);
+    CHECK(read_file(err).find("does not apply to a model with `approx`") != std::string::npos);
 }

@@ -1,0 +1,39 @@
+#pragma once
+// Files and commands as the tests that run yamsc or a compiler need them:
+// a fresh scratch folder under the test build folder, whole-file reads and
+// writes, and a shell command's exit status.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace test_support {
+
+/// A fresh (emptied) folder YAMSC_TEST_BINARY_DIR/<area>/<name>.
+inline std::string scratch_dir(const std::string& area, const std::string& name) {
+    const std::filesystem::path dir = std::filesystem::path(YAMSC_TEST_BINARY_DIR) / area / name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir.string();
+}
+
+inline std::string read_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+inline void write_file(const std::string& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+/// The exit status of `command` run by the shell (-1 if it did not exit).
+inline int exit_status(const std::string& command) {
+    const int status = std::system(command.c_str());
+    return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+} // namespace test_support
