@@ -119,7 +119,7 @@ struct JointStep {
     Axis axis;                   // translate, rotate
     Expr arg;                    // translate, rotate: DOF name or expression
     std::vector<ModeEntry> dofs; // free: six DOF names (mode empty)
-    Property option;             // option: `elastic_rotation = small|exact`
+    Property option;             // option: `elastic_rotation = small|exact|exact_<order>`
     Loc loc;
 };
 

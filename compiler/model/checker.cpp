@@ -281,13 +281,22 @@ private:
         const ast::Value& v = s.option.value;
         std::string word =
             v.kind == ast::Value::Kind::expr && v.expr.kind == Expr::Kind::name ? v.expr.text : "";
-        if (word != "small" && word != "exact") {
+        // `exact` keeps its original meaning, about x, then y, then z; `exact_yxz`
+        // etc. name another order (the paper's 3-DOF land model turns about y first).
+        static const std::vector<std::string> words = {"small",     "exact",     "exact_xyz",
+                                                       "exact_xzy", "exact_yxz", "exact_yzx",
+                                                       "exact_zxy", "exact_zyx"};
+        if (std::find(words.begin(), words.end(), word) == words.end()) {
             diags_.error(Kind::InvalidValue, v.loc,
-                         "elastic_rotation is `small` or `exact`" +
-                             diag::did_you_mean(word, {"small", "exact"}));
+                         "elastic_rotation is `small`, `exact` (= `exact_xyz`) or `exact_` "
+                         "followed by an order of the axes x, y, z, such as `exact_yxz`" +
+                             diag::did_you_mean(word, words));
             return;
         }
-        b.steps.front().exact_rotation = word == "exact";
+        Step& node = b.steps.front();
+        node.exact_rotation = word != "small";
+        if (word.size() == 9) // exact_abc
+            for (std::size_t i = 0; i < 3; ++i) node.rotation_order[i] = word[6 + i] - 'x';
     }
 
     bool axis_of(const ast::Axis& axis, Step& step, const std::string& body) {

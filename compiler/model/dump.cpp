@@ -11,6 +11,15 @@ std::string vec(const Vec& v) {
            ")";
 }
 
+// The default order (x, y, z) prints as before, so existing dumps stay the same.
+std::string order(const std::array<int, 3>& axes) {
+    if (axes == std::array<int, 3>{{0, 1, 2}}) return "";
+    std::string out = ", about ";
+    for (std::size_t i = 0; i < 3; ++i)
+        out += std::string(i ? ", " : "") + static_cast<char>('x' + axes[i]);
+    return out;
+}
+
 std::string frame_name(const Model& m, int frame) {
     return frame < 0 ? "ground" : m.bodies[static_cast<std::size_t>(frame)].name;
 }
@@ -57,7 +66,9 @@ std::string dump(const Model& m) {
                 break;
             case Step::Kind::node:
                 out << "    node " << s.node << " of " << frame_name(m, b.parent)
-                    << (s.exact_rotation ? " (exact rotation)" : " (small rotation)") << "\n";
+                    << (s.exact_rotation ? " (exact rotation" + order(s.rotation_order) + ")"
+                                         : std::string(" (small rotation)"))
+                    << "\n";
                 break;
             }
         }

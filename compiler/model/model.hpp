@@ -49,6 +49,9 @@ struct Step {
     Expr arg;                    // translate/rotate: distance or angle, a function of q, u, t, p
     int node = -1;               // node: index into the parent's SID nodes
     bool exact_rotation = false; // node: rotation matrices of the slopes, not I + skew(psi q)
+    /// node, exact rotation: the axes (0 x, 1 y, 2 z) in the order the slope rotations
+    /// apply, each about the frame the previous one left (`exact` = `exact_xyz`).
+    std::array<int, 3> rotation_order{{0, 1, 2}};
     Loc loc;
 };
 

@@ -116,8 +116,11 @@ FrameState apply_step(const FrameState& f, const model::Step& step, Symbols& sym
         NodeMotion node = node_motion(*parent, step.node, symbols);
         FrameState n = move_origin(f, node.p, node.pd, node.pdd, node.dp_dq);
         if (step.exact_rotation) {
-            // Rotation matrices of the slopes: about x, then y, then z.
-            for (std::size_t i = 0; i < 3; ++i) {
+            // Rotation matrices of the slopes, each about an axis of the frame the
+            // previous one left, in the model's order (about x, then y, then z unless
+            // it says otherwise): the orders differ at second order in the slopes.
+            for (int axis : step.rotation_order) {
+                const auto i = static_cast<std::size_t>(axis);
                 if (node.theta[i].is_zero()) continue;
                 Vec3 e;
                 e[i] = 1;

@@ -19,6 +19,7 @@
 // that the printed form differs and that the corrected form is ours, with the
 // derivation next to it (and in docs/paper-models.md).
 #include "equations_fixture.hpp"
+#include "test_files.hpp"
 
 #include <doctest/doctest.h>
 
@@ -181,12 +182,12 @@ std::vector<double> frequencies(const Equations& eq, const std::vector<double>& 
     return out;
 }
 
-} // namespace
-
-TEST_CASE("nrel5mw_land_3dof: approximated M and F against Appendix E2 (E13-E26)") {
-    const Equations eq = yamsc::test::derive_file("models/nrel5mw_land_3dof.mbd");
-    auto s = [&](const std::string& n) { return sym(eq, n); };
-    const exmap fixed = substitution(eq, paper_assumptions(eq));
+/// The land model's symbols and the paper's E2 expressions in them.
+struct LandTerms {
+    explicit LandTerms(const Equations& eq) : eq_(eq) {}
+    const Equations& eq_;
+    ex s(const std::string& n) const { return sym(eq_, n); }
+    const exmap fixed = substitution(eq_, paper_assumptions(eq_));
     const ex nu_x = s("tower_n1_psi_1_2"), nu_y = s("tower_n1_psi_2_1");
     const ex Me11 = s("tower_Me_1_1"), Me22 = s("tower_Me_2_2"), Ke11 = s("tower_Ke_1_1"),
              Ke22 = s("tower_Ke_2_2"), De11 = s("tower_De_1_1"), De22 = s("tower_De_2_2");
@@ -200,62 +201,108 @@ TEST_CASE("nrel5mw_land_3dof: approximated M and F against Appendix E2 (E13-E26)
 
     // E13-E15. E15 (line 694) is missing from our copy of the paper; the first
     // order term of eq. 39, 2 (M_N z_NG + M_R z_NR) nu_y, is the one M22 has as E19.
-    const ex E13 = Me11 + M_N + M_R;
-    const ex E14 = (J_yN + J_oR + M_N * (x_NG * x_NG - 2 * x_NG * q1 + z_NG * z_NG) +
-                    M_R * (x_NR * x_NR - 2 * x_NR * q1 + z_NR * z_NR)) *
-                   nu_y * nu_y;
-    const ex E15 = 2 * Mz * nu_y;
-    CHECK(same(eq.M[0][0], E13 + E14 + E15, fixed));
-    // M12 is not printed. Derived: the nacelle turns about x by nu_x q2 and then
-    // about y by nu_y q1, so a point r of the RNA moves along y by
-    // -sin(nu_x q2)(-x sin(nu_y q1) + z cos(nu_y q1)); the q1 and q2 velocities
-    // then share nu_x nu_y x q2 to second order in the slopes.
-    CHECK(same(eq.M[0][1], nu_x * nu_y * q2 * Mx, fixed));
-    // E16 and E20: the paper turns the nacelle about y first, then about x (its
-    // rotor spin axis (1, 0, -theta_t) then sees nu_y q1' about y tilted by nu_x q2:
-    // M13 = J_xR theta_t nu_x nu_y q2); ours turns about x first (rotation
-    // matrices of the slopes about x, then y), which puts the same coupling on
-    // M23 as -J_xR theta_t nu_x nu_y q1 and leaves M13 = 0. Both are second order
-    // in the slopes; which is "right" is a convention of the tower-top rotation.
-    const ex E16 = gyro * q2, E20 = J_xR * nu_x;
-    CHECK_FALSE(same(eq.M[0][2], E16, fixed)); // printed: differs
-    CHECK(same(eq.M[0][2], E16 - gyro * q2, fixed));
-    CHECK_FALSE(same(eq.M[1][2], E20, fixed));
-    CHECK(same(eq.M[1][2], E20 - gyro * q1, fixed));
-    // E17-E19, with the same rotation-order term: 2 nu_x nu_y q1 (M x).
+    const ex E13_15 = Me11 + M_N + M_R +
+                      (J_yN + J_oR + M_N * (x_NG * x_NG - 2 * x_NG * q1 + z_NG * z_NG) +
+                       M_R * (x_NR * x_NR - 2 * x_NR * q1 + z_NR * z_NR)) *
+                          nu_y * nu_y +
+                      2 * Mz * nu_y;
+    const ex E16 = gyro * q2, E20 = J_xR * nu_x, E21 = J_xR;
     const ex E17_19 = Me22 + M_N + M_R +
                       (J_xN + J_xR + M_N * z_NG * z_NG + M_R * z_NR * z_NR) * nu_x * nu_x -
                       2 * Mz * nu_x;
-    CHECK_FALSE(same(eq.M[1][1], E17_19, fixed));
-    CHECK(same(eq.M[1][1], E17_19 + 2 * nu_x * nu_y * q1 * Mx, fixed));
-    CHECK(same(eq.M[2][2], J_xR, fixed)); // E21
-    // E22-E23. The thrust along the shaft, cos(theta_t + nu_y q1) f_a, has
-    // -f_a nu_y^2 q1^2 / 2 at second order in nu_y; the paper drops it.
     const ex E22_23 = f_e1 - Ke11 * q1 - De11 * q1d - gyro * psid * q2d +
                       Mx * nu_y * nu_y * q1d * q1d +
                       g * (M_N * (nu_y * nu_y * z_NG * q1 + nu_y * x_NG) +
                            M_R * (nu_y * nu_y * z_NR * q1 + nu_y * x_NR)) +
                       f_a * (th * nu_y * x_NR - th * nu_y * q1 + nu_y * z_NR + 1);
-    CHECK_FALSE(same(eq.F[0], E22_23, fixed));
-    CHECK(same(eq.F[0], E22_23 - f_a * nu_y * nu_y * q1 * q1 / 2, fixed));
-    // E24-E25. Differences: nu_x tau_a, the aerodynamic torque's work on the
-    // side-side mode (the rotor's spin axis turns with nu_x q2, so its angular
-    // velocity along the shaft is psi' + nu_x q2' in either rotation order), which
-    // the paper drops (or it applies tau_a between rotor and nacelle, as a shaft
-    // torque that does no work on q2); and the rotation-order terms
-    // -nu_x nu_y theta_t tau_a q1,
-    // nu_x nu_y f_a q1 q2 and -2 nu_x nu_y (M x) q1' q2'.
     const ex E24_25 = f_e2 - Ke22 * q2 - De22 * q2d + gyro * psid * q1d +
                       g * Mz * nu_x * nu_x * q2 + f_a * th * nu_x * q2;
-    const ex E24_25_ours = E24_25 + nu_x * tau_a - nu_x * nu_y * th * tau_a * q1 +
-                           nu_x * nu_y * f_a * q1 * q2 - 2 * nu_x * nu_y * Mx * q1d * q2d;
-    CHECK_FALSE(same(eq.F[1], E24_25, fixed));
-    CHECK(same(eq.F[1], E24_25_ours, fixed));
-    // E26: the gyroscopic coupling of the rotor has the opposite sign with our
-    // rotation order (d/dt of M23 q2' = -J_xR theta_t nu_x nu_y (q1' q2')).
     const ex E26 = -gyro * q1d * q2d + tau_a;
-    CHECK_FALSE(same(eq.F[2], E26, fixed));
-    CHECK(same(eq.F[2], E26 + 2 * gyro * q1d * q2d, fixed));
+};
+
+} // namespace
+
+TEST_CASE("nrel5mw_land_3dof: approximated M and F against Appendix E2 (E13-E26)") {
+    // The model turns the nacelle as the paper does: about y by nu_y q1, then
+    // about the turned x by nu_x q2 (`elastic_rotation = exact_yxz`). The rotor's
+    // spin axis (1, 0, -theta_t) then sees the angular velocity
+    // (nu_x q2', nu_y q1' cos(nu_x q2), -nu_y q1' sin(nu_x q2)), whose component
+    // theta_t nu_x nu_y q2 q1' along the shaft is E16.
+    const Equations eq = yamsc::test::derive_file("models/nrel5mw_land_3dof.mbd");
+    const LandTerms p(eq);
+    const exmap& fixed = p.fixed;
+
+    CHECK(same(eq.M[0][0], p.E13_15, fixed));
+    // M12 is not printed, and is 0 in this order: the nacelle's points move along
+    // x and z with q1 and, after the y rotation, along y and z with q2; their
+    // second-order cross terms cancel (in the x-then-y order they leave
+    // nu_x nu_y q2 (M x), see the next test case).
+    CHECK(same(eq.M[0][1], 0, fixed));
+    CHECK(same(eq.M[0][2], p.E16, fixed));
+    CHECK(same(eq.M[1][1], p.E17_19, fixed));
+    CHECK(same(eq.M[1][2], p.E20, fixed));
+    CHECK(same(eq.M[2][2], p.E21, fixed));
+    // E22-E23. Two terms the paper leaves out:
+    // - the thrust along the shaft, cos(theta_t + nu_y q1) f_a, has
+    //   -f_a nu_y^2 q1^2 / 2 at second order in nu_y;
+    // - the aerodynamic torque works on q1 through the rotor's angular velocity
+    //   along the shaft, psi' + nu_x q2' + theta_t nu_x nu_y q2 q1' (the same
+    //   coupling as M13 = E16): theta_t nu_x nu_y q2 tau_a. The paper applies
+    //   tau_a to the azimuth only (it drops nu_x tau_a in F2 as well).
+    CHECK_FALSE(same(eq.F[0], p.E22_23, fixed)); // printed: differs
+    CHECK(same(eq.F[0],
+               p.E22_23 - p.f_a * p.nu_y * p.nu_y * p.q1 * p.q1 / 2 +
+                   p.th * p.nu_x * p.nu_y * p.q2 * p.tau_a,
+               fixed));
+    // E24-E25. Only nu_x tau_a differs: the torque's work on the side-side mode
+    // (the rotor's spin axis turns with nu_x q2, so its angular velocity along
+    // the shaft is psi' + nu_x q2' + ...), which the paper drops, as in F1.
+    CHECK_FALSE(same(eq.F[1], p.E24_25, fixed));
+    CHECK(same(eq.F[1], p.E24_25 + p.nu_x * p.tau_a, fixed));
+    CHECK(same(eq.F[2], p.E26, fixed));
+}
+
+TEST_CASE("nrel5mw_land_3dof turned about x first: the rotation order's terms") {
+    // The same model with `elastic_rotation = exact` (about x by nu_x q2, then
+    // about y by nu_y q1): the terms of E2 that the order changes, at second
+    // order in the slopes, are exactly those the test above matches as printed.
+    // Each check below fails for the other order, so this also tests that the
+    // option reaches the kinematics.
+    std::string text =
+        test_support::read_file(yamsc::test::source_path("models/nrel5mw_land_3dof.mbd"));
+    for (auto [from, to] : {std::pair<std::string, std::string>{"elastic_rotation = exact_yxz",
+                                                                "elastic_rotation = exact"},
+                            {"\"data/", "\"" + yamsc::test::source_path("models/data/")}}) {
+        const auto at = text.find(from);
+        REQUIRE(at != std::string::npos);
+        text.replace(at, from.size(), to);
+    }
+    const std::string path =
+        test_support::scratch_dir("linear", "land_3dof_xyz") + "/nrel5mw_land_3dof_xyz.mbd";
+    test_support::write_file(path, text);
+    yamsc::diag::Diagnostics diags;
+    auto fe = yamsc::driver::run_front_end(path, yamsc::driver::Until::jacobians, diags);
+    REQUIRE_FALSE(diags.has_errors());
+    REQUIRE(fe.equations);
+    const Equations& eq = *fe.equations;
+    const LandTerms p(eq);
+    const exmap& fixed = p.fixed;
+    const ex nuxy = p.nu_x * p.nu_y;
+
+    CHECK(same(eq.M[0][0], p.E13_15, fixed)); // the order does not matter here
+    // A point r of the RNA moves along y by -sin(nu_x q2)(-x sin(nu_y q1) +
+    // z cos(nu_y q1)): the q1 and q2 velocities share nu_x nu_y x q2.
+    CHECK(same(eq.M[0][1], nuxy * p.q2 * p.Mx, fixed));
+    // The gyroscopic coupling moves from M13 to M23 with the opposite sign.
+    CHECK(same(eq.M[0][2], 0, fixed));
+    CHECK(same(eq.M[1][2], p.E20 - p.gyro * p.q1, fixed));
+    CHECK(same(eq.M[1][1], p.E17_19 + 2 * nuxy * p.q1 * p.Mx, fixed));
+    CHECK(same(eq.F[0], p.E22_23 - p.f_a * p.nu_y * p.nu_y * p.q1 * p.q1 / 2, fixed));
+    CHECK(same(eq.F[1],
+               p.E24_25 + p.nu_x * p.tau_a - nuxy * p.th * p.tau_a * p.q1 +
+                   nuxy * p.f_a * p.q1 * p.q2 - 2 * nuxy * p.Mx * p.q1d * p.q2d,
+               fixed));
+    CHECK(same(eq.F[2], p.E26 + 2 * p.gyro * p.q1d * p.q2d, fixed));
 }
 
 TEST_CASE("nrel5mw_land_3dof: geometric stiffness and frequencies (paper 4.4, 4.5)") {
