@@ -35,14 +35,7 @@ void factor_and_solve_accelerations(RoutineBuilder& b, const LinearSources& in, 
 
 Routine linear_routine(Graph& g, const LinearSources& in, int nq, int nu, bool accelerations,
                        const Options& options) {
-    RoutineBuilder b(g, "linear",
-                     "M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with "
-                     "q''0 = M0^-1 F0 (eq. 25)",
-                     point_arguments({argument("M0", ArgumentKind::output_array),
-                                      argument("C0", ArgumentKind::output_array),
-                                      argument("K0", ArgumentKind::output_array),
-                                      argument("Q0", ArgumentKind::output_array)}),
-                     bind(SymbolSource::operating_point()));
+    RoutineBuilder b(g, api_signature("linear"), bind(SymbolSource::operating_point()));
     for (int i = 0; i < nq; ++i)
         for (int j = 0; j <= i; ++j) b.assign("M0", i * nq + j, in.M[i][j]);
     for (int i = 0; i < nq; ++i)
@@ -63,11 +56,7 @@ Routine linear_routine(Graph& g, const LinearSources& in, int nq, int nu, bool a
 // the lower block rows are solved in place, as in rhs_jacobian.
 Routine state_space_routine(Graph& g, const LinearSources& in, int nq, int nu, bool accelerations,
                             const Options& options) {
-    RoutineBuilder b(g, "state_space",
-                     "x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu",
-                     point_arguments({argument("A", ArgumentKind::output_array),
-                                      argument("B", ArgumentKind::output_array)}),
-                     bind(SymbolSource::operating_point()));
+    RoutineBuilder b(g, api_signature("state_space"), bind(SymbolSource::operating_point()));
     const int nx = 2 * nq;
     const NodeId zero = g.number(0.0), one = g.number(1.0);
     for (int i = 0; i < nq; ++i)
@@ -101,11 +90,7 @@ Routine output_matrices_routine(GinacImporter& importer, const Graph& g,
         D.emplace_back();
         for (const GiNaC::ex& e : row) D.back().push_back(importer.import(e));
     }
-    RoutineBuilder b(g, "output_matrices",
-                     "dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu",
-                     point_arguments({argument("C", ArgumentKind::output_array),
-                                      argument("D", ArgumentKind::output_array)}),
-                     bind(SymbolSource::operating_point()));
+    RoutineBuilder b(g, api_signature("output_matrices"), bind(SymbolSource::operating_point()));
     for (std::size_t i = 0; i < C.size(); ++i)
         for (int j = 0; j < nx; ++j) b.assign("C", static_cast<int>(i) * nx + j, C[i][j]);
     for (std::size_t i = 0; i < D.size(); ++i)

@@ -93,11 +93,7 @@ void assign_lower_triangle(RoutineBuilder& b, const char* array, const NodeMatri
 
 Routine mass_matrix_routine(const Graph& g, const ImportedEquations& in, int nq,
                             const Options& options) {
-    RoutineBuilder b(g, "mass_matrix", "M(q) of M q'' = F (symmetric, row-major)",
-                     {argument("t", ArgumentKind::scalar), argument("q", ArgumentKind::input_array),
-                      argument("u", ArgumentKind::input_array), argument("p", ArgumentKind::params),
-                      argument("M", ArgumentKind::output_array)},
-                     bind(without_rates()));
+    RoutineBuilder b(g, api_signature("mass_matrix"), bind(without_rates()));
     assign_lower_triangle(b, "M", in.M);
     // M is symmetric: the upper triangle repeats the lower one.
     for (int i = 0; i < nq; ++i)
@@ -107,19 +103,14 @@ Routine mass_matrix_routine(const Graph& g, const ImportedEquations& in, int nq,
 
 Routine forcing_routine(const Graph& g, const ImportedEquations& in, int nq,
                         const Options& options) {
-    RoutineBuilder b(g, "forcing", "F(q, q', u, t) of M q'' = F",
-                     q_form_arguments({argument("F", ArgumentKind::output_array)}), bind({}));
+    RoutineBuilder b(g, api_signature("forcing"), bind({}));
     for (int i = 0; i < nq; ++i) b.assign("F", i, in.F[static_cast<std::size_t>(i)]);
     return std::move(b).finish(options);
 }
 
 Routine jacobians_routine(const Graph& g, const ImportedEquations& in, int nq, int nu,
                           const Options& options) {
-    RoutineBuilder b(g, "jacobians", "dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)",
-                     q_form_arguments({argument("dF_dq", ArgumentKind::output_array),
-                                       argument("dF_dqd", ArgumentKind::output_array),
-                                       argument("dF_du", ArgumentKind::output_array)}),
-                     bind({}));
+    RoutineBuilder b(g, api_signature("jacobians"), bind({}));
     for (int i = 0; i < nq; ++i)
         for (int j = 0; j < nq; ++j) b.assign("dF_dq", i * nq + j, in.dF_dq[i][j]);
     for (int i = 0; i < nq; ++i)
@@ -130,16 +121,14 @@ Routine jacobians_routine(const Graph& g, const ImportedEquations& in, int nq, i
 }
 
 Routine outputs_routine(const Graph& g, const ImportedEquations& in, const Options& options) {
-    RoutineBuilder b(g, "outputs", "the model's outputs y(q, q', u, t)",
-                     q_form_arguments({argument("y", ArgumentKind::output_array)}), bind({}));
+    RoutineBuilder b(g, api_signature("outputs"), bind({}));
     for (std::size_t i = 0; i < in.y.size(); ++i) b.assign("y", static_cast<int>(i), in.y[i]);
     return std::move(b).finish(options);
 }
 
 Routine rhs_routine(const Graph& g, const ImportedEquations& in, const std::vector<NodeId>& rates,
                     int nq, const Options& options) {
-    RoutineBuilder b(g, "rhs", "x' = [q', M^-1 F] for x = [q, q']", x_form_arguments("xdot"),
-                     bind(SymbolSource::state_vector(nq)));
+    RoutineBuilder b(g, api_signature("rhs"), bind(SymbolSource::state_vector(nq)));
     if (nq > 0) b.local("M", nq * nq);
     for (int i = 0; i < nq; ++i) b.assign("xdot", i, rates[static_cast<std::size_t>(i)]);
     assign_lower_triangle(b, "M", in.M);
@@ -155,8 +144,7 @@ Routine rhs_routine(const Graph& g, const ImportedEquations& in, const std::vect
 // rows of J are an nq x 2nq row-major matrix, solved in place.
 Routine rhs_jacobian_routine(Graph& g, const ImportedEquations& in, int nq,
                              const Options& options) {
-    RoutineBuilder b(g, "rhs_jacobian", "d(rhs)/dx, 2nq x 2nq, row-major", x_form_arguments("J"),
-                     bind(solved_accelerations(nq)));
+    RoutineBuilder b(g, api_signature("rhs_jacobian"), bind(solved_accelerations(nq)));
     const int nx = 2 * nq;
     const NodeId zero = g.number(0.0);
     const NodeId one = g.number(1.0);

@@ -22,6 +22,16 @@ public:
     RoutineBuilder(const Graph& graph, std::string name, std::string summary,
                    std::vector<Argument> arguments, Binding binding);
 
+    /// What the routine is called, what it computes, and its arguments.
+    struct Signature {
+        std::string name;
+        std::string summary;
+        std::vector<Argument> arguments;
+    };
+    RoutineBuilder(const Graph& graph, Signature signature, Binding binding)
+        : RoutineBuilder(graph, std::move(signature.name), std::move(signature.summary),
+                         std::move(signature.arguments), std::move(binding)) {}
+
     /// Nodes the routine reads ready-made instead of computing them (e.g. from
     /// a work array a prologue filled): the leaf for such a node, or nullopt.
     using Frontier = std::function<std::optional<Expr>(NodeId)>;

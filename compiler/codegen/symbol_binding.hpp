@@ -7,6 +7,7 @@
 #include "codegen/routine_builder.hpp"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace yamsc::codegen {
@@ -39,10 +40,14 @@ struct SymbolSource {
 
 RoutineBuilder::Binding bind(SymbolSource source);
 
-/// The argument lists of the public routines: (t, q, qd, u, p, outputs...),
-/// (t, x, u, p, output) and, for the linear model, (q0, qd0, u0, p, outputs...).
-std::vector<Argument> q_form_arguments(std::vector<Argument> outputs);
-std::vector<Argument> x_form_arguments(const char* output);
+/// (q0, qd0, u0, p, outputs...): the arguments of the linear model's routines.
 std::vector<Argument> point_arguments(std::vector<Argument> outputs);
+
+/// The name, summary and arguments of a function of the generated API
+/// (mass_matrix, forcing, jacobians, outputs, rhs, rhs_jacobian, linear,
+/// state_space, output_matrices), in one place for both forms (unrolled and
+/// tangent) so that they cannot drift apart. Throws diag::InternalError for
+/// another name.
+RoutineBuilder::Signature api_signature(std::string_view name);
 
 } // namespace yamsc::codegen

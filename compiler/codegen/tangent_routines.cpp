@@ -68,6 +68,11 @@ private:
         return RoutineBuilder(graph_, name, summary, std::move(args), bind(std::move(names)));
     }
 
+    /// A function of the generated API, with the signature the unrolled form has.
+    RoutineBuilder api(const char* name, SymbolSource names) {
+        return RoutineBuilder(graph_, api_signature(name), bind(std::move(names)));
+    }
+
     // ---- internal routines ----------------------------------------------------------------
     // Each sweep's callee is cut in two: a prologue that computes, once per call
     // of the public function, every value the columns share (what does not
@@ -249,31 +254,19 @@ private:
 
     // ---- public routines ------------------------------------------------------------------
     Routine mass_matrix() {
-        RoutineBuilder b =
-            builder("mass_matrix", "M(q) of M q'' = F (symmetric, row-major)",
-                    {argument("t", ArgumentKind::scalar), argument("q", ArgumentKind::input_array),
-                     argument("u", ArgumentKind::input_array), argument("p", ArgumentKind::params),
-                     argument("M", ArgumentKind::output_array)},
-                    SymbolSource{});
+        RoutineBuilder b = api("mass_matrix", SymbolSource{});
         sweep_mass(b, "M", "t", "q", "u");
         return std::move(b).finish(m_.options);
     }
 
     Routine forcing() {
-        RoutineBuilder b =
-            builder("forcing", "F(q, q', u, t) of M q'' = F",
-                    q_form_arguments({argument("F", ArgumentKind::output_array)}), SymbolSource{});
+        RoutineBuilder b = api("forcing", SymbolSource{});
         for (int i = 0; i < nq_; ++i) b.assign("F", i, in_.F[static_cast<std::size_t>(i)]);
         return std::move(b).finish(m_.options);
     }
 
     Routine jacobians() {
-        RoutineBuilder b =
-            builder("jacobians", "dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)",
-                    q_form_arguments({argument("dF_dq", ArgumentKind::output_array),
-                                      argument("dF_dqd", ArgumentKind::output_array),
-                                      argument("dF_du", ArgumentKind::output_array)}),
-                    SymbolSource{});
+        RoutineBuilder b = api("jacobians", SymbolSource{});
         zeros(b, "a0"); // with a = 0 the derivative of F - M a is that of F
         prepare_tangent(b, {"t", "q", "qd", "u", "a0"});
         sweep_tangent(b, 0, nq_, false, "dF_dq", 0, nq_, 1.0);
@@ -283,16 +276,13 @@ private:
     }
 
     Routine outputs() {
-        RoutineBuilder b =
-            builder("outputs", "the model's outputs y(q, q', u, t)",
-                    q_form_arguments({argument("y", ArgumentKind::output_array)}), SymbolSource{});
+        RoutineBuilder b = api("outputs", SymbolSource{});
         for (int i = 0; i < ny_; ++i) b.assign("y", i, in_.y[static_cast<std::size_t>(i)]);
         return std::move(b).finish(m_.options);
     }
 
     Routine rhs() {
-        RoutineBuilder b = builder("rhs", "x' = [q', M^-1 F] for x = [q, q']",
-                                   x_form_arguments("xdot"), SymbolSource::state_vector(nq_));
+        RoutineBuilder b = api("rhs", SymbolSource::state_vector(nq_));
         if (nq_ == 0) return std::move(b).finish(m_.options);
         b.local("M", nq_ * nq_);
         for (int i = 0; i < nq_; ++i) b.assign("xdot", i, graph_.symbol({SymbolKind::qd, i}));
@@ -305,8 +295,7 @@ private:
 
     // J = [[0, I], [M^-1 dG/dq, M^-1 dG/dq']] with a = q'' (as in the unrolled form).
     Routine rhs_jacobian() {
-        RoutineBuilder b = builder("rhs_jacobian", "d(rhs)/dx, 2nq x 2nq, row-major",
-                                   x_form_arguments("J"), SymbolSource::state_vector(nq_));
+        RoutineBuilder b = api("rhs_jacobian", SymbolSource::state_vector(nq_));
         if (nq_ == 0) return std::move(b).finish(m_.options);
         const int nx = this->nx();
         b.local("M", nq_ * nq_);
@@ -340,14 +329,7 @@ private:
     }
 
     Routine linear() {
-        RoutineBuilder b = builder("linear",
-                                   "M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with "
-                                   "q''0 = M0^-1 F0 (eq. 25)",
-                                   point_arguments({argument("M0", ArgumentKind::output_array),
-                                                    argument("C0", ArgumentKind::output_array),
-                                                    argument("K0", ArgumentKind::output_array),
-                                                    argument("Q0", ArgumentKind::output_array)}),
-                                   SymbolSource::operating_point());
+        RoutineBuilder b = api("linear", SymbolSource::operating_point());
         sweep_mass(b, "M0", "0.0", "q0", "u0");
         factor_at_point(b, "M0");
         prepare_tangent(b, {"0.0", "q0", "qd0", "u0", "qdd0"});
@@ -358,11 +340,7 @@ private:
     }
 
     Routine state_space() {
-        RoutineBuilder b = builder(
-            "state_space", "x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu",
-            point_arguments({argument("A", ArgumentKind::output_array),
-                             argument("B", ArgumentKind::output_array)}),
-            SymbolSource::operating_point());
+        RoutineBuilder b = api("state_space", SymbolSource::operating_point());
         const int nx = this->nx();
         for (int i = 0; i < nq_; ++i)
             for (int j = 0; j < nx; ++j)
@@ -379,11 +357,7 @@ private:
     }
 
     Routine output_matrices() {
-        RoutineBuilder b = builder("output_matrices",
-                                   "dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu",
-                                   point_arguments({argument("C", ArgumentKind::output_array),
-                                                    argument("D", ArgumentKind::output_array)}),
-                                   SymbolSource::operating_point());
+        RoutineBuilder b = api("output_matrices", SymbolSource::operating_point());
         if (ny_ > 0) zeros(b, "a0");
         if (ny_ > 0) prepare_tangent(b, {"0.0", "q0", "qd0", "u0", "a0"});
         sweep_tangent(b, 0, nx(), true, "C", 0, nx(), 1.0);

@@ -1,5 +1,6 @@
 #include "driver/campbell.hpp"
 
+#include "driver/svg_plot.hpp"
 #include "driver/values.hpp"
 
 #include <algorithm>
@@ -25,23 +26,6 @@ std::string fixed(double v) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.1f", v);
     return buffer;
-}
-
-std::string escape(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        if (c == '&')
-            out += "&amp;";
-        else if (c == '<')
-            out += "&lt;";
-        else if (c == '>')
-            out += "&gt;";
-        else if (c == '"')
-            out += "&quot;";
-        else
-            out += c;
-    }
-    return out;
 }
 
 /// About `target` round tick values (1, 2, 5 x 10^k) covering [lo, hi].
@@ -131,7 +115,7 @@ std::string campbell_svg(const std::string& title, const std::string& name,
                       "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
                       "<text x=\"" +
                       std::to_string(width / 2) + "\" y=\"22\" text-anchor=\"middle\" " +
-                      "font-size=\"15\">" + escape(title) + "</text>\n";
+                      "font-size=\"15\">" + xml_escape(title) + "</text>\n";
     auto x_of = [&](double x) { return left + (x - x_lo) / (x_hi - x_lo) * plot_w; };
     for (int p = 0; p < 2; ++p) {
         const int y0 = top + p * (panel + gap);
@@ -200,7 +184,8 @@ std::string campbell_svg(const std::string& title, const std::string& name,
         }
     }
     out += "<text x=\"" + std::to_string(left + plot_w / 2) + "\" y=\"" +
-           std::to_string(height - 10) + "\" text-anchor=\"middle\">" + escape(name) + "</text>\n";
+           std::to_string(height - 10) + "\" text-anchor=\"middle\">" + xml_escape(name) +
+           "</text>\n";
     return out + "</svg>\n";
 }
 

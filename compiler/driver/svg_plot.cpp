@@ -13,23 +13,6 @@ namespace {
 const char* const colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"};
 const char* const reference_colour = "#222222";
 
-std::string escape(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        if (c == '&')
-            out += "&amp;";
-        else if (c == '<')
-            out += "&lt;";
-        else if (c == '>')
-            out += "&gt;";
-        else if (c == '"')
-            out += "&quot;";
-        else
-            out += c;
-    }
-    return out;
-}
-
 std::string num(double v) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.2f", v);
@@ -64,6 +47,23 @@ struct Range {
 };
 
 } // namespace
+
+std::string xml_escape(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '&')
+            out += "&amp;";
+        else if (c == '<')
+            out += "&lt;";
+        else if (c == '>')
+            out += "&gt;";
+        else if (c == '"')
+            out += "&quot;";
+        else
+            out += c;
+    }
+    return out;
+}
 
 std::vector<double> nice_ticks(double lo, double hi, int target) {
     std::vector<double> ticks;
@@ -103,7 +103,7 @@ std::string svg_plot(const std::vector<PlotPanel>& panels, const PlotOptions& op
     out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     if (!options.title.empty())
         out << "<text x=\"" << num(w / 2) << "\" y=\"25\" text-anchor=\"middle\" "
-            << "font-size=\"15\">" << escape(options.title) << "</text>\n";
+            << "font-size=\"15\">" << xml_escape(options.title) << "</text>\n";
     if (!panels.empty()) {
         double lx = left;
         const double ly = top - 14;
@@ -114,8 +114,8 @@ std::string svg_plot(const std::vector<PlotPanel>& panels, const PlotOptions& op
                 << num(lx + 28) << "\" y2=\"" << num(ly - 4) << "\" stroke=\"" << colour
                 << "\" stroke-width=\"2\"" << (s.dashed ? " stroke-dasharray=\"6 4\"" : "")
                 << "/>\n";
-            out << "<text x=\"" << num(lx + 34) << "\" y=\"" << num(ly) << "\">" << escape(s.label)
-                << "</text>\n";
+            out << "<text x=\"" << num(lx + 34) << "\" y=\"" << num(ly) << "\">"
+                << xml_escape(s.label) << "</text>\n";
             lx += 34 + 7.0 * static_cast<double>(s.label.size()) + 30;
         }
     }
@@ -145,7 +145,8 @@ std::string svg_plot(const std::vector<PlotPanel>& panels, const PlotOptions& op
         out << "<rect x=\"" << num(left) << "\" y=\"" << num(y0) << "\" width=\"" << num(plot_w)
             << "\" height=\"" << num(panel_h) << "\" fill=\"none\" stroke=\"#444444\"/>\n";
         out << "<text transform=\"translate(" << num(18) << ' ' << num(y0 + panel_h / 2)
-            << ") rotate(-90)\" text-anchor=\"middle\">" << escape(panel.y_label) << "</text>\n";
+            << ") rotate(-90)\" text-anchor=\"middle\">" << xml_escape(panel.y_label)
+            << "</text>\n";
         if (k + 1 == panels.size()) {
             for (double t : t_ticks)
                 out << "<text x=\"" << num(x_of(t)) << "\" y=\"" << num(y0 + panel_h + 16)

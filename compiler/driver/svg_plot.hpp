@@ -28,6 +28,9 @@ struct PlotOptions {
 /// The SVG document. Non-finite values break a curve.
 std::string svg_plot(const std::vector<PlotPanel>& panels, const PlotOptions& options);
 
+/// `text` with & < > " escaped, for SVG/XML text and attribute values.
+std::string xml_escape(const std::string& text);
+
 /// Tick positions for [lo, hi]: about `target` round values (1, 2, 5 x 10^k).
 std::vector<double> nice_ticks(double lo, double hi, int target = 5);
 

@@ -104,11 +104,7 @@ int main() {
 }
 )";
 
-std::string replace_all(std::string s, const std::string& from, const std::string& to) {
-    for (auto pos = s.find(from); pos != std::string::npos; pos = s.find(from, pos + to.size()))
-        s.replace(pos, from.size(), to);
-    return s;
-}
+using test_support::replace_all;
 
 /// A model compiled with --sensitivities into the program above.
 struct SensitivityModel {
