@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The main job: install what is missing, build, compile the shipped NREL 5-MW
 # model to C++, simulate it, print its natural frequencies and write the results
-# to out/.
+# to out/ (the CSV time series and an SVG plot of it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -14,5 +14,7 @@ echo "== natural frequencies (linearized at rest; paper and OpenFAST: 0.3272 Hz)
 build/compiler/yamsc lin "$model"
 echo "== simulating 30 s of free decay from a 1 m tower-top displacement, rotor at 12.1 rpm"
 build/compiler/yamsc sim "$model" --tmax 30 --dt 0.01 --ic "q=1,psi'=1.2671" \
-  --method cvode -o out/nrel5mw_land_2dof.csv
-echo "== results written to out/ (generated model, CSV time series)"
+  --method cvode -o out/nrel5mw_land_2dof.csv --plot out/nrel5mw_land_2dof.svg \
+  --plot-channels tt_fa,rotor_speed
+echo "== results written to out/: the generated model (nrel5mw_land_2dof.cpp/.hpp),"
+echo "   the time series (out/nrel5mw_land_2dof.csv) and its plot: $(pwd)/out/nrel5mw_land_2dof.svg"
