@@ -1,6 +1,9 @@
 // The bad-input corpus (tests/bad/): one model per diagnostic, its first line
-// `# expect: <the first error, as printed>`. Each must fail with exit status 1,
-// print that error, and write nothing; every diagnostic kind must have a case.
+// `# expect: <the first error, as printed>` (what the case is about), and beside
+// it X.expected, the whole diagnostic output (messages, source lines, carets,
+// notes) refreshed by scripts/update-bad-expected.sh. Each must fail with exit
+// status 1, print exactly that output, and write nothing; every diagnostic kind
+// must have a case.
 #include "diag/diagnostics.hpp"
 
 #include <doctest/doctest.h>
@@ -59,6 +62,14 @@ std::string expectation(const std::string& file) {
     return line.substr(tag.size());
 }
 
+/// The whole diagnostic output expected of `file` (X.mbd -> X.expected).
+std::string expected_output(const std::string& file) {
+    const std::string path = bad_dir + "/" + file.substr(0, file.size() - 4) + ".expected";
+    std::ifstream in(path);
+    REQUIRE_MESSAGE(in.good(), path << " is missing: run scripts/update-bad-expected.sh");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 } // namespace
 
 TEST_CASE(
@@ -70,6 +81,7 @@ TEST_CASE(
         Run check = run_yamsc(bad_dir, "check " + file);
         CHECK(check.status == 1);
         CHECK(check.err.find(expectation(file)) != std::string::npos);
+        CHECK(check.err == expected_output(file));
         CHECK(check.err.find('^') != std::string::npos); // the caret under the source line
         for (std::size_t open = check.err.find(" ["); open != std::string::npos;
              open = check.err.find(" [", open + 1)) {
@@ -94,6 +106,24 @@ TEST_CASE(
         INFO("diagnostic kind '" << name << "' has no case in tests/bad/");
         CHECK(kinds_seen.count(name) == 1);
     }
+}
+
+TEST_CASE("every expected output in tests/bad/ belongs to a model of the corpus") {
+    DIR* d = opendir(bad_dir.c_str());
+    REQUIRE(d);
+    int expected_files = 0;
+    while (dirent* e = readdir(d)) {
+        std::string n = e->d_name;
+        const std::string ext = ".expected";
+        if (n.size() <= ext.size() || n.compare(n.size() - ext.size(), ext.size(), ext) != 0)
+            continue;
+        ++expected_files;
+        const std::string model = n.substr(0, n.size() - ext.size()) + ".mbd";
+        INFO(n << " has no model " << model);
+        CHECK(access((bad_dir + "/" + model).c_str(), F_OK) == 0);
+    }
+    closedir(d);
+    CHECK(expected_files == static_cast<int>(corpus().size()));
 }
 
 TEST_CASE("usage errors exit 2, and a compile failure leaves an existing output untouched") {
