@@ -14,7 +14,7 @@
 
 namespace {
 
-using yamsc::driver::UsageError;
+using yamsc::diag::UsageError;
 
 const char* usage_text = R"(usage:
   yamsc MODEL.mbd -o model.cpp [--header model.hpp] [--lang cpp|c|latex] [--namespace NS]
@@ -243,7 +243,7 @@ int main(int argc, char** argv) {
     } catch (const UsageError& e) {
         std::cerr << "yamsc: usage error: " << e.what() << "\n" << usage_text;
         return 2;
-    } catch (const yamsc::driver::UserError& e) {
+    } catch (const yamsc::diag::UserError& e) {
         std::cerr << "yamsc: error: " << e.what() << "\n";
         return 1;
     } catch (const yamsc::diag::InternalError& e) {

@@ -3,6 +3,8 @@
 // A stage reports as many errors as it can find and never throws for user errors;
 // the driver renders them as `file:line:col: error: message [kind]` with the source
 // line and a caret.
+#include "diag/errors.hpp"
+
 #include <memory>
 #include <string>
 #include <string_view>
@@ -82,14 +84,5 @@ std::string closest_name(std::string_view name, const std::vector<std::string>& 
 
 /// " (did you mean 'x'?)" or "".
 std::string did_you_mean(std::string_view name, const std::vector<std::string>& candidates);
-
-/// An internal error: a bug in yamsc, not in the model. The CLI exits 70 on it.
-struct InternalError : std::exception {
-    explicit InternalError(std::string what) : what_(std::move(what)) {}
-    const char* what() const noexcept override { return what_.c_str(); }
-
-private:
-    std::string what_;
-};
 
 } // namespace yamsc::diag

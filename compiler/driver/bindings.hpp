@@ -9,10 +9,7 @@
 
 namespace yamsc::driver {
 
-/// A user error found outside the model file (exit 1).
-struct UserError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
+using diag::UserError; // diag/errors.hpp
 
 /// Values for `names` starting from `defaults` (nullopt: no default), overridden by
 /// `assignments` (no primes allowed). Throws UserError for an unknown name or a

@@ -1,10 +1,10 @@
 // `yamsc from-openfast`: a model from an OpenFAST ElastoDyn deck (docs/openfast.md).
+#include "data/file_source.hpp"
 #include "driver/bindings.hpp"
 #include "driver/commands.hpp"
 #include "driver/openfast_deck.hpp"
 #include "driver/openfast_model.hpp"
 #include "driver/openfast_rotor.hpp"
-#include "model/checker.hpp"
 #include "model/names.hpp"
 #include "parse/parser.hpp"
 
@@ -101,7 +101,7 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
     auto source = std::make_shared<const diag::SourceFile>(o.output, text);
     auto ast = parse::parse_model(source, check);
     std::optional<model::Model> m;
-    if (ast && !check.has_errors()) m = model::check(*ast, check);
+    if (ast && !check.has_errors()) m = data::check_model(*ast, check);
     err << diags.render();
     if (!m || check.has_errors()) {
         err << check.render()

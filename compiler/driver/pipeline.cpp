@@ -1,7 +1,7 @@
 #include "driver/pipeline.hpp"
 
+#include "data/file_source.hpp"
 #include "driver/files.hpp"
-#include "model/checker.hpp"
 #include "parse/parser.hpp"
 #include "symbolic/approx.hpp"
 #include "symbolic/derive.hpp"
@@ -43,7 +43,7 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
     Stopwatch clock;
     fe.ast = parse::parse_model(fe.source, diags);
     if (!fe.ast || diags.has_errors() || until == Until::ast) return fe;
-    fe.model = model::check(*fe.ast, diags);
+    fe.model = data::check_model(*fe.ast, diags);
     if (!fe.model || diags.has_errors() || until == Until::model) return fe;
     say(timed("parsed and checked", clock.seconds()));
     // Only the Jacobian stage can use the tangent form; `approx` needs M itself.

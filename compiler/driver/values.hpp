@@ -1,6 +1,8 @@
 #pragma once
 // Values given on the command line: `name=v,name=v` assignments (with `deg`) and
 // `v,v,v` lists. Errors are usage errors (exit 2) with a message.
+#include "diag/errors.hpp"
+
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -8,9 +10,7 @@
 
 namespace yamsc::driver {
 
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
+using diag::UsageError; // diag/errors.hpp
 
 /// "1.5", "-2e3", "5deg", "5 deg" -> value in SI (deg converted to rad).
 double parse_value(const std::string& text, const std::string& option);

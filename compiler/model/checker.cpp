@@ -39,8 +39,8 @@ Vec zero_vec(const Loc& loc) {
 
 class Checker {
 public:
-    Checker(const ast::ModelFile& file, diag::Diagnostics& diags)
-        : file_(file), diags_(diags), exprs_(names_, model_.inputs, diags) {}
+    Checker(const ast::ModelFile& file, DataSource& data, diag::Diagnostics& diags)
+        : file_(file), data_(data), diags_(diags), exprs_(names_, model_.inputs, diags) {}
 
     std::optional<Model> run() {
         model_.source = file_.source;
@@ -207,13 +207,7 @@ private:
         NameValues values;
         for (const auto& p : model_.params)
             if (p.value) values[p.name] = *p.value;
-        std::string base;
-        if (file_.source) {
-            const std::string& path = file_.source->path();
-            auto slash = path.rfind('/');
-            if (slash != std::string::npos) base = path.substr(0, slash + 1);
-        }
-        FlexibleInputs in{names_, values, base, diags_, model_.files_read};
+        FlexibleInputs in{names_, values, data_, diags_};
         auto flex = check_flexible(fb, in);
         if (!flex) return std::nullopt;
         Body b;
@@ -891,6 +885,7 @@ private:
     static constexpr int max_approx_order = 8;
 
     const ast::ModelFile& file_;
+    DataSource& data_;
     diag::Diagnostics& diags_;
     Model model_;
     SymbolTable names_;
@@ -899,8 +894,8 @@ private:
 
 } // namespace
 
-std::optional<Model> check(const ast::ModelFile& file, diag::Diagnostics& diags) {
-    return Checker(file, diags).run();
+std::optional<Model> check(const ast::ModelFile& file, DataSource& data, diag::Diagnostics& diags) {
+    return Checker(file, data, diags).run();
 }
 
 } // namespace yamsc::model

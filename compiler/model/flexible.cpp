@@ -1,10 +1,5 @@
 #include "model/flexible.hpp"
 
-#include "beam/elastodyn.hpp"
-#include "beam/make_sid.hpp"
-#include "diag/read_text.hpp"
-#include "sid/reader.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -15,15 +10,6 @@ namespace yamsc::model {
 using diag::Kind;
 
 namespace {
-
-/// Reads a data file named in the model; relative names start at the model's folder.
-std::shared_ptr<const diag::SourceFile> read_data_file(const std::string& name, const Loc& loc,
-                                                       FlexibleInputs& in) {
-    std::string path = !name.empty() && name[0] == '/' ? name : in.base_dir + name;
-    auto file = diag::read_text_file(path, in.diags, loc);
-    if (file) in.files_read.push_back(path);
-    return file;
-}
 
 /// A SID of nq modes whose order-0 entries are all unknown (NaN): the shape of a
 /// symbolic body given without data.
@@ -103,13 +89,11 @@ public:
             return std::nullopt;
         }
         if (sid_file) {
-            auto file = read_data_file(sid_file->value.str, sid_file->value.loc, in_);
-            if (!file) return std::nullopt;
-            int errors = in_.diags.error_count();
-            data = sid::read_sid(file, in_.diags);
-            if (!data || in_.diags.error_count() > errors) {
-                in_.diags.note(sid_file->value.loc,
-                               "in the SID of flexible body '" + b_.name + "'");
+            const std::size_t reported = in_.diags.all().size();
+            data = in_.data.sid_file(sid_file->value.str, sid_file->value.loc, in_.diags);
+            if (!data) {
+                note_way_back(reported, sid_file->value.loc,
+                              "in the SID of flexible body '" + b_.name + "'");
                 return std::nullopt;
             }
             flex.description = "SID file " + sid_file->value.str;
@@ -120,7 +104,8 @@ public:
                       "give the modes of a beam inside its block: `modes = (fa1 -> q)`");
             auto beam = beam_of_block(*b_.beam, flex);
             if (!beam) return std::nullopt;
-            data = beam::make_sid(*beam);
+            data = in_.data.beam_sid(*beam, b_.name, b_.beam->loc, in_.diags);
+            if (!data) return std::nullopt;
             flex.dofs.clear();
             for (const auto& m : beam_modes_) {
                 flex.sid_modes.push_back(static_cast<int>(flex.dofs.size()));
@@ -135,6 +120,19 @@ public:
 private:
     void error(Kind kind, const Loc& loc, const std::string& message) {
         in_.diags.error(kind, loc, message);
+    }
+
+    /// Errors the data stage reported inside a data file (since diagnostic number
+    /// `reported`) get a note at `loc`, the place in the model that named the file.
+    /// Errors already at a place in the model (the file cannot be read, an unknown
+    /// format) need none.
+    void note_way_back(std::size_t reported, const Loc& loc, const std::string& message) {
+        const auto& all = in_.diags.all();
+        for (std::size_t i = reported; i < all.size(); ++i)
+            if (all[i].severity == diag::Severity::error && all[i].loc.file != loc.file) {
+                in_.diags.note(loc, message);
+                return;
+            }
     }
 
     std::optional<double> number(const Expr& e, const std::string& what) {
@@ -285,22 +283,10 @@ std::optional<beam::Beam> FlexibleChecker::beam_of_block(const ast::Beam& block,
         if (!block.mode_shapes.empty())
             error(Kind::InvalidValue, block.mode_shapes.front().loc,
                   "mode shapes come from the file; define them only in inline beams");
-        auto file = read_data_file(*block.file, block.loc, in_);
-        if (!file) return std::nullopt;
-        int errors = in_.diags.error_count();
-        if (block.format == "elastodyn_tower")
-            beam = beam::read_elastodyn_tower(file, *length, names, in_.diags);
-        else if (block.format == "elastodyn_blade")
-            beam = beam::read_elastodyn_blade(file, *length, names, in_.diags);
-        else {
-            error(Kind::InvalidValue, block.loc,
-                  "unknown beam file format '" + block.format + "'" +
-                      diag::did_you_mean(block.format, {"elastodyn_tower", "elastodyn_blade"}) +
-                      " (known: elastodyn_tower, elastodyn_blade)");
-            return std::nullopt;
-        }
-        if (!beam || in_.diags.error_count() > errors) {
-            in_.diags.note(block.loc, "in the beam of flexible body '" + b_.name + "'");
+        const std::size_t reported = in_.diags.all().size();
+        beam = in_.data.beam_file(block.format, *block.file, *length, names, block.loc, in_.diags);
+        if (!beam) {
+            note_way_back(reported, block.loc, "in the beam of flexible body '" + b_.name + "'");
             return std::nullopt;
         }
         beam->integration_stations = stations;
@@ -308,11 +294,6 @@ std::optional<beam::Beam> FlexibleChecker::beam_of_block(const ast::Beam& block,
     } else {
         beam = inline_beam(block, *length, stations);
         if (!beam) return std::nullopt;
-        if (auto problem = beam::check_beam(*beam)) {
-            error(Kind::InvalidValue, block.loc,
-                  "the beam of '" + b_.name + "' is not valid: " + *problem);
-            return std::nullopt;
-        }
         flex.description = "inline beam";
     }
     return beam;

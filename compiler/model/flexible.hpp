@@ -1,7 +1,8 @@
 #pragma once
-// Flexible bodies of the checked model: their SID from a file, from a beam
-// description (inline or an ElastoDyn file) computed by beam/, reduced to the modes
-// the model uses, and the mode -> DOF map.
+// Flexible bodies of the checked model: their SID from a file or from a beam
+// description (inline or an ElastoDyn file), asked of the data stage through
+// model::DataSource, reduced to the modes the model uses, and the mode -> DOF map.
+#include "model/data_source.hpp"
 #include "model/expr_check.hpp"
 
 #include <functional>
@@ -12,9 +13,8 @@ namespace yamsc::model {
 struct FlexibleInputs {
     const SymbolTable& names;
     const NameValues& param_values; // defaults, for beam dimensions
-    std::string base_dir;           // relative file names start here
+    DataSource& data;               // SID and beam files, beam preprocessing
     diag::Diagnostics& diags;
-    std::vector<std::string>& files_read;
 };
 
 /// Checks a `flexible NAME { ... }` block; nullopt after reporting errors.

@@ -1,18 +1,22 @@
 #include "model/names.hpp"
 
+#include "ast/keywords.hpp"
+
 #include <array>
 #include <set>
 
 namespace yamsc::model {
 namespace {
 
-const std::set<std::string, std::less<>>& language_keywords() {
-    static const std::set<std::string, std::less<>> words = {
-        "model",  "param",    "input",  "dof",       "gravity",  "rigid",     "flexible",
-        "joint",  "force",    "torque", "spring",    "genforce", "approx",    "linearize",
-        "output", "point",    "ground", "t",         "deg",      "pi",        "at",
-        "on",     "in",       "order",  "stiffness", "damping",  "translate", "rotate",
-        "free",   "symbolic", "beam",   "mode",      "position", "velocity",  "angular_velocity"};
+// The model language's keywords and predefined names (ast/keywords.cpp: one list
+// for the parser's suggestions and for this check).
+const std::set<std::string, std::less<>>& language_words() {
+    static const std::set<std::string, std::less<>> words = [] {
+        std::set<std::string, std::less<>> all(ast::language_keywords().begin(),
+                                               ast::language_keywords().end());
+        all.insert(ast::predefined_names().begin(), ast::predefined_names().end());
+        return all;
+    }();
     return words;
 }
 
@@ -158,7 +162,7 @@ const std::set<std::string, std::less<>>& math_macros() {
 } // namespace
 
 std::string reserved_reason(std::string_view name) {
-    if (language_keywords().count(name)) return "is a keyword of the model language";
+    if (language_words().count(name)) return "is a keyword of the model language";
     if (c_cpp_keywords().count(name)) return "is a C or C++ keyword or reserved name";
     if (math_macros().count(name)) return "is a macro of the C math library";
     if (function_arity(name) >= 0) return "is a function of the model language";

@@ -1,7 +1,7 @@
 #include "parse/error_messages.hpp"
 
+#include "ast/keywords.hpp"
 #include "diag/diagnostics.hpp"
-#include "parse/keywords.hpp"
 
 #include <cstdio>
 
@@ -131,7 +131,7 @@ ErrorMessage error_message<grammar::unknown_statement>::compose(std::string_view
                                                                 const ParseState& st) {
     if (const std::string_view word = leading_word(rest); !word.empty()) {
         return {"unknown statement " + quoted(word) +
-                diag::did_you_mean(word, statement_keywords())};
+                diag::did_you_mean(word, ast::statement_keywords())};
     }
     if (rest[0] == '}') return {"unexpected '}': no block is open"};
     if (rest[0] == '{') return {"unexpected '{': a block starts on the line of its statement"};
@@ -145,12 +145,12 @@ ErrorMessage error_message<grammar::unknown_rigid_item>::compose(std::string_vie
 
 ErrorMessage error_message<grammar::unknown_flexible_item>::compose(std::string_view rest,
                                                                     const ParseState& st) {
-    return unknown_property_item(rest, flexible_item_keywords(), st);
+    return unknown_property_item(rest, ast::flexible_item_keywords(), st);
 }
 
 ErrorMessage error_message<grammar::unknown_beam_item>::compose(std::string_view rest,
                                                                 const ParseState& st) {
-    return unknown_property_item(rest, beam_item_keywords(), st);
+    return unknown_property_item(rest, ast::beam_item_keywords(), st);
 }
 
 ErrorMessage error_message<grammar::unknown_joint_item>::compose(std::string_view rest,
@@ -161,7 +161,7 @@ ErrorMessage error_message<grammar::unknown_joint_item>::compose(std::string_vie
                              "'option = value', found {found}",
                              rest, st)};
     }
-    const std::string suggestion = diag::closest_name(word, joint_step_keywords());
+    const std::string suggestion = diag::closest_name(word, ast::joint_step_keywords());
     if (!suggestion.empty()) {
         return {"unknown joint step " + quoted(word) + " (did you mean '" + suggestion + "'?)"};
     }

@@ -4,8 +4,8 @@
 // files of the seed models (and every reader behind them).
 // Properties: no crash, no sanitizer report, no exception; every error is
 // reported with a file, and a rejected model reports at least one error.
+#include "data/file_source.hpp"
 #include "diag/diagnostics.hpp"
-#include "model/checker.hpp"
 #include "parse/parser.hpp"
 
 #include <cstdint>
@@ -22,7 +22,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!ast) {
         if (!diags.has_errors()) std::abort(); // rejected without saying why
     } else if (!diags.has_errors()) {
-        auto model = model::check(*ast, diags);
+        auto model = data::check_model(*ast, diags);
         if (!model && !diags.has_errors()) std::abort();
     }
     for (const auto& d : diags.all())

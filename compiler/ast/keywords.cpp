@@ -1,6 +1,6 @@
-#include "parse/keywords.hpp"
+#include "ast/keywords.hpp"
 
-namespace yamsc::parse {
+namespace yamsc::ast {
 
 const std::vector<std::string>& statement_keywords() {
     static const std::vector<std::string> words{
@@ -28,9 +28,8 @@ const std::vector<std::string>& joint_step_keywords() {
 const std::vector<std::string>& language_keywords() {
     static const std::vector<std::string> words = [] {
         std::vector<std::string> all = statement_keywords();
-        for (const char* w :
-             {"beam", "symbolic", "modes", "mode", "at", "translate", "rotate", "free", "order",
-              "deg", "tip", "node", "on", "in", "stiffness", "damping"}) {
+        for (const char* w : {"beam", "symbolic", "mode", "at", "translate", "rotate", "free",
+                              "order", "deg", "on", "in", "stiffness", "damping"}) {
             all.emplace_back(w);
         }
         return all;
@@ -38,4 +37,10 @@ const std::vector<std::string>& language_keywords() {
     return words;
 }
 
-} // namespace yamsc::parse
+const std::vector<std::string>& predefined_names() {
+    static const std::vector<std::string> words{"ground",   "t",        "pi",
+                                                "position", "velocity", "angular_velocity"};
+    return words;
+}
+
+} // namespace yamsc::ast
