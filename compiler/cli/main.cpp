@@ -35,7 +35,8 @@ const char* usage_text = R"(usage:
 eval, lin and sim take --sid body=file.sid: the shape integrals of a flexible body
 declared with `symbolic modes`, read from a SID file. Values accept `deg`: --set theta_t=5deg.
 sim starts from the model's `initial` block (zeros without one); --ic overrides single values.
-Exit status: 0 ok, 1 error in the model or its inputs, 2 usage error, 70 internal error.
+Exit status: 0 ok, 1 error in the model or its inputs, 2 usage error (also an output that
+names an input or another output: nothing is written), 70 internal error.
 )";
 
 /// Command-line options of one subcommand: `--name value`, `--name=value`, flags.

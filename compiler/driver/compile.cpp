@@ -4,6 +4,7 @@
 #include "codegen/module.hpp"
 #include "driver/commands.hpp"
 #include "driver/files.hpp"
+#include "driver/outputs.hpp"
 
 #include "codegen/emit_latex.hpp"
 #include "codegen/latex_printer.hpp"
@@ -166,6 +167,13 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
     if (!o.name_space.empty()) check_namespace(o.name_space, lang);
     if (!o.dump.empty() && o.dump != "ast" && o.dump != "model" && o.dump != "module")
         throw UsageError("--dump takes ast, model or module");
+    // --dump prints and writes no file.
+    const std::vector<NamedFile> output_files =
+        o.dump.empty() ? std::vector<NamedFile>{{"-o", o.output},
+                                                {"--header", o.header},
+                                                {"--depfile", o.depfile}}
+                       : std::vector<NamedFile>{};
+    check_outputs({{"the model", o.model}}, output_files);
 
     diag::Diagnostics diags;
     auto progress = [&](const std::string& s) {
@@ -174,7 +182,9 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
     Until until = o.dump == "ast"     ? Until::ast
                   : o.dump == "model" ? Until::model
                                       : Until::jacobians;
-    FrontEnd fe = run_front_end(o.model, until, diags, progress, derivatives_of(o));
+    FrontEnd fe = run_front_end(
+        o.model, until, diags, progress, derivatives_of(o),
+        [&](const model::Model& m) { check_outputs(data_files_of(m), output_files); });
     err << diags.render();
     if (diags.has_errors()) return 1;
     if (o.jacobians == "tangent" && fe.equations && !fe.equations->tangent_form)

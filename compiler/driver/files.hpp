@@ -1,7 +1,8 @@
 #pragma once
 // Files: reading sources with a located error, and the digest that identifies
-// a model's source in generated headers. Outputs are written atomically with
-// the runtime's write_file_atomically (temporary file, then rename).
+// a model's source in generated headers. Outputs are checked against the
+// inputs by driver/outputs.hpp and written by the runtime's
+// write_file_atomically (yamsc/atomic_file.hpp).
 #include "diag/diagnostics.hpp"
 
 #include <optional>

@@ -5,6 +5,7 @@
 #include "driver/openfast_deck.hpp"
 #include "driver/openfast_model.hpp"
 #include "driver/openfast_rotor.hpp"
+#include "driver/outputs.hpp"
 #include "model/names.hpp"
 #include "parse/parser.hpp"
 
@@ -48,12 +49,20 @@ std::string path_from(const fs::path& folder, const std::string& path) {
 } // namespace
 
 int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream& err) {
+    const std::vector<NamedFile> output{{"-o", o.output}};
+    check_outputs({{"the deck", o.deck}}, output);
     diag::Diagnostics diags;
     auto deck = read_openfast_deck(o.deck, diags);
     if (!deck) {
         err << diags.render();
         return 1;
     }
+    std::vector<NamedFile> deck_files{{"the tower file of the deck", deck->tower_file}};
+    if (deck->fst) deck_files.push_back({"the deck's .fst file", deck->fst->path()});
+    if (deck->ed) deck_files.push_back({"the deck's ElastoDyn file", deck->ed->path()});
+    for (const std::string& blade : deck->blade_files)
+        deck_files.push_back({"a blade file of the deck", blade});
+    check_outputs(deck_files, output);
     OpenFastModelInput in;
     in.deck = &*deck;
     in.dofs = deck->dofs;
@@ -109,6 +118,7 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
                "written\n";
         return 1;
     }
+    check_outputs(data_files_of(*m), output);
     runtime::write_file_atomically(o.output, text);
     out << "wrote " << o.output << ": " << m->dofs.size() << " DOFs (";
     for (std::size_t i = 0; i < m->dofs.size(); ++i) out << (i ? ", " : "") << m->dofs[i].name;

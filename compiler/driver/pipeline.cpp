@@ -33,7 +33,8 @@ std::string timed(const char* what, double s) {
 
 FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& diags,
                        const std::function<void(const std::string&)>& progress,
-                       Derivatives derivatives) {
+                       Derivatives derivatives,
+                       const std::function<void(const model::Model&)>& checked) {
     auto say = [&](const std::string& s) {
         if (progress) progress(s);
     };
@@ -44,7 +45,9 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
     fe.ast = parse::parse_model(fe.source, diags);
     if (!fe.ast || diags.has_errors() || until == Until::ast) return fe;
     fe.model = data::check_model(*fe.ast, diags);
-    if (!fe.model || diags.has_errors() || until == Until::model) return fe;
+    if (!fe.model || diags.has_errors()) return fe;
+    if (checked) checked(*fe.model);
+    if (until == Until::model) return fe;
     say(timed("parsed and checked", clock.seconds()));
     // Only the Jacobian stage can use the tangent form; `approx` needs M itself.
     const bool tangent =

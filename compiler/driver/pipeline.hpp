@@ -29,8 +29,12 @@ enum class Derivatives { automatic, unrolled, tangent };
 inline constexpr std::size_t tangent_form_min_dofs = 25;
 
 /// Runs the stages up to `until`. `progress` (may be empty) receives a line per stage.
+/// `checked` (may be empty) sees the checked model before the equations are
+/// derived: the data files it read are known there, and an exception from it
+/// stops the run before the expensive stages.
 FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& diags,
                        const std::function<void(const std::string&)>& progress = {},
-                       Derivatives derivatives = Derivatives::automatic);
+                       Derivatives derivatives = Derivatives::automatic,
+                       const std::function<void(const model::Model&)>& checked = {});
 
 } // namespace yamsc::driver

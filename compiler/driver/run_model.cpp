@@ -7,6 +7,7 @@
 #include "driver/compare.hpp"
 #include "driver/jit.hpp"
 #include "driver/json.hpp"
+#include "driver/outputs.hpp"
 #include "driver/pipeline.hpp"
 #include "driver/sid_values.hpp"
 #include "driver/svg_plot.hpp"
@@ -38,13 +39,17 @@ struct Loaded {
     FrontEnd front; // the checked model and its equations (lin: the operating point)
 };
 
+/// `outputs` are checked against the model's data files before anything is derived.
 std::optional<Loaded> load(const std::string& path, const std::vector<Assignment>& set,
-                           const std::string& sid_spec, bool verbose, std::ostream& err) {
+                           const std::string& sid_spec, bool verbose, std::ostream& err,
+                           const std::vector<NamedFile>& outputs) {
     diag::Diagnostics diags;
     auto progress = [&](const std::string& s) {
         if (verbose) err << "yamsc: " << s << "\n";
     };
-    FrontEnd fe = run_front_end(path, Until::jacobians, diags, progress);
+    FrontEnd fe =
+        run_front_end(path, Until::jacobians, diags, progress, Derivatives::automatic,
+                      [&](const model::Model& m) { check_outputs(data_files_of(m), outputs); });
     err << diags.render();
     if (diags.has_errors()) return std::nullopt;
     JitOptions jit;
@@ -240,10 +245,15 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     if (o.channels != "all" && o.channels != "openfast")
         throw UsageError("--channels must be all or openfast, not '" + o.channels + "'");
     if (!o.at.empty() && !o.linear) throw UsageError("--at needs --linear");
+    const std::vector<NamedFile> outputs{{"-o", o.output}, {"--plot", o.plot}};
+    std::vector<NamedFile> inputs = sid_files_of(o.sid);
+    inputs.push_back({"the model", o.model});
+    inputs.push_back({"the --compare table", o.compare});
+    check_outputs(inputs, outputs);
     // A bad reference fails before anything is simulated or written.
     std::optional<Table> reference;
     if (!o.compare.empty()) reference = read_table(o.compare);
-    auto loaded = load(o.model, o.set, o.sid, o.verbose, err);
+    auto loaded = load(o.model, o.set, o.sid, o.verbose, err, outputs);
     if (!loaded) return 1;
     std::vector<double> q, qd;
     initial_state(*loaded, o.ic, q, qd);
@@ -297,7 +307,11 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     if (o.sweep.empty() && (!o.output.empty() || !o.plot.empty()))
         throw UsageError("lin writes files (-o, --plot) only for --sweep");
     if (!o.sweep.empty() && o.json) throw UsageError("--sweep writes CSV, not --json");
-    auto loaded = load(o.model, o.set, o.sid, false, err);
+    const std::vector<NamedFile> outputs{{"-o", o.output}, {"--plot", o.plot}};
+    std::vector<NamedFile> inputs = sid_files_of(o.sid);
+    inputs.push_back({"the model", o.model});
+    check_outputs(inputs, outputs);
+    auto loaded = load(o.model, o.set, o.sid, false, err, outputs);
     if (!loaded) return 1;
     if (!o.sweep.empty()) return campbell(*loaded, o, out);
     const runtime::ModelView& v = loaded->view;

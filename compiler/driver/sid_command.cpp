@@ -3,6 +3,7 @@
 #include "beam/make_sid.hpp"
 #include "driver/commands.hpp"
 #include "driver/files.hpp"
+#include "driver/outputs.hpp"
 #include "sid/writer.hpp"
 
 #include <yamsc/atomic_file.hpp>
@@ -17,6 +18,9 @@ int sid(const SidOptions& o, std::ostream& out, std::ostream& err) {
     if (!(o.length > 0)) throw UsageError("--length L (the beam length in m) is required");
     if (o.stations < 3 || o.stations > 10000) throw UsageError("--stations must be 3 to 10000");
     const bool tower = !o.tower.empty();
+    const bool to_stdout = o.output.empty() || o.output == "-";
+    check_outputs({{"--elastodyn-tower", o.tower}, {"--elastodyn-blade", o.blade}},
+                  {{"-o", to_stdout ? "" : o.output}});
     std::vector<std::string> modes = o.modes;
     if (modes.empty())
         modes = tower ? std::vector<std::string>{"fa1", "ss1"}
@@ -32,7 +36,7 @@ int sid(const SidOptions& o, std::ostream& out, std::ostream& err) {
     b->integration_stations = o.stations;
     sid::Sid data = beam::make_sid(*b);
     std::string text = sid::write_sid(data);
-    if (o.output.empty() || o.output == "-")
+    if (to_stdout)
         out << text;
     else
         runtime::write_file_atomically(o.output, text);

@@ -47,8 +47,8 @@ std::vector<Assignment> body_values(const model::Model& m, const std::string& bo
 
 } // namespace
 
-std::vector<Assignment> sid_parameter_values(const model::Model& m, const std::string& spec) {
-    std::vector<Assignment> out;
+std::vector<std::pair<std::string, std::string>> sid_spec_items(const std::string& spec) {
+    std::vector<std::pair<std::string, std::string>> items;
     std::size_t start = 0;
     while (start < spec.size()) {
         std::size_t comma = spec.find(',', start);
@@ -57,9 +57,17 @@ std::vector<Assignment> sid_parameter_values(const model::Model& m, const std::s
         auto eq = item.find('=');
         if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
             throw UsageError("--sid takes body=file.sid[,body=file.sid]");
-        auto values = body_values(m, item.substr(0, eq), item.substr(eq + 1));
-        out.insert(out.end(), values.begin(), values.end());
+        items.emplace_back(item.substr(0, eq), item.substr(eq + 1));
         start = comma + 1;
+    }
+    return items;
+}
+
+std::vector<Assignment> sid_parameter_values(const model::Model& m, const std::string& spec) {
+    std::vector<Assignment> out;
+    for (const auto& [body, path] : sid_spec_items(spec)) {
+        auto values = body_values(m, body, path);
+        out.insert(out.end(), values.begin(), values.end());
     }
     return out;
 }

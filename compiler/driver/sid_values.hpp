@@ -12,4 +12,7 @@ namespace yamsc::driver {
 /// parameter for (it was zero when the model was compiled).
 std::vector<Assignment> sid_parameter_values(const model::Model& m, const std::string& spec);
 
+/// The (body, path) items of `spec`; throws UsageError when one is not `body=path`.
+std::vector<std::pair<std::string, std::string>> sid_spec_items(const std::string& spec);
+
 } // namespace yamsc::driver
