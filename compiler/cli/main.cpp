@@ -98,6 +98,38 @@ private:
     std::vector<std::string> positional_;
 };
 
+/// The value of option `name` among `choices` (its fallback when not given);
+/// anything else is a usage error that lists the choices.
+template <class Enum>
+Enum choice(const Args& a, const std::string& name, Enum fallback,
+            const std::vector<std::pair<std::string, Enum>>& choices) {
+    if (!a.has(name)) return fallback;
+    const std::string given = a.get(name);
+    std::string names;
+    for (std::size_t i = 0; i < choices.size(); ++i) {
+        if (choices[i].first == given) return choices[i].second;
+        names += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i].first;
+    }
+    throw UsageError(name + " must be " + names + ", not '" + given + "'");
+}
+
+/// The language of a compile: --lang, else the extension of -o.
+yamsc::driver::Language language_of(const Args& a, const std::string& output) {
+    using yamsc::driver::Language;
+    if (a.has("--lang"))
+        return choice(a, "--lang", Language::cpp,
+                      {{"cpp", Language::cpp}, {"c", Language::c}, {"latex", Language::latex}});
+    const auto slash = output.find_last_of('/');
+    const auto dot = output.find_last_of('.');
+    const std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash)
+                                ? ""
+                                : output.substr(dot + 1);
+    if (ext == "cpp" || ext == "cc" || ext == "cxx" || ext == "hpp") return Language::cpp;
+    if (ext == "c" || ext == "h") return Language::c;
+    if (ext == "tex") return Language::latex;
+    throw UsageError("cannot tell the language from '" + output + "': give --lang cpp|c|latex");
+}
+
 /// "a,b,c" -> {"a", "b", "c"}; "" -> {}.
 std::vector<std::string> comma_list(const std::string& text) {
     std::vector<std::string> items;
@@ -143,14 +175,17 @@ int run(int argc, char** argv) {
                {"--json"});
         LinOptions o;
         o.model = a.model();
-        o.sweep = a.get("--sweep");
+        if (a.has("--sweep")) o.sweep = parse_sweep(a.get("--sweep"));
         o.output = a.get("-o");
         o.plot = a.get("--plot");
+        if (!o.sweep && (!o.output.empty() || !o.plot.empty()))
+            throw UsageError("lin writes files (-o, --plot) only for --sweep");
         o.at = a.assignments("--at");
         o.u = a.assignments("--u");
         o.set = a.assignments("--set");
         o.sid = a.get("--sid");
         o.json = a.has("--json");
+        if (o.sweep && o.json) throw UsageError("--sweep writes CSV, not --json");
         return lin(o, std::cout, std::cerr);
     }
     if (cmd == "sid") {
@@ -182,16 +217,14 @@ int run(int argc, char** argv) {
         o.u = a.assignments("--u");
         o.set = a.assignments("--set");
         o.sid = a.get("--sid");
-        o.method = a.get("--method", "rk4");
-        if (o.method != "rk4" && o.method != "cvode")
-            throw UsageError("--method must be rk4 or cvode, not '" + o.method + "'");
+        o.method = choice(a, "--method", SimMethod::rk4,
+                          {{"rk4", SimMethod::rk4}, {"cvode", SimMethod::cvode}});
         o.rtol = a.number("--rtol", o.rtol);
         o.atol = a.number("--atol", o.atol);
         o.output = a.get("-o");
         o.verbose = a.has("-v");
-        o.channels = a.get("--channels", "all");
-        if (o.channels != "all" && o.channels != "openfast")
-            throw UsageError("--channels must be all or openfast, not '" + o.channels + "'");
+        o.channels = choice(a, "--channels", Channels::all,
+                            {{"all", Channels::all}, {"openfast", Channels::openfast}});
         o.compare = a.get("--compare");
         o.plot = a.get("--plot");
         o.plot_channels = comma_list(a.get("--plot-channels"));
@@ -224,15 +257,26 @@ int run(int argc, char** argv) {
     o.model = a.model();
     o.output = a.get("-o");
     o.header = a.get("--header");
-    o.lang = a.get("--lang");
     o.name_space = a.get("--namespace");
-    o.dump = a.get("--dump");
+    o.dump = choice(a, "--dump", Dump::none,
+                    {{"ast", Dump::ast}, {"model", Dump::model}, {"module", Dump::module}});
+    if (o.output.empty() && o.dump == Dump::none) throw UsageError("no output given (-o FILE)");
+    if (o.dump == Dump::none) o.lang = language_of(a, o.output);
     o.depfile = a.get("--depfile");
-    o.real = a.get("--real");
-    o.jacobians = a.get("--jacobians");
+    if (a.has("--real"))
+        o.real = choice(a, "--real", Real::double_precision,
+                        {{"double", Real::double_precision}, {"float", Real::single_precision}});
+    if (o.real == Real::single_precision && o.lang != Language::c)
+        throw UsageError("--real float applies to --lang c only");
+    if (a.has("--jacobians"))
+        o.jacobians = choice(a, "--jacobians", Derivatives::automatic,
+                             {{"auto", Derivatives::automatic},
+                              {"unrolled", Derivatives::unrolled},
+                              {"tangent", Derivatives::tangent}});
     o.sensitivities = comma_list(a.get("--sensitivities"));
+    if (o.jacobians == Derivatives::tangent && !o.sensitivities.empty())
+        throw UsageError("--sensitivities needs --jacobians unrolled (or auto)");
     o.verbose = a.has("-v");
-    if (o.output.empty() && o.dump.empty()) throw UsageError("no output given (-o FILE)");
     return compile(o, std::cout, std::cerr);
 }
 

@@ -50,30 +50,6 @@ const char* const colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
 
 } // namespace
 
-Sweep parse_sweep(const std::string& text) {
-    const auto eq = text.find('=');
-    const auto c1 = text.find(':', eq == std::string::npos ? 0 : eq);
-    const auto c2 = c1 == std::string::npos ? c1 : text.find(':', c1 + 1);
-    if (eq == std::string::npos || eq == 0 || c1 == std::string::npos || c2 == std::string::npos)
-        throw UsageError("--sweep takes NAME=FROM:STEP:TO, not '" + text + "'");
-    Sweep s;
-    s.name = text.substr(0, eq);
-    const double from = parse_value(text.substr(eq + 1, c1 - eq - 1), "--sweep");
-    const double step = parse_value(text.substr(c1 + 1, c2 - c1 - 1), "--sweep");
-    const double to = parse_value(text.substr(c2 + 1), "--sweep");
-    if (!(step > 0) || to < from)
-        throw UsageError("--sweep needs a positive STEP and FROM <= TO, not '" + text + "'");
-    const double count = std::floor((to - from) / step + 1e-9) + 1;
-    if (count > 10000) throw UsageError("--sweep has more than 10000 values");
-    for (int k = 0; k < static_cast<int>(count); ++k) {
-        // 0.1 * 3 is 0.30000000000000004: keep the 12 digits the user meant.
-        char buffer[32];
-        std::snprintf(buffer, sizeof buffer, "%.12g", from + k * step);
-        s.values.push_back(std::strtod(buffer, nullptr));
-    }
-    return s;
-}
-
 std::string campbell_csv(const std::string& name, const std::vector<CampbellRow>& rows) {
     std::size_t modes = 0;
     for (const CampbellRow& r : rows) modes = std::max(modes, r.modes.size());

@@ -2,19 +2,14 @@
 // Campbell diagrams: the modes of the linear model along a swept parameter
 // (`yamsc lin MODEL --sweep Omega=0:0.1:1.3 [-o campbell.csv] [--plot campbell.svg]`),
 // as a CSV table and an SVG plot of the frequencies and damping ratios.
+#include "driver/values.hpp"
+
 #include <yamsc/modal.hpp>
 
 #include <string>
 #include <vector>
 
 namespace yamsc::driver {
-
-/// `NAME=FROM:STEP:TO` (values accept `deg`). Throws UsageError when malformed.
-struct Sweep {
-    std::string name;
-    std::vector<double> values; // FROM, FROM + STEP, ..., up to TO (included within rounding)
-};
-Sweep parse_sweep(const std::string& text);
 
 /// The modes at one value of the swept parameter, sorted by frequency.
 struct CampbellRow {

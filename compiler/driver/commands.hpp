@@ -3,6 +3,9 @@
 // its results to `out`, diagnostics and progress to `err`, and returns the exit
 // status (0 success, 1 user error). Usage errors throw UsageError, internal
 // errors diag::InternalError; the CLI turns them into exit statuses 2 and 70.
+//
+// Options arrive typed: the CLI (compiler/cli/) parses and validates every
+// option once; the commands never compare option strings.
 #include "driver/values.hpp"
 
 #include <iosfwd>
@@ -13,16 +16,35 @@
 
 namespace yamsc::driver {
 
+enum class Language { cpp, c, latex };
+/// --dump: print an intermediate form and stop.
+enum class Dump { none, ast, model, module };
+/// --real: the floating-point type of generated C.
+enum class Real { double_precision, single_precision };
+
+/// How the derivatives are formed (docs/benchmarks.md): `unrolled`, M and
+/// every Jacobian entry as its own expression (fastest code for small models);
+/// `tangent`, M a and one directional derivative, evaluated column by column
+/// in generated loops (code and compile time O(n²) instead of O(n³) for an
+/// n-body chain); `automatic`: tangent from `tangent_form_min_dofs` DOFs on,
+/// unless the model has `approx` (which works on M itself).
+enum class Derivatives { automatic, unrolled, tangent };
+inline constexpr std::size_t tangent_form_min_dofs = 25;
+
+enum class SimMethod { rk4, cvode };
+/// --channels: outputs as the model names them, or as OpenFAST's channels.
+enum class Channels { all, openfast };
+
 struct CompileOptions {
     std::string model;
     std::string output;                     // -o
     std::string header;                     // --header
-    std::string lang;                       // cpp | c | latex; empty: from the extension of -o
+    Language lang = Language::cpp;          // --lang, or from the extension of -o
     std::string name_space;                 // --namespace
-    std::string dump;                       // ast | model | equations | module: print and stop
+    Dump dump = Dump::none;                 // --dump ast|model|module
     std::string depfile;                    // --depfile: make-style dependencies of the output
-    std::string real;                       // --real float|double (C only); empty: double
-    std::string jacobians;                  // --jacobians auto|unrolled|tangent; empty: auto
+    std::optional<Real> real;               // --real (C only); none: double, not recorded
+    std::optional<Derivatives> jacobians;   // --jacobians; none: automatic, not recorded
     std::vector<std::string> sensitivities; // --sensitivities p1,p2: d(M0,C0,K0)/dp routine
     bool verbose = false;                   // progress of each stage on stderr
 };
@@ -46,21 +68,21 @@ struct LinOptions {
     std::vector<Assignment> at, set, u;
     std::string sid; // --sid body=file.sid,..
     bool json = false;
-    std::string sweep;  // --sweep NAME=FROM:STEP:TO: a Campbell diagram
-    std::string output; // -o: its CSV (default: stdout)
-    std::string plot;   // --plot: its SVG
+    std::optional<Sweep> sweep; // --sweep NAME=FROM:STEP:TO: a Campbell diagram
+    std::string output;         // -o: its CSV (default: stdout)
+    std::string plot;           // --plot: its SVG
 };
 
 struct SimOptions {
     std::string model;
     double tmax = 0, dt = 0;
     std::vector<Assignment> ic, u, set;
-    std::string sid;            // --sid body=file.sid,..
-    std::string method = "rk4"; // rk4 | cvode
-    std::string output;         // CSV path; empty: summary only
+    std::string sid; // --sid body=file.sid,..
+    SimMethod method = SimMethod::rk4;
+    std::string output; // CSV path; empty: summary only
     double rtol = 1e-8, atol = 1e-10;
     bool verbose = false;
-    std::string channels = "all";           // all | openfast (outputs named as OpenFAST channels)
+    Channels channels = Channels::all;      // --channels all|openfast
     std::string compare;                    // reference table: print the error per channel
     std::string plot;                       // SVG of the channels (with the reference)
     std::vector<std::string> plot_channels; // --plot-channels; empty: compared or all

@@ -21,29 +21,13 @@ namespace yamsc::driver {
 
 namespace {
 
-std::string extension(const std::string& path) {
-    auto slash = path.find_last_of('/');
-    auto dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-    return path.substr(dot + 1);
-}
-
 std::string basename(const std::string& path) {
     auto slash = path.find_last_of('/');
     return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-std::string language_of(const CompileOptions& o) {
-    if (!o.lang.empty()) {
-        if (o.lang != "cpp" && o.lang != "c" && o.lang != "latex")
-            throw UsageError("--lang must be cpp, c or latex, not '" + o.lang + "'");
-        return o.lang;
-    }
-    std::string ext = extension(o.output);
-    if (ext == "cpp" || ext == "cc" || ext == "cxx" || ext == "hpp") return "cpp";
-    if (ext == "c" || ext == "h") return "c";
-    if (ext == "tex") return "latex";
-    throw UsageError("cannot tell the language from '" + o.output + "': give --lang cpp|c|latex");
+const char* language_name(Language lang) {
+    return lang == Language::c ? "c" : lang == Language::latex ? "latex" : "cpp";
 }
 
 bool is_identifier(const std::string& s) {
@@ -129,11 +113,13 @@ std::string join(const std::vector<std::string>& items) {
     return s;
 }
 
-codegen::EmitOptions::Real real_type(const CompileOptions& o, const std::string& lang) {
-    if (o.real.empty() || o.real == "double") return codegen::EmitOptions::Real::double_precision;
-    if (o.real != "float") throw UsageError("--real must be double or float, not '" + o.real + "'");
-    if (lang != "c") throw UsageError("--real float applies to --lang c only");
-    return codegen::EmitOptions::Real::single_precision;
+codegen::EmitOptions::Real real_type(const CompileOptions& o) {
+    return o.real == Real::single_precision ? codegen::EmitOptions::Real::single_precision
+                                            : codegen::EmitOptions::Real::double_precision;
+}
+
+const char* derivatives_name(Derivatives d) {
+    return d == Derivatives::unrolled ? "unrolled" : d == Derivatives::tangent ? "tangent" : "auto";
 }
 
 /// The module options from the command line; parameter names are checked
@@ -150,51 +136,46 @@ codegen::Options module_options(const CompileOptions& o, const symbolic::Equatio
     return options;
 }
 
-/// --jacobians; sensitivities are formed from the unrolled Jacobians.
+/// --jacobians; sensitivities are formed from the unrolled Jacobians (the CLI
+/// refuses them with --jacobians tangent).
 Derivatives derivatives_of(const CompileOptions& o) {
-    if (o.jacobians == "tangent" && !o.sensitivities.empty())
-        throw UsageError("--sensitivities needs --jacobians unrolled (or auto)");
-    if (o.jacobians == "unrolled" || !o.sensitivities.empty()) return Derivatives::unrolled;
-    if (o.jacobians == "tangent") return Derivatives::tangent;
-    if (o.jacobians.empty() || o.jacobians == "auto") return Derivatives::automatic;
-    throw UsageError("--jacobians must be auto, unrolled or tangent, not '" + o.jacobians + "'");
+    if (!o.sensitivities.empty()) return Derivatives::unrolled;
+    return o.jacobians.value_or(Derivatives::automatic);
 }
 
 } // namespace
 
 int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
-    const std::string lang = o.dump.empty() ? language_of(o) : "cpp";
+    const std::string lang = o.dump == Dump::none ? language_name(o.lang) : "cpp";
     if (!o.name_space.empty()) check_namespace(o.name_space, lang);
-    if (!o.dump.empty() && o.dump != "ast" && o.dump != "model" && o.dump != "module")
-        throw UsageError("--dump takes ast, model or module");
     // --dump prints and writes no file.
     const std::vector<NamedFile> output_files =
-        o.dump.empty() ? std::vector<NamedFile>{{"-o", o.output},
-                                                {"--header", o.header},
-                                                {"--depfile", o.depfile}}
-                       : std::vector<NamedFile>{};
+        o.dump == Dump::none ? std::vector<NamedFile>{{"-o", o.output},
+                                                      {"--header", o.header},
+                                                      {"--depfile", o.depfile}}
+                             : std::vector<NamedFile>{};
     check_outputs({{"the model", o.model}}, output_files);
 
     diag::Diagnostics diags;
     auto progress = [&](const std::string& s) {
         if (o.verbose) err << "yamsc: " << s << "\n";
     };
-    Until until = o.dump == "ast"     ? Until::ast
-                  : o.dump == "model" ? Until::model
-                                      : Until::jacobians;
+    Until until = o.dump == Dump::ast     ? Until::ast
+                  : o.dump == Dump::model ? Until::model
+                                          : Until::jacobians;
     FrontEnd fe = run_front_end(
         o.model, until, diags, progress, derivatives_of(o),
         [&](const model::Model& m) { check_outputs(data_files_of(m), output_files); });
     err << diags.render();
     if (diags.has_errors()) return 1;
-    if (o.jacobians == "tangent" && fe.equations && !fe.equations->tangent_form)
+    if (o.jacobians == Derivatives::tangent && fe.equations && !fe.equations->tangent_form)
         throw UsageError("--jacobians tangent does not apply to a model with `approx` (which "
                          "works on M itself)");
-    if (o.dump == "ast") {
+    if (o.dump == Dump::ast) {
         out << ast::dump(*fe.ast);
         return 0;
     }
-    if (o.dump == "model") {
+    if (o.dump == Dump::model) {
         out << model::dump(*fe.model);
         return 0;
     }
@@ -207,7 +188,7 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
     codegen::add_operating_point(module, *fe.equations,
                                  symbolic::operating_point(*fe.model, *fe.equations));
     progress("built the code module (common subexpressions shared)");
-    if (o.dump == "module") {
+    if (o.dump == Dump::module) {
         out << codegen::dump(module);
         return 0;
     }
@@ -215,14 +196,16 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
     emit.namespace_name = o.name_space;
     emit.header_name = o.header.empty() ? "" : basename(o.header);
     emit.compiler_version = YAMSC_VERSION;
-    emit.real = real_type(o, lang);
+    emit.real = real_type(o);
     // Only the options that shape the output are recorded, so identical inputs give
     // identical bytes wherever the files are written.
     emit.command_line =
         "--lang " + lang + (o.name_space.empty() ? "" : " --namespace " + o.name_space) +
         (o.header.empty() ? "" : " --header " + emit.header_name) +
-        (o.real.empty() ? "" : " --real " + o.real) +
-        (o.jacobians.empty() ? "" : " --jacobians " + o.jacobians) +
+        (!o.real                             ? ""
+         : *o.real == Real::single_precision ? " --real float"
+                                             : " --real double") +
+        (!o.jacobians ? "" : std::string(" --jacobians ") + derivatives_name(*o.jacobians)) +
         (o.sensitivities.empty() ? "" : " --sensitivities " + join(o.sensitivities));
     codegen::EmittedFiles files =
         lang == "c" ? codegen::emit_c(module, emit) : codegen::emit_cpp(module, emit);

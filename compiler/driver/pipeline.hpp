@@ -3,6 +3,7 @@
 // Each stage reports into one Diagnostics; the chain stops after the first stage
 // that reported an error.
 #include "ast/ast.hpp"
+#include "driver/commands.hpp"
 #include "model/model.hpp"
 #include "symbolic/equations.hpp"
 
@@ -18,15 +19,6 @@ struct FrontEnd {
 };
 
 enum class Until { ast, model, equations, jacobians };
-
-/// How the derivatives are formed (docs/benchmarks.md): `unrolled`, M and
-/// every Jacobian entry as its own expression (fastest code for small models);
-/// `tangent`, M a and one directional derivative, evaluated column by column
-/// in generated loops (code and compile time O(n²) instead of O(n³) for an
-/// n-body chain); `automatic`: tangent from `tangent_form_min_dofs` DOFs on,
-/// unless the model has `approx` (which works on M itself).
-enum class Derivatives { automatic, unrolled, tangent };
-inline constexpr std::size_t tangent_form_min_dofs = 25;
 
 /// Runs the stages up to `until`. `progress` (may be empty) receives a line per stage.
 /// `checked` (may be empty) sees the checked model before the equations are

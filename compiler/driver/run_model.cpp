@@ -124,7 +124,7 @@ void operating_point(const Loaded& l, const LinOptions& o, std::vector<double>& 
 /// `lin --sweep NAME=FROM:STEP:TO`: the modes at the operating point for each
 /// value of a parameter (the point follows the parameter when it uses it).
 int campbell(const Loaded& l, const LinOptions& o, std::ostream& out) {
-    const Sweep sweep = parse_sweep(o.sweep);
+    const Sweep& sweep = *o.sweep;
     const int index = l.library->param_index(sweep.name);
     if (index < 0)
         throw UserError("--sweep: unknown parameter '" + sweep.name + "'" +
@@ -242,8 +242,6 @@ std::vector<PlotPanel> plot_panels(const Table& sim, const Table* reference,
 } // namespace
 
 int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
-    if (o.channels != "all" && o.channels != "openfast")
-        throw UsageError("--channels must be all or openfast, not '" + o.channels + "'");
     if (!o.at.empty() && !o.linear) throw UsageError("--at needs --linear");
     const std::vector<NamedFile> outputs{{"-o", o.output}, {"--plot", o.plot}};
     std::vector<NamedFile> inputs = sid_files_of(o.sid);
@@ -261,7 +259,7 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     runtime::SimulationOptions s;
     s.t_end = o.tmax;
     s.dt = o.dt;
-    s.method = o.method == "cvode" ? runtime::Method::cvode : runtime::Method::rk4;
+    s.method = o.method == SimMethod::cvode ? runtime::Method::cvode : runtime::Method::rk4;
     s.rtol = o.rtol;
     s.atol = o.atol;
     s.x0 = q;
@@ -277,7 +275,7 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
         return true;
     };
     runtime::SimulationResult result = runtime::simulate(v, s, progress);
-    const bool openfast = o.channels == "openfast";
+    const bool openfast = o.channels == Channels::openfast;
     const Table table = openfast ? openfast_table(result, 1 + v.nx()) : table_of(result);
     if (!o.output.empty()) {
         if (openfast)
@@ -304,16 +302,13 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
 }
 
 int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
-    if (o.sweep.empty() && (!o.output.empty() || !o.plot.empty()))
-        throw UsageError("lin writes files (-o, --plot) only for --sweep");
-    if (!o.sweep.empty() && o.json) throw UsageError("--sweep writes CSV, not --json");
     const std::vector<NamedFile> outputs{{"-o", o.output}, {"--plot", o.plot}};
     std::vector<NamedFile> inputs = sid_files_of(o.sid);
     inputs.push_back({"the model", o.model});
     check_outputs(inputs, outputs);
     auto loaded = load(o.model, o.set, o.sid, false, err, outputs);
     if (!loaded) return 1;
-    if (!o.sweep.empty()) return campbell(*loaded, o, out);
+    if (o.sweep) return campbell(*loaded, o, out);
     const runtime::ModelView& v = loaded->view;
     const int nq = v.nq, nu = v.nu;
     std::vector<double> q, qd, u;

@@ -26,4 +26,11 @@ struct Assignment {
 };
 std::vector<Assignment> parse_assignments(const std::string& text, const std::string& option);
 
+/// `--sweep NAME=FROM:STEP:TO` (values accept `deg`). Throws UsageError when malformed.
+struct Sweep {
+    std::string name;
+    std::vector<double> values; // FROM, FROM + STEP, ..., up to TO (included within rounding)
+};
+Sweep parse_sweep(const std::string& text);
+
 } // namespace yamsc::driver

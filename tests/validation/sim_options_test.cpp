@@ -95,16 +95,20 @@ TEST_CASE("--linear integrates the linear model: a harmonic oscillator at sqrt(g
 TEST_CASE("--channels openfast, --compare and --plot") {
     const std::string model = write("swing.mbd", pendulum);
     const std::string csv = work_dir + "/swing_of.csv", svg = work_dir + "/swing.svg";
-    std::remove(svg.c_str());
-    std::remove(csv.c_str());
+    const std::string reference = work_dir + "/swing_ref.csv";
+    for (const std::string& f : {svg, csv, reference}) std::remove(f.c_str());
     // The reference is read first: a missing one fails before anything is written.
-    CHECK(run_yamsc("sim " + model + " --tmax 1 --dt 0.01 -o " + csv + " --compare " + csv, 1)
+    CHECK(run_yamsc("sim " + model + " --tmax 1 --dt 0.01 -o " + csv + " --compare " + reference, 1)
               .find("cannot read") != std::string::npos);
     CHECK(!std::ifstream(csv).good());
-    run_yamsc("sim " + model + " --tmax 1 --dt 0.01 --channels openfast -o " + csv);
+    // The output may not replace the table it is compared with.
+    run_yamsc("sim " + model + " --tmax 1 --dt 0.01 --channels openfast -o " + reference);
+    CHECK(run_yamsc(
+              "sim " + model + " --tmax 1 --dt 0.01 -o " + reference + " --compare " + reference, 2)
+              .find("must not replace an input") != std::string::npos);
     const std::string log =
         run_yamsc("sim " + model + " --tmax 1 --dt 0.01 --channels openfast -o " + csv +
-                  " --compare " + csv + " --plot " + svg);
+                  " --compare " + reference + " --plot " + svg);
     const Table t = read_table(csv);
     CHECK(t.columns == std::vector<std::string>{"Time_[s]", "PtfmPitch_[deg]"});
     CHECK(t.data[1][0] == doctest::Approx(0.5 * 180 / M_PI).epsilon(1e-9));
@@ -114,7 +118,7 @@ TEST_CASE("--channels openfast, --compare and --plot") {
     CHECK(log.find("1.000000") != std::string::npos);
     const std::string plot = read(svg);
     CHECK(plot.find("<polyline") != std::string::npos);
-    CHECK(plot.find("reference (swing_of.csv)") != std::string::npos);
+    CHECK(plot.find("reference (swing_ref.csv)") != std::string::npos);
     // A model without OpenFAST outputs has no OpenFAST channels.
     CHECK(run_yamsc("sim " + std::string(YAMSC_SOURCE_DIR) +
                         "/models/pendulum.mbd --tmax 0.1 --dt 0.01 --channels openfast",

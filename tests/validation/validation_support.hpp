@@ -56,7 +56,7 @@ inline yamsc::driver::Table simulate(const Case& c, bool linear, std::string* lo
     o.model = model_path(c);
     o.tmax = c.tmax;
     o.dt = 0.01;
-    o.channels = "openfast";
+    o.channels = yamsc::driver::Channels::openfast;
     o.linear = linear;
     o.verbose = linear; // prints the linear model's frequencies
     o.output = work_dir + "/" + c.model + (linear ? "_linear" : "") + ".csv";
