@@ -88,6 +88,15 @@ def stage_times(stderr: str) -> dict:
     return out
 
 
+def yamsc_version(exe: str) -> str:
+    """What `yamsc --version` prints (e.g. "yamsc 0.1.0"), or "unknown"."""
+    try:
+        run = subprocess.run([exe, "--version"], capture_output=True, text=True, timeout=60)
+    except (OSError, subprocess.SubprocessError):
+        return "unknown"
+    return run.stdout.strip() if run.returncode == 0 and run.stdout.strip() else "unknown"
+
+
 def time_yamsc(exe: str, model: str, output: str, runs: int, timeout: float, row: Row) -> None:
     seconds = []
     stages = []
@@ -304,7 +313,8 @@ def main(argv: Optional[List[str]] = None) -> int:
 
     results = {
         "benchmark": "derivation time, n-link 3D pendulum chain (tests/reference/chain.py)",
-        "yamsc": os.path.abspath(args.yamsc),
+        # The version, not the executable's path: a path names one machine's folders.
+        "yamsc": yamsc_version(args.yamsc),
         "sympy_version": sympy.__version__,
         "python": platform.python_version(),
         "machine": platform.machine(),

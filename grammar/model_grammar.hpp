@@ -3,7 +3,7 @@
 // Types only: the actions that build the AST, the error messages (keyed by the rule given to
 // `must<>`) and the error recovery live in compiler/parse/.
 //
-// Decisions where dsl.md is silent (documented here for docs/):
+// Decisions the language reference leaves to the grammar (summarised in docs/language.md):
 // - Numbers are unsigned literals: `12`, `1.5`, `.5`, `5.`, `2.5e-3`, `1E+4`. A leading minus is
 //   unary negation, so `-2^2` is -(2^2) like `-x^2`. The literal text is kept exactly (`1e99999`
 //   too); the checker decides what it means. A number may be followed directly by `deg` (`5deg`)

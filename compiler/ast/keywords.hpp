@@ -7,7 +7,7 @@
 
 namespace yamsc::ast {
 
-/// The words that start a top-level statement, in the order of dsl.md.
+/// The words that start a top-level statement (docs/language.md).
 const std::vector<std::string>& statement_keywords();
 /// The words that start an item of a flexible body block (besides `key = value`).
 const std::vector<std::string>& flexible_item_keywords();

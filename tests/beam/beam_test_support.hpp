@@ -3,6 +3,8 @@
 #include "beam/beam.hpp"
 #include "diag/diagnostics.hpp"
 
+#include <doctest/doctest.h>
+
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -10,11 +12,15 @@
 
 namespace beam_test {
 
+/// A file of tests/data/nrel5mw/; a missing or empty file fails the test here, not later as a
+/// puzzling parse error.
 inline std::shared_ptr<const yamsc::diag::SourceFile> nrel_file(const std::string& name) {
-    const std::string path = std::string(YAMSC_SHARED_DIR) + "/data/nrel5mw/" + name;
+    const std::string path = std::string(YAMSC_TEST_DATA_DIR) + "/nrel5mw/" + name;
     std::ifstream in(path);
+    REQUIRE_MESSAGE(in.good(), "cannot read " << path);
     std::stringstream text;
     text << in.rdbuf();
+    REQUIRE_MESSAGE(!text.str().empty(), path << " is empty");
     return std::make_shared<yamsc::diag::SourceFile>(path, text.str());
 }
 

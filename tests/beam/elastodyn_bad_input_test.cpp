@@ -115,6 +115,8 @@ TEST_CASE("blade: the reader tolerates a damaged file without crashing") {
     const std::string full = beam_test::nrel_file(beam_test::kBladeFile)->text();
     // Every prefix of the file that lacks the last key: errors, never a crash.
     const std::size_t last_key = full.find("BldEdgSh(6)");
+    REQUIRE(last_key != std::string::npos);
+    REQUIRE(last_key > 1000); // the loop below tries a few dozen prefixes at least
     for (std::size_t n = 0; n < last_key; n += 97) {
         Result r = blade(full.substr(0, n));
         CHECK(!r.ok);

@@ -46,7 +46,8 @@ struct OneForce {
         std::string out;
         std::size_t pos = 0;
         while (pos < body.size()) {
-            const std::size_t end = body.find('\n', pos);
+            // The last line may lack its '\n': end there, not back at the start.
+            const std::size_t end = std::min(body.find('\n', pos), body.size());
             const std::string line = body.substr(pos, end - pos);
             if (line.find("(void)") == std::string::npos) out += line.substr(4) + "\n";
             pos = end + 1;

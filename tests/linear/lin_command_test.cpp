@@ -35,6 +35,7 @@ std::vector<double> array(const std::string& json, const std::string& key) {
     while (*p != ']') {
         char* end = nullptr;
         out.push_back(std::strtod(p, &end));
+        REQUIRE_MESSAGE(end != p, "not a number in " << key << ": " << p); // else no progress
         p = end;
         if (*p == ',') ++p;
     }
@@ -128,7 +129,9 @@ TEST_CASE("yamsc lin --sweep: the operating point follows the swept parameter") 
     std::getline(lines, line);
     for (double th0 : {0.0, 0.3, 0.6, 0.9}) {
         REQUIRE(std::getline(lines, line));
-        const double f = std::strtod(line.substr(line.find(',') + 1).c_str(), nullptr);
+        const std::size_t comma = line.find(',');
+        REQUIRE(comma != std::string::npos);
+        const double f = std::strtod(line.substr(comma + 1).c_str(), nullptr);
         CHECK(f ==
               doctest::Approx(std::sqrt(9.81 * std::cos(th0) / 0.9) / (2 * M_PI)).epsilon(1e-12));
     }

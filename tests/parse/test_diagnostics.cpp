@@ -78,9 +78,15 @@ TEST_CASE("render: a very long line is shown as a window around the caret") {
     const auto f = file(line);
     const std::string out =
         render(Diagnostic{Severity::error, Kind::Syntax, Location{f, 1, 601}, "here"});
-    const std::size_t second = out.find('\n') + 1;
-    const std::string quoted = out.substr(second, out.find('\n', second) - second);
-    const std::string caret = out.substr(out.find('\n', second) + 1);
+    const std::size_t first_end = out.find('\n');
+    REQUIRE(first_end != std::string::npos);
+    const std::size_t second = first_end + 1;
+    const std::size_t second_end = out.find('\n', second);
+    REQUIRE(second_end != std::string::npos);
+    const std::string quoted = out.substr(second, second_end - second);
+    const std::string caret = out.substr(second_end + 1);
+    REQUIRE(caret.find('^') != std::string::npos);
+    REQUIRE(caret.find('^') < quoted.size());
     CHECK(quoted.size() < 200);
     CHECK(quoted.substr(0, 5) == "  ...");
     CHECK(quoted.substr(quoted.size() - 3) == "...");

@@ -25,6 +25,7 @@ Expectation expectation_of(const std::string& text) {
     REQUIRE(head.rfind("expect: ", 0) == 0);
     Expectation e;
     const std::size_t a = head.find(": ", 8);
+    REQUIRE(a != std::string::npos);
     const std::size_t b = head.find(": ", a + 2);
     REQUIRE(b != std::string::npos);
     e.line = std::stoi(head.substr(8, a - 8));

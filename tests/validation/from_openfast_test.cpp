@@ -11,11 +11,6 @@ using namespace validation;
 
 namespace {
 
-std::string read(const std::string& path) {
-    std::ifstream in(path);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 /// The value of `param NAME = value` in a model text.
 double param(const std::string& text, const std::string& name) {
     std::smatch m;
@@ -103,7 +98,7 @@ TEST_CASE("flexible blades, tower modes 2 and the drivetrain: the full 16-DOF on
     Case c = land_case;
     c.model = "nrel5mw_16dof";
     yamsc::driver::FromOpenFastOptions o;
-    o.deck = std::string(YAMSC_SHARED_DIR) + "/data/nrel5mw/NREL5MW_ED_Onshore.dat";
+    o.deck = std::string(YAMSC_TEST_DATA_DIR) + "/nrel5mw/NREL5MW_ED_Onshore.dat";
     o.output = model_path(c);
     std::ostringstream out, err;
     REQUIRE(yamsc::driver::from_openfast(o, out, err) == 0);
@@ -125,7 +120,7 @@ TEST_CASE("unknown and unsupported entries are warnings at their line, never dro
     // A copy of the land deck's ElastoDyn file with an unknown entry and furling on; its
     // blade and tower files named by absolute paths.
     std::string ed = read(reference_dir + "/" + land_case.folder + "/Spar_ED_ForED.dat");
-    const std::string nrel = std::string(YAMSC_SHARED_DIR) + "/data/nrel5mw/";
+    const std::string nrel = std::string(YAMSC_TEST_DATA_DIR) + "/nrel5mw/";
     ed = std::regex_replace(ed, std::regex("\\.\\./\\.\\./nrel5mw/"), nrel);
     ed = std::regex_replace(ed, std::regex("False         Furling"), "True          Furling");
     ed = std::regex_replace(ed, std::regex("  0   PtfmPitch"), "  2   PtfmPitch");

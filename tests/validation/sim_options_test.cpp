@@ -20,11 +20,6 @@ std::string write(const std::string& name, const std::string& text) {
     return path;
 }
 
-std::string read(const std::string& path) {
-    std::ifstream in(path);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 /// Runs the yamsc executable; its standard output.
 std::string run_yamsc(const std::string& args, int expected_status = 0) {
     const std::string out = work_dir + "/cli_stdout.txt";

@@ -7,18 +7,20 @@
 
 #include <doctest/doctest.h>
 
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
 
 namespace validation {
 
-inline const std::string reference_dir = std::string(YAMSC_SHARED_DIR) + "/data/reference";
+inline const std::string reference_dir = std::string(YAMSC_TEST_DATA_DIR) + "/reference";
 inline const std::string work_dir = std::string(YAMSC_TEST_BINARY_DIR) + "/validation";
 
 /// One of the paper's free-decay cases with its OpenFAST reference.
 struct Case {
-    std::string folder; // under data/reference
+    std::string folder; // under tests/data/reference
     std::string model;  // the model's name (file work_dir/<model>.mbd)
     double tmax;
     std::vector<std::string> channels; // DOF channels that must agree
@@ -30,6 +32,13 @@ inline const Case floating_case{"floating_3dof_F2T1RNA",
                                 "floating_3dof",
                                 7.0,
                                 {"PtfmSurge_[m]", "PtfmPitch_[deg]", "Q_TFA1_[m]"}};
+
+/// A whole file; one that cannot be opened fails the test (a missing deck is not an empty one).
+inline std::string read(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    REQUIRE_MESSAGE(in.good(), "cannot read " << path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
 
 inline std::string model_path(const Case& c) {
     return work_dir + "/" + c.model + ".mbd";
