@@ -66,12 +66,12 @@
 // Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
 //   mass_matrix      66 adds, 170 muls, 0 divs, 0 calls
 //   forcing          108 adds, 293 muls, 0 divs, 0 calls
-//   jacobians        275 adds, 881 muls, 0 divs, 0 calls
+//   jacobians        270 adds, 887 muls, 0 divs, 0 calls
 //   outputs          3 adds, 8 muls, 0 divs, 2 calls
 //   rhs              182 adds, 471 muls, 6 divs, 0 calls
-//   rhs_jacobian     528 adds, 1444 muls, 24 divs, 4 calls
-//   linear           509 adds, 1441 muls, 6 divs, 4 calls
-//   state_space      569 adds, 1501 muls, 36 divs, 4 calls
+//   rhs_jacobian     523 adds, 1454 muls, 24 divs, 4 calls
+//   linear           504 adds, 1451 muls, 6 divs, 4 calls
+//   state_space      564 adds, 1511 muls, 36 divs, 4 calls
 //   output_matrices  3 adds, 10 muls, 0 divs, 2 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 

@@ -92,12 +92,12 @@
 // rhs_jacobian and the four rhs calls of rk4_step included):
 //   mass_matrix      142 adds, 543 muls, 0 divs, 2 calls
 //   forcing          167 adds, 540 muls, 0 divs, 2 calls
-//   jacobians        369 adds, 1524 muls, 0 divs, 2 calls
+//   jacobians        365 adds, 1516 muls, 0 divs, 2 calls
 //   outputs          0 adds, 2 muls, 0 divs, 0 calls
 //   rhs              309 adds, 1059 muls, 6 divs, 2 calls
-//   rhs_jacobian     817 adds, 2831 muls, 24 divs, 8 calls
-//   linear           791 adds, 2841 muls, 6 divs, 8 calls
-//   state_space      851 adds, 2901 muls, 36 divs, 8 calls
+//   rhs_jacobian     811 adds, 2823 muls, 24 divs, 8 calls
+//   linear           785 adds, 2833 muls, 6 divs, 8 calls
+//   state_space      845 adds, 2893 muls, 36 divs, 8 calls
 //   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step         1280 adds, 4267 muls, 25 divs, 8 calls

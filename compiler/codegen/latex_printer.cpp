@@ -72,6 +72,8 @@ const char* function_command(TapeFunction f) {
     case TapeFunction::log:
         return "\\ln";
     case TapeFunction::abs:
+    case TapeFunction::sqrt: // the Tape writes powers as products, never these
+    case TapeFunction::pow:
         return "";
     }
     return "";

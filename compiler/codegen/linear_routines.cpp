@@ -2,7 +2,7 @@
 
 #include "codegen/routine_builder.hpp"
 #include "codegen/symbol_binding.hpp"
-#include "symbolic/linearize.hpp"
+#include "diag/diagnostics.hpp"
 
 #include <utility>
 
@@ -77,65 +77,50 @@ Routine state_space_routine(Graph& g, const LinearSources& in, int nq, int nu, b
     return std::move(b).finish(options);
 }
 
-Routine output_matrices_routine(GinacImporter& importer, const Graph& g,
-                                const symbolic::Equations& eq, const Options& options) {
-    const symbolic::OutputJacobians J = symbolic::output_jacobians(eq);
-    const int nq = eq.nq(), nu = eq.nu(), nx = 2 * nq;
-    NodeMatrix C, D;
-    for (const symbolic::Row& row : J.C) {
-        C.emplace_back();
-        for (const GiNaC::ex& e : row) C.back().push_back(importer.import(e));
-    }
-    for (const symbolic::Row& row : J.D) {
-        D.emplace_back();
-        for (const GiNaC::ex& e : row) D.back().push_back(importer.import(e));
-    }
+Routine output_matrices_routine(const Graph& g, const ir::System& s, const Options& options) {
+    const int nu = s.nu(), nx = 2 * s.nq();
     RoutineBuilder b(g, api_signature("output_matrices"), bind(SymbolSource::operating_point()));
-    for (std::size_t i = 0; i < C.size(); ++i)
-        for (int j = 0; j < nx; ++j) b.assign("C", static_cast<int>(i) * nx + j, C[i][j]);
-    for (std::size_t i = 0; i < D.size(); ++i)
-        for (int j = 0; j < nu; ++j) b.assign("D", static_cast<int>(i) * nu + j, D[i][j]);
+    for (std::size_t i = 0; i < s.C.size(); ++i)
+        for (int j = 0; j < nx; ++j) b.assign("C", static_cast<int>(i) * nx + j, s.C[i][j]);
+    for (std::size_t i = 0; i < s.D.size(); ++i)
+        for (int j = 0; j < nu; ++j) b.assign("D", static_cast<int>(i) * nu + j, s.D[i][j]);
     return std::move(b).finish(options);
 }
 
 } // namespace
 
-void add_linear_routines(Graph& graph, GinacImporter& importer, const symbolic::Equations& eq,
-                         const LinearSources& in, const Options& options,
-                         std::vector<Routine>& routines) {
-    const int nq = eq.nq(), nu = eq.nu();
+void add_linear_routines(Graph& graph, const ir::System& s, const LinearSources& in,
+                         const Options& options, std::vector<Routine>& routines) {
+    const int nq = s.nq(), nu = s.nu();
     if (nq == 0) return;
     const bool accelerations = uses_accelerations(graph, in.dMa_dq);
     routines.push_back(linear_routine(graph, in, nq, nu, accelerations, options));
     routines.push_back(state_space_routine(graph, in, nq, nu, accelerations, options));
-    routines.push_back(output_matrices_routine(importer, graph, eq, options));
+    routines.push_back(output_matrices_routine(graph, s, options));
 }
 
-void add_operating_point(Module& module, const symbolic::Equations& eq,
-                         const symbolic::OperatingPoint& op) {
-    Graph graph(module.options.max_multiplied_power);
-    GinacImporter importer(graph, eq);
-    std::vector<NodeId> q, qd, u;
-    for (const GiNaC::ex& e : op.q) q.push_back(importer.import(e));
-    for (const GiNaC::ex& e : op.qd) qd.push_back(importer.import(e));
-    for (const GiNaC::ex& e : op.u) u.push_back(importer.import(e));
+void add_operating_point(Module& module, const ir::System& s) {
+    const ir::OperatingPoint& op = s.point;
+    if (op.q.size() != s.dofs.size() || op.qd.size() != s.dofs.size() ||
+        op.u.size() != s.inputs.size())
+        throw diag::InternalError("code generation: the operating point does not match the model");
     // Only parameters: the checker allows nothing else in the point.
     RoutineBuilder b(
-        graph, "operating_point",
+        s.graph, "operating_point",
         op.declared ? "the model's operating point (its linearize block)"
                     : "the model's operating point (no linearize block: zeros)",
         {argument("p", ArgumentKind::params), argument("q0", ArgumentKind::output_array),
          argument("qd0", ArgumentKind::output_array), argument("u0", ArgumentKind::output_array)},
-        [](SymbolRef s) -> std::optional<Expr> {
-            if (s.kind != SymbolKind::param) return std::nullopt;
+        [](SymbolRef sym) -> std::optional<Expr> {
+            if (sym.kind != SymbolKind::param) return std::nullopt;
             Expr e;
             e.kind = ExprKind::param;
-            e.index = s.index;
+            e.index = sym.index;
             return e;
         });
-    for (std::size_t i = 0; i < q.size(); ++i) b.assign("q0", static_cast<int>(i), q[i]);
-    for (std::size_t i = 0; i < qd.size(); ++i) b.assign("qd0", static_cast<int>(i), qd[i]);
-    for (std::size_t i = 0; i < u.size(); ++i) b.assign("u0", static_cast<int>(i), u[i]);
+    for (std::size_t i = 0; i < op.q.size(); ++i) b.assign("q0", static_cast<int>(i), op.q[i]);
+    for (std::size_t i = 0; i < op.qd.size(); ++i) b.assign("qd0", static_cast<int>(i), op.qd[i]);
+    for (std::size_t i = 0; i < op.u.size(); ++i) b.assign("u0", static_cast<int>(i), op.u[i]);
     module.routines.push_back(std::move(b).finish(module.options));
 }
 

@@ -5,10 +5,7 @@
 // (LPV), and `operating_point` (the model's `linearize` block as a function of
 // the parameters). They are built from the same canonical Graph as the other
 // routines, so they get the same CSE and deterministic output.
-#include "codegen/from_ginac.hpp"
-#include "codegen/graph.hpp"
 #include "codegen/module.hpp"
-#include "symbolic/linearize.hpp"
 
 #include <vector>
 
@@ -24,14 +21,12 @@ struct LinearSources {
     const std::vector<std::vector<NodeId>>& dMa_dq;
 };
 
-/// Appends linear, state_space and output_matrices to `routines`.
-void add_linear_routines(Graph& graph, GinacImporter& importer, const symbolic::Equations& eq,
-                         const LinearSources& in, const Options& options,
-                         std::vector<Routine>& routines);
+/// Appends linear, state_space and output_matrices (from s.C and s.D) to `routines`.
+void add_linear_routines(Graph& graph, const ir::System& s, const LinearSources& in,
+                         const Options& options, std::vector<Routine>& routines);
 
-/// Appends `operating_point(p, q0, qd0, u0)` to the module: the model's point
+/// Appends `operating_point(p, q0, qd0, u0)` to the module: the System's point
 /// (all zeros without a `linearize` block).
-void add_operating_point(Module& module, const symbolic::Equations& eq,
-                         const symbolic::OperatingPoint& op);
+void add_operating_point(Module& module, const ir::System& s);
 
 } // namespace yamsc::codegen

@@ -3,8 +3,8 @@
 // by routine, with the shared work made explicit (named temporaries computed
 // once, local arrays, the factorisation of M and the solves with it). Emitters
 // only print a Module; `yamsc --dump=module` prints it with dump().
-#include "codegen/graph.hpp"
-#include "symbolic/equations.hpp"
+#include "ir/graph.hpp"
+#include "ir/system.hpp"
 
 #include <optional>
 #include <string>
@@ -12,6 +12,19 @@
 #include <vector>
 
 namespace yamsc::codegen {
+
+// Code generation reads the IR; these are its names here.
+using ir::Function;
+using ir::function_count;
+using ir::Graph;
+using ir::Node;
+using ir::NodeId;
+using ir::NodeKind;
+using ir::Operand;
+using ir::OperandSpan;
+using ir::symbol_kind_count;
+using ir::SymbolKind;
+using ir::SymbolRef;
 
 struct Options {
     /// The largest integer exponent written as repeated multiplication (x*x*x);
@@ -179,13 +192,15 @@ struct Module {
     const Routine& routine(std::string_view name) const;
 };
 
-/// Builds the module of `eq`: mass_matrix, forcing, jacobians, outputs, rhs,
+/// Lowers the System `s` to a module: mass_matrix, forcing, jacobians, outputs, rhs,
 /// rhs_jacobian and the linear model's linear, state_space and output_matrices
 /// (codegen/linear_routines.hpp; add_operating_point adds operating_point).
-/// Linear in the size of the equations' DAG. Throws diag::InternalError when the
-/// equations are malformed (wrong shapes, missing Jacobians) or hold something
+/// The passes must have run: passes::derive_jacobians and output_jacobians
+/// (or derive_tangent), and parameter_derivatives for options.sensitivity_params.
+/// Linear in the size of the System's graph. Throws diag::InternalError when the
+/// System is malformed (wrong shapes, missing derivatives) or holds something
 /// generated code cannot express.
-Module build_module(const symbolic::Equations& eq, const Options& options = {});
+Module build_module(const ir::System& s, const Options& options = {});
 
 /// A readable, deterministic listing of the module (for `yamsc --dump=module`).
 std::string dump(const Module& module);

@@ -1,6 +1,6 @@
-// build_module: imports the equations into one canonical Graph (so that every
-// routine shares the same value numbers) and lays out the routines.
-#include "codegen/from_ginac.hpp"
+// build_module: lowers the System's rows to routines. Every routine reads the
+// one graph of the System (a copy: lowering adds a few nodes such as K0's
+// differences), so they all share the same value numbers.
 #include "codegen/linear_routines.hpp"
 #include "codegen/module.hpp"
 #include "codegen/routine_builder.hpp"
@@ -20,53 +20,48 @@ using NodeRow = std::vector<NodeId>;
 using NodeMatrix = std::vector<NodeRow>;
 
 struct ImportedEquations {
-    NodeMatrix M, dF_dq, dF_dqd, dF_du, dMa_dq;
-    NodeRow F, y;
+    const NodeMatrix &M, &dF_dq, &dF_dqd, &dF_du, &dMa_dq;
+    const NodeRow &F, y;
 };
 
 [[noreturn]] void malformed(const std::string& what) {
     throw diag::InternalError("code generation: malformed equations: " + what);
 }
 
-void check_shape(const symbolic::Matrix& m, int rows, int cols, const char* name) {
+void check_shape(const NodeMatrix& m, int rows, int cols, const char* name) {
     bool ok = static_cast<int>(m.size()) == rows;
-    for (const symbolic::Row& row : m) ok = ok && static_cast<int>(row.size()) == cols;
+    for (const NodeRow& row : m) ok = ok && static_cast<int>(row.size()) == cols;
     if (!ok)
         malformed(std::string(name) + " is not " + std::to_string(rows) + " x " +
                   std::to_string(cols) + (m.empty() ? " (were the Jacobians derived?)" : ""));
 }
 
-void check_shapes(const symbolic::Equations& eq) {
-    const int nq = eq.nq();
-    check_shape(eq.M, nq, nq, "M");
-    if (static_cast<int>(eq.F.size()) != nq) malformed("F does not have nq entries");
-    check_shape(eq.dF_dq, nq, nq, "dF_dq");
-    check_shape(eq.dF_dqd, nq, nq, "dF_dqd");
-    check_shape(eq.dF_du, nq, eq.nu(), "dF_du");
-    check_shape(eq.dMa_dq, nq, nq, "dMa_dq");
-    if (static_cast<int>(eq.a.size()) != nq) malformed("the vector `a` does not have nq symbols");
-}
-
-NodeMatrix import_matrix(GinacImporter& importer, const symbolic::Matrix& m) {
-    NodeMatrix out;
-    for (const symbolic::Row& row : m) {
-        NodeRow r;
-        for (const GiNaC::ex& e : row) r.push_back(importer.import(e));
-        out.push_back(std::move(r));
+void check_shapes(const ir::System& s, const Options& options) {
+    const int nq = s.nq();
+    check_shape(s.M, nq, nq, "M");
+    if (static_cast<int>(s.F.size()) != nq) malformed("F does not have nq entries");
+    check_shape(s.dF_dq, nq, nq, "dF_dq");
+    check_shape(s.dF_dqd, nq, nq, "dF_dqd");
+    check_shape(s.dF_du, nq, s.nu(), "dF_du");
+    check_shape(s.dMa_dq, nq, nq, "dMa_dq");
+    if (options.linear_model && nq > 0) {
+        check_shape(s.C, s.ny(), 2 * nq, "C (the outputs' Jacobian)");
+        check_shape(s.D, s.ny(), s.nu(), "D (the outputs' Jacobian)");
     }
-    return out;
+    if (s.graph.max_multiplied_power() != options.max_multiplied_power)
+        malformed("the IR's normal form has another max_multiplied_power");
 }
 
-ModelInfo model_info(const symbolic::Equations& eq) {
+ModelInfo model_info(const ir::System& s) {
     ModelInfo m;
-    m.name = eq.model_name;
-    m.title = eq.title;
-    m.source_path = eq.source_path;
-    m.source_digest = eq.source_digest;
-    for (const symbolic::Dof& d : eq.dofs) m.dofs.push_back({d.name, d.doc});
-    for (const symbolic::InputChannel& u : eq.inputs) m.inputs.push_back({u.name, u.doc});
-    for (const symbolic::Parameter& p : eq.params) m.params.push_back({p.name, p.doc, p.value});
-    for (const symbolic::Output& y : eq.outputs) m.outputs.push_back({y.name, y.doc});
+    m.name = s.model_name;
+    m.title = s.title;
+    m.source_path = s.source_path;
+    m.source_digest = s.source_digest;
+    for (const ir::Dof& d : s.dofs) m.dofs.push_back({d.name, d.doc});
+    for (const ir::InputChannel& u : s.inputs) m.inputs.push_back({u.name, u.doc});
+    for (const ir::Parameter& p : s.params) m.params.push_back({p.name, p.doc, p.value});
+    for (const ir::Output& y : s.outputs) m.outputs.push_back({y.name, y.doc});
     return m;
 }
 
@@ -173,31 +168,25 @@ Routine rhs_jacobian_routine(Graph& g, const ImportedEquations& in, int nq,
 
 } // namespace
 
-Module build_module(const symbolic::Equations& eq, const Options& options) {
-    if (eq.tangent_form) {
+Module build_module(const ir::System& s, const Options& options) {
+    if (s.tangent_form) {
         Module m;
-        m.model = model_info(eq);
+        m.model = model_info(s);
         m.options = options;
-        add_tangent_routines(m, eq);
+        add_tangent_routines(m, s);
         return m;
     }
-    check_shapes(eq);
-    const int nq = eq.nq();
-    Graph graph(options.max_multiplied_power);
-    GinacImporter importer(graph, eq);
-    ImportedEquations in;
-    in.M = import_matrix(importer, eq.M);
-    for (const GiNaC::ex& f : eq.F) in.F.push_back(importer.import(f));
-    in.dF_dq = import_matrix(importer, eq.dF_dq);
-    in.dF_dqd = import_matrix(importer, eq.dF_dqd);
-    in.dF_du = import_matrix(importer, eq.dF_du);
-    in.dMa_dq = import_matrix(importer, eq.dMa_dq);
-    for (const symbolic::Output& y : eq.outputs) in.y.push_back(importer.import(y.value));
+    check_shapes(s, options);
+    const int nq = s.nq();
+    Graph graph = s.graph;
+    NodeRow y;
+    for (const ir::Output& o : s.outputs) y.push_back(o.value);
+    const ImportedEquations in{s.M, s.dF_dq, s.dF_dqd, s.dF_du, s.dMa_dq, s.F, y};
     std::vector<NodeId> rates;
     for (int i = 0; i < nq; ++i) rates.push_back(graph.symbol({SymbolKind::qd, i}));
 
     Module m;
-    m.model = model_info(eq);
+    m.model = model_info(s);
     m.options = options;
     const std::uint32_t q_and_p =
         (1u << static_cast<int>(SymbolKind::q)) | (1u << static_cast<int>(SymbolKind::param));
@@ -208,17 +197,13 @@ Module build_module(const symbolic::Equations& eq, const Options& options) {
 
     m.routines.push_back(mass_matrix_routine(graph, in, nq, options));
     m.routines.push_back(forcing_routine(graph, in, nq, options));
-    m.routines.push_back(jacobians_routine(graph, in, nq, eq.nu(), options));
+    m.routines.push_back(jacobians_routine(graph, in, nq, s.nu(), options));
     m.routines.push_back(outputs_routine(graph, in, options));
     m.routines.push_back(rhs_routine(graph, in, rates, nq, options));
     m.routines.push_back(rhs_jacobian_routine(graph, in, nq, options));
-    if (options.linear_model)
-        add_linear_routines(graph, importer, eq,
-                            {in.M, in.F, in.dF_dq, in.dF_dqd, in.dF_du, in.dMa_dq}, options,
-                            m.routines);
-    add_sensitivity_routine(graph, importer, eq,
-                            {in.M, in.F, in.dF_dq, in.dF_dqd, in.dF_du, in.dMa_dq}, options,
-                            m.routines); // only with options.sensitivity_params
+    const LinearSources sources{in.M, in.F, in.dF_dq, in.dF_dqd, in.dF_du, in.dMa_dq};
+    if (options.linear_model) add_linear_routines(graph, s, sources, options, m.routines);
+    add_sensitivity_routine(graph, s, sources, options, m.routines); // only with sensitivity_params
     return m;
 }
 

@@ -3,8 +3,8 @@
 // outputs need (children before parents, in an order that depends on structure
 // only), binds symbols to the routine's arguments, and chooses the temporaries
 // (common subexpression elimination over everything the routine computes).
-#include "codegen/graph.hpp"
 #include "codegen/module.hpp"
+#include "ir/graph.hpp"
 
 #include <functional>
 #include <optional>

@@ -8,14 +8,13 @@
 // The second term of dK0/dp is the chain rule through q''0: dMa_dq = d(M a)/dq
 // is linear and homogeneous in a, so its derivative along dq''0/dp is dMa_dq
 // itself with a replaced by dq''0/dp. The partial derivatives in p come from the
-// symbolic stage (symbolic::parameter_derivatives, forward mode on a Tape); the
-// solves with M0 are steps of the routine, as in `linear`.
+// pass passes::parameter_derivatives (forward mode on the IR); the solves with
+// M0 are steps of the routine, as in `linear`.
 #include "codegen/sensitivity_routines.hpp"
 
 #include "codegen/routine_builder.hpp"
 #include "codegen/symbol_binding.hpp"
 #include "diag/diagnostics.hpp"
-#include "symbolic/linearize.hpp"
 
 #include <cstdint>
 #include <string>
@@ -109,39 +108,15 @@ bool uses_accelerations(const Graph& g, const NodeMatrix& m) {
     return false;
 }
 
-/// The derivatives of one parameter, imported into the Graph.
-struct ImportedDerivatives {
-    NodeMatrix M, dF_dq, dF_dqd, dF_du, dMa_dq; // M: lower triangle
-    std::vector<NodeId> F;
-};
+using ImportedDerivatives = ir::ParameterDerivatives;
 
-ImportedDerivatives import_derivatives(GinacImporter& importer,
-                                       const symbolic::ParameterDerivatives& d) {
-    auto matrix = [&](const symbolic::Matrix& m) {
-        NodeMatrix out;
-        for (const symbolic::Row& row : m) {
-            out.emplace_back();
-            for (const GiNaC::ex& e : row) out.back().push_back(importer.import(e));
-        }
-        return out;
-    };
-    ImportedDerivatives out;
-    out.M = matrix(d.M);
-    out.dF_dq = matrix(d.dF_dq);
-    out.dF_dqd = matrix(d.dF_dqd);
-    out.dF_du = matrix(d.dF_du);
-    out.dMa_dq = matrix(d.dMa_dq);
-    for (const GiNaC::ex& e : d.F) out.F.push_back(importer.import(e));
-    return out;
-}
-
-std::vector<std::size_t> parameter_indices(const symbolic::Equations& eq,
+std::vector<std::size_t> parameter_indices(const ir::System& s,
                                            const std::vector<std::string>& names) {
     std::vector<std::size_t> out;
     for (const std::string& name : names) {
         std::size_t i = 0;
-        while (i < eq.params.size() && eq.params[i].name != name) ++i;
-        if (i == eq.params.size())
+        while (i < s.params.size() && s.params[i].name != name) ++i;
+        if (i == s.params.size())
             throw diag::InternalError("code generation: sensitivity of '" + name +
                                       "', which is not a parameter");
         out.push_back(i);
@@ -223,17 +198,15 @@ Routine sensitivity_routine(Graph& g, const LinearSources& in,
 
 } // namespace
 
-void add_sensitivity_routine(Graph& graph, GinacImporter& importer, const symbolic::Equations& eq,
-                             const LinearSources& in, const Options& options,
-                             std::vector<Routine>& routines) {
-    const int nq = eq.nq();
+void add_sensitivity_routine(Graph& graph, const ir::System& s, const LinearSources& in,
+                             const Options& options, std::vector<Routine>& routines) {
+    const int nq = s.nq();
     if (options.sensitivity_params.empty() || nq == 0) return;
-    const std::vector<symbolic::ParameterDerivatives> symbolic_derivatives =
-        symbolic::parameter_derivatives(eq, parameter_indices(eq, options.sensitivity_params));
-    std::vector<ImportedDerivatives> d;
-    for (const symbolic::ParameterDerivatives& pd : symbolic_derivatives)
-        d.push_back(import_derivatives(importer, pd));
-    routines.push_back(sensitivity_routine(graph, in, d, nq, eq.nu(), options));
+    if (parameter_indices(s, options.sensitivity_params) != s.sensitivity_params ||
+        s.sensitivities.size() != s.sensitivity_params.size())
+        throw diag::InternalError("code generation: the parameter derivatives of the "
+                                  "sensitivities were not derived");
+    routines.push_back(sensitivity_routine(graph, in, s.sensitivities, nq, s.nu(), options));
 }
 
 } // namespace yamsc::codegen

@@ -2,13 +2,16 @@
 // Per-language tables for the expression printer: how functions, parameters and
 // helpers are spelt. C++ and C share one printer; a LaTeX printer would bring
 // its own layout (fractions, \cdot) but can reuse the function table's slots.
-#include "codegen/graph.hpp"
+#include "ir/function.hpp"
 
 #include <array>
 #include <stdexcept>
 #include <string>
 
 namespace yamsc::codegen {
+
+using ir::Function;
+using ir::function_count;
 
 struct Syntax {
     std::array<std::string, function_count> functions; // indexed by Function

@@ -1,6 +1,5 @@
 #include "codegen/tangent_routines.hpp"
 
-#include "codegen/from_ginac.hpp"
 #include "codegen/routine_builder.hpp"
 #include "codegen/symbol_binding.hpp"
 #include "diag/diagnostics.hpp"
@@ -15,7 +14,7 @@ namespace {
 
 using NodeRow = std::vector<NodeId>;
 
-/// The nodes the routines need, imported into one Graph.
+/// The nodes the routines need, in the System's graph.
 struct Imported {
     NodeRow Ma, F, dG, dY, y;
     bool mass_short_form = false; // M a depends on q, p and a only
@@ -23,15 +22,13 @@ struct Imported {
 
 class TangentModule {
 public:
-    TangentModule(Module& module, const symbolic::Equations& eq)
-        : m_(module), nq_(eq.nq()), nu_(eq.nu()), ny_(eq.ny()),
-          graph_(module.options.max_multiplied_power) {
-        GinacImporter importer(graph_, eq);
-        for (const GiNaC::ex& e : eq.Ma) in_.Ma.push_back(importer.import(e));
-        for (const GiNaC::ex& e : eq.F) in_.F.push_back(importer.import(e));
-        for (const GiNaC::ex& e : eq.dG) in_.dG.push_back(importer.import(e));
-        for (const GiNaC::ex& e : eq.dY) in_.dY.push_back(importer.import(e));
-        for (const symbolic::Output& o : eq.outputs) in_.y.push_back(importer.import(o.value));
+    TangentModule(Module& module, const ir::System& s)
+        : m_(module), nq_(s.nq()), nu_(s.nu()), ny_(s.ny()), graph_(s.graph) {
+        in_.Ma = s.Ma;
+        in_.F = s.F;
+        in_.dG = s.dG;
+        in_.dY = s.dY;
+        for (const ir::Output& o : s.outputs) in_.y.push_back(o.value);
         std::uint32_t depends = 0;
         for (NodeId id : in_.Ma) depends |= graph_.node(id).depends;
         const std::uint32_t allowed =
@@ -374,13 +371,16 @@ private:
 
 } // namespace
 
-void add_tangent_routines(Module& module, const symbolic::Equations& eq) {
-    const int nq = eq.nq(), ny = eq.ny();
-    if (!eq.tangent_form || static_cast<int>(eq.Ma.size()) != nq ||
-        static_cast<int>(eq.dG.size()) != nq || static_cast<int>(eq.dY.size()) != ny ||
-        static_cast<int>(eq.seed.size()) != 2 * nq + eq.nu())
+void add_tangent_routines(Module& module, const ir::System& s) {
+    const int nq = s.nq(), ny = s.ny();
+    if (!s.tangent_form || static_cast<int>(s.Ma.size()) != nq ||
+        static_cast<int>(s.F.size()) != nq || static_cast<int>(s.dG.size()) != nq ||
+        static_cast<int>(s.dY.size()) != ny)
         throw diag::InternalError("code generation: the equations are not in tangent form");
-    TangentModule(module, eq).build();
+    if (s.graph.max_multiplied_power() != module.options.max_multiplied_power)
+        throw diag::InternalError("code generation: the IR's normal form has another "
+                                  "max_multiplied_power");
+    TangentModule(module, s).build();
 }
 
 } // namespace yamsc::codegen

@@ -1,5 +1,5 @@
 #pragma once
-// The module of equations in the tangent form (Equations::tangent_form,
+// The module of equations in the tangent form (ir::System::tangent_form,
 // docs/benchmarks.md): two internal routines, `mass_times` (M a) and
 // `tangent` (the directional derivative of G = F - M a and of the outputs),
 // and the public routines of the unrolled form with the same signatures, whose
@@ -7,7 +7,6 @@
 // code is O(size of F, M a and y) instead of O(nq x that); each matrix costs
 // nq calls at run time.
 #include "codegen/module.hpp"
-#include "symbolic/equations.hpp"
 
 namespace yamsc::codegen {
 
@@ -15,6 +14,6 @@ namespace yamsc::codegen {
 /// options.linear_model) linear, state_space and output_matrices, plus the
 /// internal routines they call. `module.model` and `module.options` must be
 /// set. Throws diag::InternalError when the equations are not in tangent form.
-void add_tangent_routines(Module& module, const symbolic::Equations& eq);
+void add_tangent_routines(Module& module, const ir::System& s);
 
 } // namespace yamsc::codegen

@@ -11,6 +11,7 @@
 #include "codegen/linear_routines.hpp"
 #include "driver/pipeline.hpp"
 #include "model/names.hpp"
+#include "passes/passes.hpp"
 #include "symbolic/derive.hpp"
 #include "symbolic/linearize.hpp"
 #include <yamsc/atomic_file.hpp>
@@ -83,7 +84,10 @@ std::string depfile_text(const CompileOptions& o, const std::vector<std::string>
 void write_latex(const CompileOptions& o, const FrontEnd& fe) {
     if (!o.header.empty()) throw UsageError("--header does not apply to --lang latex");
     codegen::LatexInput in;
-    in.equations = &*fe.equations;
+    // The LaTeX printer still reads GiNaC: it takes the Jacobians from the Tape.
+    symbolic::Equations eq = *fe.equations;
+    if (!fe.system->tangent_form) symbolic::derive_jacobians(eq);
+    in.equations = &eq;
     std::optional<symbolic::Equations> exact;
     if (!fe.model->approximations.empty()) {
         diag::Diagnostics ignored; // the same derivation already succeeded
@@ -124,15 +128,19 @@ const char* derivatives_name(Derivatives d) {
 
 /// The module options from the command line; parameter names are checked
 /// against the model so that a misspelt one is an error, not a silent no-op.
-codegen::Options module_options(const CompileOptions& o, const symbolic::Equations& eq) {
+/// The sensitivities' parameter derivatives are derived here (a pass on `s`).
+codegen::Options module_options(const CompileOptions& o, ir::System& s) {
     codegen::Options options;
+    std::vector<std::size_t> indices;
     for (const std::string& name : o.sensitivities) {
-        bool known = false;
-        for (const auto& p : eq.params) known = known || p.name == name;
-        if (!known)
+        std::size_t i = 0;
+        while (i < s.params.size() && s.params[i].name != name) ++i;
+        if (i == s.params.size())
             throw UsageError("--sensitivities: '" + name + "' is not a parameter of the model");
         options.sensitivity_params.push_back(name);
+        indices.push_back(i);
     }
+    if (!indices.empty()) passes::parameter_derivatives(s, indices);
     return options;
 }
 
@@ -168,7 +176,7 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
         [&](const model::Model& m) { check_outputs(data_files_of(m), output_files); });
     err << diags.render();
     if (diags.has_errors()) return 1;
-    if (o.jacobians == Derivatives::tangent && fe.equations && !fe.equations->tangent_form)
+    if (o.jacobians == Derivatives::tangent && fe.system && !fe.system->tangent_form)
         throw UsageError("--jacobians tangent does not apply to a model with `approx` (which "
                          "works on M itself)");
     if (o.dump == Dump::ast) {
@@ -184,9 +192,8 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
         progress("wrote " + o.output);
         return 0;
     }
-    codegen::Module module = codegen::build_module(*fe.equations, module_options(o, *fe.equations));
-    codegen::add_operating_point(module, *fe.equations,
-                                 symbolic::operating_point(*fe.model, *fe.equations));
+    codegen::Module module = codegen::build_module(*fe.system, module_options(o, *fe.system));
+    codegen::add_operating_point(module, *fe.system);
     progress("built the code module (common subexpressions shared)");
     if (o.dump == Dump::module) {
         out << codegen::dump(module);

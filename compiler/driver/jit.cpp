@@ -65,7 +65,7 @@ std::string shell_quote(const std::string& s) {
 
 } // namespace
 
-std::string shared_model_source(const symbolic::Equations& eq) {
+std::string shared_model_source(const ir::System& eq) {
     codegen::Module module = codegen::build_module(eq);
     codegen::EmitOptions options;
     options.compiler_version = YAMSC_VERSION;
@@ -75,7 +75,7 @@ std::string shared_model_source(const symbolic::Equations& eq) {
            "YAMSC_EXPORT_MODEL(" + eq.model_name + ")\n";
 }
 
-std::unique_ptr<runtime::SharedModel> load_compiled_model(const symbolic::Equations& eq,
+std::unique_ptr<runtime::SharedModel> load_compiled_model(const ir::System& eq,
                                                           const JitOptions& o) {
     auto say = [&](const std::string& s) {
         if (o.progress) o.progress(s);

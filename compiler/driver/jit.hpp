@@ -3,7 +3,7 @@
 // generated C++ (not an interpreter). The source is compiled with the system
 // C++ compiler into a shared library, cached by the digest of its text, and
 // loaded through the C ABI of runtime/include/yamsc/abi_export.hpp.
-#include "symbolic/equations.hpp"
+#include "ir/system.hpp"
 
 #include <yamsc/dynamic_model.hpp>
 
@@ -19,11 +19,11 @@ struct JitOptions {
 };
 
 /// The C++ translation unit that exports a model: generated source + ABI shim.
-std::string shared_model_source(const symbolic::Equations& eq);
+std::string shared_model_source(const ir::System& eq);
 
 /// Compiles (or finds in the cache) and loads the model. Throws std::runtime_error
 /// with the compiler's messages when compilation fails.
-std::unique_ptr<runtime::SharedModel> load_compiled_model(const symbolic::Equations& eq,
+std::unique_ptr<runtime::SharedModel> load_compiled_model(const ir::System& eq,
                                                           const JitOptions& options = {});
 
 } // namespace yamsc::driver

@@ -2,9 +2,12 @@
 
 #include "data/file_source.hpp"
 #include "driver/files.hpp"
+#include "lower/lower.hpp"
 #include "parse/parser.hpp"
+#include "passes/passes.hpp"
 #include "symbolic/approx.hpp"
 #include "symbolic/derive.hpp"
+#include "symbolic/linearize.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -69,11 +72,15 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
         if (!symbolic::approximate(*fe.model, *fe.equations, diags)) return fe;
         say(timed("approximated (approx)", clock.seconds()));
     }
-    if (until == Until::jacobians && tangent) {
-        symbolic::derive_tangent(*fe.equations);
+    if (until != Until::jacobians) return fe;
+    fe.system = lower::lower(*fe.equations, symbolic::operating_point(*fe.model, *fe.equations));
+    say(timed("imported the equations into the IR", clock.seconds()));
+    if (tangent) {
+        passes::derive_tangent(*fe.system);
         say(timed("derived the tangent (directional derivatives)", clock.seconds()));
-    } else if (until == Until::jacobians) {
-        symbolic::derive_jacobians(*fe.equations);
+    } else {
+        passes::derive_jacobians(*fe.system);
+        passes::output_jacobians(*fe.system);
         say(timed("derived the Jacobians", clock.seconds()));
     }
     return fe;

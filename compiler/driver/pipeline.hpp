@@ -1,9 +1,11 @@
 #pragma once
-// The compiler's stages chained: source -> AST -> checked model -> equations.
+// The compiler's stages chained: source -> AST -> checked model -> equations
+// (GiNaC) -> ir::System with its derivatives (the passes).
 // Each stage reports into one Diagnostics; the chain stops after the first stage
 // that reported an error.
 #include "ast/ast.hpp"
 #include "driver/commands.hpp"
+#include "ir/system.hpp"
 #include "model/model.hpp"
 #include "symbolic/equations.hpp"
 
@@ -16,6 +18,7 @@ struct FrontEnd {
     std::optional<ast::ModelFile> ast;
     std::optional<model::Model> model;
     std::optional<symbolic::Equations> equations;
+    std::optional<ir::System> system; // Until::jacobians: the equations in the IR, derived
 };
 
 enum class Until { ast, model, equations, jacobians };

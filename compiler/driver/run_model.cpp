@@ -55,7 +55,7 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
     JitOptions jit;
     jit.progress = progress;
     Loaded l;
-    l.library = load_compiled_model(*fe.equations, jit);
+    l.library = load_compiled_model(*fe.system, jit);
     std::vector<std::optional<double>> defaults;
     for (double v : l.library->default_params())
         defaults.push_back(std::isnan(v) ? std::nullopt : std::optional<double>(v));

@@ -73,6 +73,9 @@ const char* function_name(TapeFunction f) {
         return "log";
     case TapeFunction::abs:
         return "abs";
+    case TapeFunction::sqrt: // the Tape writes powers as products, never these
+    case TapeFunction::pow:
+        return ir::info(f).name.data();
     }
     return "?";
 }

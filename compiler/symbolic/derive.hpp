@@ -13,11 +13,8 @@ namespace yamsc::symbolic {
 std::optional<Equations> derive(const model::Model& m, diag::Diagnostics& diags,
                                 bool mass_matrix = true);
 
-/// Fills the exact Jacobians dF/dq, dF/dq', dF/du and d(M a)/dq.
+/// Fills the exact Jacobians dF/dq, dF/dq', dF/du and d(M a)/dq in GiNaC, for
+/// the LaTeX printer (code generation derives them on the IR: passes/).
 void derive_jacobians(Equations& eq);
-
-/// Fills the tangent form instead (eq.seed, eq.dG, eq.dY; tangent_form = true):
-/// one directional derivative pass over F - M a and the outputs.
-void derive_tangent(Equations& eq);
 
 } // namespace yamsc::symbolic

@@ -1,7 +1,9 @@
 #pragma once
-// The symbolic system: M(q) q'' = F(q, q', u, t), its Jacobians and the outputs,
-// as GiNaC expressions over the symbols listed here. Produced by symbolic/ (Kane's
-// method), consumed by codegen/ and by the numeric evaluator.
+// The symbolic system: M(q) q'' = F(q, q', u, t) and the outputs, as GiNaC
+// expressions over the symbols listed here. Produced by symbolic/ (Kane's
+// method); lower::lower() turns it into the ir::System that the passes and the
+// code generator work on. Also read by the numeric evaluator and the LaTeX
+// printer.
 //
 // Expressions are DAGs: subexpressions are shared, never expanded. Walk them
 // with the memoised operations of symbolic/dag.hpp, never with GiNaC's own
@@ -60,7 +62,9 @@ struct Equations {
     Matrix M; // nq x nq, symmetric, depends on q and p (and u, t for prescribed motion)
     Row F;    // nq
 
-    // Exact Jacobians of F (filled by derive_jacobians in symbolic/jacobians.cpp).
+    // Exact Jacobians of F (filled by derive_jacobians in symbolic/jacobians.cpp),
+    // for the LaTeX printer only: generated code takes its derivatives from the
+    // passes on the IR (passes/jacobians.cpp).
     Matrix dF_dq, dF_dqd, dF_du; // nq x nq, nq x nq, nq x nu
     // d(M(q) a)/dq for a vector of symbols `a` (nq x nq): with a = q'' it completes
     // the Jacobian of the first-order system x' = f(x) = [q', M^-1 F].
@@ -70,16 +74,6 @@ struct Equations {
     // of O(bodies x DOFs) nodes where Σ_s M_rs a_s has O(bodies x DOFs²). Filled by
     // derive() together with `a`; when empty, derive_jacobians forms Σ_s M_rs a_s.
     Row Ma;
-
-    // The tangent form (symbolic/tangent.cpp), for models too large for the
-    // unrolled Jacobians above: M is left empty (its columns are M e_k = (M a)
-    // at a = e_k), and the derivatives are one directional derivative along
-    // the seed symbols `seed` = [dq, dq', du] (2 nq + nu): dG of G = F - M a
-    // (a held) and dY of the outputs. Generated code evaluates them in a loop
-    // over the unit directions.
-    bool tangent_form = false;
-    std::vector<GiNaC::symbol> seed;
-    Row dG, dY;
 
     int nq() const { return static_cast<int>(dofs.size()); }
     int nu() const { return static_cast<int>(inputs.size()); }

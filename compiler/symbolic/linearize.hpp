@@ -10,13 +10,11 @@
 // not zero: then A = [0 I; -M0⁻¹K0 -M0⁻¹C0] is exactly the Jacobian of the
 // first-order system x' = [q', M⁻¹F] at any point, and at an equilibrium
 // (F0 = 0) both choices agree. The matrices themselves are built from the
-// Jacobians of derive_jacobians where they are used: as code by
-// codegen/linear_routines.cpp, as formulas by codegen/emit_latex.cpp.
+// Jacobians where they are used: as code by codegen/linear_routines.cpp (from
+// the passes on the IR, passes/linearize.cpp), as formulas by
+// codegen/emit_latex.cpp.
 #include "model/model.hpp"
 #include "symbolic/equations.hpp"
-
-#include <cstddef>
-#include <vector>
 
 namespace yamsc::symbolic {
 
@@ -29,28 +27,5 @@ struct OperatingPoint {
 
 /// The model's `linearize` block over the symbols of `eq` (derived from `m`).
 OperatingPoint operating_point(const model::Model& m, const Equations& eq);
-
-/// Jacobians of the outputs: C = [∂y/∂q, ∂y/∂q'] (ny x 2nq) and D = ∂y/∂u (ny x nu),
-/// functions of (t, q, q', u, p) like the outputs.
-struct OutputJacobians {
-    Matrix C, D;
-};
-OutputJacobians output_jacobians(const Equations& eq);
-
-/// Partial derivatives, with respect to one parameter, of what the linear model
-/// is built from (docs/linearization.md, "Parameter sensitivities"): of M (lower
-/// triangle only, the rest is 0), F and the Jacobians dF_dq, dF_dqd, dF_du,
-/// dMa_dq of derive_jacobians, at fixed (t, q, q', u, a).
-struct ParameterDerivatives {
-    Matrix M, dF_dq, dF_dqd, dF_du, dMa_dq;
-    Row F;
-};
-
-/// One ParameterDerivatives per entry of `params` (indices into eq.params), in
-/// that order, by forward mode on one Tape: each derivative shares the nodes of
-/// the equations and of the other derivatives, so the cost per parameter is the
-/// number of nodes that depend on it. Requires derive_jacobians to have run.
-std::vector<ParameterDerivatives> parameter_derivatives(const Equations& eq,
-                                                        const std::vector<std::size_t>& params);
 
 } // namespace yamsc::symbolic

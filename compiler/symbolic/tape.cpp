@@ -3,7 +3,6 @@
 #include "diag/diagnostics.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -14,35 +13,6 @@ namespace yamsc::symbolic {
 using namespace GiNaC;
 
 namespace {
-
-struct FunctionInfo {
-    std::string_view name;
-    TapeFunction function;
-    std::size_t arity;
-};
-
-constexpr std::array<FunctionInfo, 16> functions{{
-    {"sin", TapeFunction::sin, 1},
-    {"cos", TapeFunction::cos, 1},
-    {"tan", TapeFunction::tan, 1},
-    {"asin", TapeFunction::asin, 1},
-    {"acos", TapeFunction::acos, 1},
-    {"atan", TapeFunction::atan, 1},
-    {"atan2", TapeFunction::atan2, 2},
-    {"sinh", TapeFunction::sinh, 1},
-    {"cosh", TapeFunction::cosh, 1},
-    {"tanh", TapeFunction::tanh, 1},
-    {"asinh", TapeFunction::asinh, 1},
-    {"acosh", TapeFunction::acosh, 1},
-    {"atanh", TapeFunction::atanh, 1},
-    {"exp", TapeFunction::exp, 1},
-    {"log", TapeFunction::log, 1},
-    {"abs", TapeFunction::abs, 1},
-}};
-
-const FunctionInfo& info(TapeFunction f) {
-    return functions[static_cast<std::size_t>(f)];
-}
 
 // The pairs of a GiNaC sum or product and its numeric part, read in place: op(i)
 // would build a new object for every pair with a coefficient. A pointer to a
@@ -344,10 +314,7 @@ TapeId Tape::import(const ex& root) {
             } else if (is_exactly_a<GiNaC::power>(e) || is_a<GiNaC::function>(e)) {
                 if (is_a<GiNaC::function>(e)) {
                     const std::string name = ex_to<GiNaC::function>(e).get_name();
-                    bool supported = false;
-                    for (const FunctionInfo& f : functions)
-                        supported = supported || (f.name == name && f.arity == e.nops());
-                    if (!supported)
+                    if (!ir::model_function(name, e.nops()))
                         throw diag::InternalError("cannot differentiate function " + name);
                 }
                 for (std::size_t i = 0; i < e.nops(); ++i) top.operands.emplace_back(e.op(i), 1.0);
@@ -377,10 +344,8 @@ TapeId Tape::import(const ex& root) {
             const std::string name = ex_to<GiNaC::function>(e).get_name();
             std::vector<TapeId> arguments;
             for (const TapeTerm& t : terms) arguments.push_back(t.node);
-            TapeFunction f = TapeFunction::sin;
-            for (const FunctionInfo& fi : functions)
-                if (fi.name == name) f = fi.function;
-            id = call(f, std::move(arguments));
+            const auto f = ir::model_function(name, arguments.size()); // checked above
+            id = call(*f, std::move(arguments));
         }
         remember(e, id);
         stack.pop_back();
@@ -419,7 +384,7 @@ GiNaC::ex Tape::build_ginac(TapeId id) {
         return p;
     }
     case TapeKind::call: {
-        const FunctionInfo& f = info(n.function);
+        const ir::FunctionInfo& f = ir::info(n.function);
         const unsigned serial = GiNaC::function::find_function(std::string(f.name), f.arity);
         exvector arguments;
         for (std::uint32_t i = 0; i < n.count; ++i) arguments.push_back(exported_[ops[i].node]);
@@ -585,7 +550,9 @@ TapeId ForwardDerivative::rule(TapeId node) {
         outer = t.mul({{a, 1.0}, {node, -1.0}});
         break;
     case TapeFunction::atan2:
-        break; // handled above
+    case TapeFunction::sqrt: // the Tape writes powers as products, never these
+    case TapeFunction::pow:
+        break;
     }
     return t.mul({{outer, 1.0}, {da, 1.0}});
 }
@@ -607,44 +574,6 @@ TapeId ForwardDerivative::operator()(TapeId root) {
         if (done_.find(node) == done_.end()) done_.emplace(node, rule(node));
     }
     return done_.at(root);
-}
-
-double evaluate(TapeFunction f, double x, double y) {
-    switch (f) {
-    case TapeFunction::sin:
-        return std::sin(x);
-    case TapeFunction::cos:
-        return std::cos(x);
-    case TapeFunction::tan:
-        return std::tan(x);
-    case TapeFunction::asin:
-        return std::asin(x);
-    case TapeFunction::acos:
-        return std::acos(x);
-    case TapeFunction::atan:
-        return std::atan(x);
-    case TapeFunction::atan2:
-        return std::atan2(x, y);
-    case TapeFunction::sinh:
-        return std::sinh(x);
-    case TapeFunction::cosh:
-        return std::cosh(x);
-    case TapeFunction::tanh:
-        return std::tanh(x);
-    case TapeFunction::asinh:
-        return std::asinh(x);
-    case TapeFunction::acosh:
-        return std::acosh(x);
-    case TapeFunction::atanh:
-        return std::atanh(x);
-    case TapeFunction::exp:
-        return std::exp(x);
-    case TapeFunction::log:
-        return std::log(x);
-    case TapeFunction::abs:
-        return std::fabs(x);
-    }
-    return std::nan("");
 }
 
 } // namespace yamsc::symbolic

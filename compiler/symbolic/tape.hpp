@@ -1,5 +1,9 @@
 #pragma once
-// A hash-consed expression DAG for differentiating the equations of motion.
+// A hash-consed expression DAG on the GiNaC side of the compiler, for what
+// still works on GiNaC expressions before (or beside) the IR: the truncated
+// Taylor arithmetic of `approx` (symbolic/approx.cpp) and the polynomial
+// expansion and Jacobians of the LaTeX printer. Generated code takes its
+// derivatives from the passes on the IR (compiler/passes/), not from here.
 //
 // GiNaC is a poor host for derivatives of large shared DAGs: its add and mul
 // constructors flatten nested sums and products (a + (b + c) copies the terms
@@ -9,19 +13,18 @@
 // trees. The Tape stores nodes in flat arrays with integer ids: operands come
 // before their users, identical nodes are stored once, nothing is flattened or
 // expanded, and each node knows which of the differentiation variables it
-// depends on, so a derivative visits only the nodes that depend on its
-// variable. Forward mode over it costs, per variable, the number of nodes that
-// depend on that variable.
+// depends on.
 //
 // Expressions enter with import() (memoised on GiNaC node identity) and leave
 // with to_ginac(): imported nodes come back as the very GiNaC objects they
 // came from, new nodes are built as already-evaluated GiNaC objects without
-// flattening or evaluation (see tape.cpp), so the result shares everything
-// with the input and costs GiNaC nothing to build. The price: such objects are
-// not in GiNaC's canonical form (operands in tape order, sums inside sums), so
+// flattening or evaluation (see tape.cpp). The price: such objects are not in
+// GiNaC's canonical form (operands in tape order, sums inside sums), so
 // GiNaC's own equality and cancellation do not see through them (`a*b - b*a`
-// can stay). Compare them numerically or through codegen's canonical Graph
-// (what the code generator and the LaTeX printer do), never with GiNaC's ==.
+// can stay). Compare them numerically or in the IR (lower::lower), never with
+// GiNaC's ==.
+#include "ir/function.hpp"
+
 #include <ginac/ginac.h>
 
 #include <cstdint>
@@ -35,28 +38,9 @@ using TapeId = std::uint32_t;
 
 enum class TapeKind : std::uint8_t { number, symbol, add, mul, power, call };
 
-/// The elementary functions the equations may contain.
-enum class TapeFunction : std::uint8_t {
-    sin,
-    cos,
-    tan,
-    asin,
-    acos,
-    atan,
-    atan2,
-    sinh,
-    cosh,
-    tanh,
-    asinh,
-    acosh,
-    atanh,
-    exp,
-    log,
-    abs,
-};
-
-/// f(x) (f(x, y) for atan2) for numbers, as the generated code computes it.
-double evaluate(TapeFunction f, double x, double y = 0.0);
+/// The elementary functions: the IR's one table (ir/function.hpp).
+using TapeFunction = ir::Function;
+using ir::evaluate;
 
 /// An operand with its weight: the coefficient of a term of a sum, the exponent
 /// of a factor of a product, 1 for the operands of power and call nodes.

@@ -1,5 +1,8 @@
 #include "fixtures.hpp"
 
+#include "lower/lower.hpp"
+#include "passes/passes.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -335,6 +338,17 @@ Reference reference(const Equations& eq, const Point& x) {
         r.J[nq + i] = lower[i];
     }
     return r;
+}
+
+yamsc::ir::System system_of(const Equations& eq) {
+    yamsc::ir::System s = yamsc::lower::lower(eq);
+    yamsc::passes::derive_jacobians(s);
+    yamsc::passes::output_jacobians(s);
+    return s;
+}
+
+yamsc::codegen::Module build_module(const Equations& eq, const yamsc::codegen::Options& o) {
+    return yamsc::codegen::build_module(system_of(eq), o);
 }
 
 } // namespace codegen_test

@@ -2,6 +2,8 @@
 // Hand-built symbolic::Equations for the code generator's tests, and an
 // independent numeric reference: a memoised evaluator over GiNaC's own tree
 // (it shares nothing with codegen's canonical graph) plus a small dense solver.
+#include "codegen/module.hpp"
+#include "ir/system.hpp"
 #include "symbolic/equations.hpp"
 
 #include <map>
@@ -27,6 +29,12 @@ Equations bare();
 /// x_{k+1} = sin(x_k) x_k + c x_k from x_0 = q, `levels` times: a DAG whose
 /// tree is exponential. M = [m + x_L^2], F = [-x_L], Jacobians by forward mode.
 Equations deep_chain(int levels);
+
+/// The System of `eq` as the driver makes it: lowered to the IR, then the
+/// Jacobians and the outputs' Jacobians derived by the passes.
+yamsc::ir::System system_of(const Equations& eq);
+/// The module of system_of(eq).
+yamsc::codegen::Module build_module(const Equations& eq, const yamsc::codegen::Options& o = {});
 
 struct Point {
     double t = 0.0;

@@ -7,7 +7,6 @@
 #include <doctest/doctest.h>
 
 using namespace codegen_test;
-using yamsc::codegen::build_module;
 
 namespace {
 

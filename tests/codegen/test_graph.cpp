@@ -1,15 +1,16 @@
 // Canonical value numbering: equal structures share one number, normal forms
 // are unique, and importing a shared DAG costs its size, not its tree size.
-#include "codegen/from_ginac.hpp"
-#include "codegen/graph.hpp"
 #include "diag/diagnostics.hpp"
 #include "fixtures.hpp"
+#include "ir/graph.hpp"
+#include "lower/from_ginac.hpp"
 
 #include <chrono>
 #include <doctest/doctest.h>
 
-using namespace yamsc::codegen;
+using namespace yamsc::ir;
 using codegen_test::Equations;
+using yamsc::lower::GinacImporter;
 
 TEST_CASE("structurally equal expressions get one value number") {
     const Equations eq = codegen_test::pendulum();

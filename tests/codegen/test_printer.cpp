@@ -9,6 +9,7 @@
 #include <doctest/doctest.h>
 
 using namespace yamsc::codegen;
+using codegen_test::build_module;
 using codegen_test::Equations;
 using GiNaC::ex;
 

@@ -3,6 +3,8 @@
 // the exact DAG evaluator, and load its generated code compiled on the fly.
 #include "driver/jit.hpp"
 #include "driver/pipeline.hpp"
+#include "lower/lower.hpp"
+#include "passes/passes.hpp"
 #include "symbolic/dag.hpp"
 
 #include <doctest/doctest.h>
@@ -72,7 +74,10 @@ inline Compiled compile_model(const symbolic::Equations& eq,
     driver::JitOptions o;
     o.cache_dir = std::string(YAMSC_TEST_BINARY_DIR) + "/jit-cache";
     Compiled c;
-    c.library = driver::load_compiled_model(eq, o);
+    ir::System s = lower::lower(eq);
+    passes::derive_jacobians(s);
+    passes::output_jacobians(s);
+    c.library = driver::load_compiled_model(s, o);
     std::vector<double> p = c.library->default_params();
     for (const auto& [name, value] : params) {
         int i = c.library->param_index(name);

@@ -1,10 +1,10 @@
-#include "codegen/graph.hpp"
+#include "ir/graph.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 
-namespace yamsc::codegen {
+namespace yamsc::ir {
 namespace {
 
 std::uint64_t bits_of(double v) {
@@ -55,6 +55,21 @@ double without_negative_zero(double v) {
 
 } // namespace
 
+int Variables::of(SymbolRef s) const {
+    switch (s.kind) {
+    case SymbolKind::q:
+        return s.index < nq ? s.index : -1;
+    case SymbolKind::qd:
+        return s.index < nq ? nq + s.index : -1;
+    case SymbolKind::input:
+        return s.index < nu ? 2 * nq + s.index : -1;
+    case SymbolKind::param:
+        return s.index < np ? 2 * nq + nu + s.index : -1;
+    default:
+        return -1;
+    }
+}
+
 bool Graph::same_content(NodeId id, const Node& n, const std::vector<Operand>& operands) const {
     const Node& a = nodes_[id];
     if (a.hash != n.hash || a.kind != n.kind || a.function != n.function ||
@@ -103,6 +118,18 @@ NodeId Graph::intern(Node n, const std::vector<Operand>& operands) {
         if (same_content(table_[slot], n, operands)) return table_[slot];
 
     const auto id = static_cast<NodeId>(nodes_.size());
+    // Dependence: the variable itself, or the union over the operands.
+    dependence_.resize(dependence_.size() + words_, 0);
+    std::uint64_t* mine = dependence_.data() + static_cast<std::size_t>(id) * words_;
+    if (n.kind == NodeKind::symbol) {
+        const int v = variables_.of(n.symbol);
+        if (v >= 0) mine[v / 64] |= std::uint64_t{1} << (v % 64);
+    }
+    for (const Operand& op : operands) {
+        const std::uint64_t* theirs =
+            dependence_.data() + static_cast<std::size_t>(op.node) * words_;
+        for (std::size_t w = 0; w < words_; ++w) mine[w] |= theirs[w];
+    }
     n.first_operand = static_cast<std::uint32_t>(operands_.size());
     n.operand_count = static_cast<std::uint32_t>(operands.size());
     operands_.insert(operands_.end(), operands.begin(), operands.end());
@@ -266,4 +293,4 @@ NodeId Graph::power(NodeId base, NodeId exponent) {
     return call(Function::pow, {base, exponent});
 }
 
-} // namespace yamsc::codegen
+} // namespace yamsc::ir

@@ -1,19 +1,25 @@
 #pragma once
-// Canonical value numbering: a hash-consed expression graph whose nodes are
-// numbered once per distinct structure. Operands of sums and products are kept
-// in a canonical order that depends only on structure (names, numbers, operator
-// kinds), never on GiNaC's hash order or on memory addresses, so everything
-// printed from a Graph is identical from one process to the next.
+// The intermediate representation of expressions: a hash-consed DAG whose
+// nodes are numbered once per distinct structure. Operands of sums and
+// products are kept in a canonical order that depends only on structure
+// (names, numbers, operator kinds), never on GiNaC's hash order or on memory
+// addresses, so everything printed from a Graph is identical from one process
+// to the next. Operands come before their users (ids are topological), and
+// each node knows which differentiation variables it depends on (a bit set
+// over Variables), so a derivative visits only the nodes that depend on its
+// variable.
+#include "ir/function.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-namespace yamsc::codegen {
+namespace yamsc::ir {
 
 using NodeId = std::uint32_t;
 
-/// What a symbol of symbolic::Equations stands for; `index` is its position in
-/// the Equations list of that kind (0 for time).
+/// What a symbol stands for; `index` is its position in the System's list of
+/// that kind (0 for time).
 enum class SymbolKind : std::uint8_t {
     time,
     q,            // coordinate
@@ -21,8 +27,8 @@ enum class SymbolKind : std::uint8_t {
     qdd,          // acceleration q''
     input,        // input channel u
     param,        // parameter
-    acceleration, // the vector `a` of Equations::dMa_dq
-    seed,         // a direction of the tangent form, Equations::seed
+    acceleration, // the vector `a` of M a and dMa_dq
+    seed,         // a direction of the tangent form
 };
 inline constexpr int symbol_kind_count = 8;
 
@@ -31,29 +37,15 @@ struct SymbolRef {
     int index = 0;
 };
 
-/// The elementary functions generated code may call. `sqrt` and `pow` come from
-/// non-integer powers; the rest from the model's own functions.
-enum class Function : std::uint8_t {
-    sin,
-    cos,
-    tan,
-    asin,
-    acos,
-    atan,
-    atan2,
-    sinh,
-    cosh,
-    tanh,
-    asinh,
-    acosh,
-    atanh,
-    exp,
-    log,
-    abs,
-    sqrt,
-    pow,
+/// The symbols derivatives may be taken with respect to, numbered q (0..nq-1),
+/// q' (nq..2nq-1), u (2nq..2nq+nu-1), p (2nq+nu..): declared when the Graph is
+/// made, since every node's dependence set is computed as it is added.
+struct Variables {
+    int nq = 0, nu = 0, np = 0;
+    int count() const { return 2 * nq + nu + np; }
+    /// The variable of a symbol, or -1 (t, q'', `a`, seeds).
+    int of(SymbolRef s) const;
 };
-inline constexpr int function_count = 18;
 
 enum class NodeKind : std::uint8_t { number, symbol, add, mul, call };
 
@@ -105,7 +97,9 @@ private:
 ///  - numbers are never -0.0.
 class Graph {
 public:
-    explicit Graph(int max_multiplied_power = 4) : max_multiplied_power_(max_multiplied_power) {}
+    explicit Graph(int max_multiplied_power = 4, Variables variables = {})
+        : max_multiplied_power_(max_multiplied_power), variables_(variables),
+          words_((static_cast<std::size_t>(variables.count()) + 63) / 64) {}
 
     NodeId number(double value);
     NodeId symbol(SymbolRef ref);
@@ -122,6 +116,20 @@ public:
     }
     std::size_t size() const { return nodes_.size(); }
     int max_multiplied_power() const { return max_multiplied_power_; }
+    const Variables& variables() const { return variables_; }
+
+    /// Whether node `id` depends on variable `v` (Variables numbering).
+    bool depends(NodeId id, std::size_t v) const {
+        return (dependence_[id * words_ + v / 64] >> (v % 64)) & 1u;
+    }
+    /// Whether node `id` depends on any variable of `mask` (dependence_words()
+    /// 64-bit words, bit v for variable v).
+    bool depends_on_any(NodeId id, const std::vector<std::uint64_t>& mask) const {
+        for (std::size_t w = 0; w < words_; ++w)
+            if (dependence_[id * words_ + w] & mask[w]) return true;
+        return false;
+    }
+    std::size_t dependence_words() const { return words_; }
 
     /// A total order on structures: <0, 0 or >0. Equal structures have equal ids,
     /// so compare(a, b) == 0 exactly when a == b.
@@ -137,10 +145,13 @@ private:
     std::vector<Operand> operand_copy(NodeId id) const;
 
     int max_multiplied_power_;
+    Variables variables_;
+    std::size_t words_;                     // 64-bit words of a dependence set
+    std::vector<std::uint64_t> dependence_; // words_ per node
     std::vector<Node> nodes_;
     std::vector<Operand> operands_;
     std::vector<NodeId> table_; // by hash, linear probing; empty_slot where free
     static constexpr NodeId empty_slot = 0xffffffffu;
 };
 
-} // namespace yamsc::codegen
+} // namespace yamsc::ir

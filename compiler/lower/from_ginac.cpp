@@ -1,4 +1,4 @@
-#include "codegen/from_ginac.hpp"
+#include "lower/from_ginac.hpp"
 
 #include "diag/diagnostics.hpp"
 
@@ -7,34 +7,12 @@
 #include <string_view>
 #include <utility>
 
-namespace yamsc::codegen {
+namespace yamsc::lower {
+
+using ir::Operand;
+using ir::SymbolKind;
+
 namespace {
-
-struct FunctionName {
-    std::string_view ginac_name;
-    Function function;
-    std::size_t arity;
-};
-
-// GiNaC's functions that the model language can produce (sqrt is a power).
-constexpr std::array<FunctionName, 16> supported_functions{{
-    {"sin", Function::sin, 1},
-    {"cos", Function::cos, 1},
-    {"tan", Function::tan, 1},
-    {"asin", Function::asin, 1},
-    {"acos", Function::acos, 1},
-    {"atan", Function::atan, 1},
-    {"atan2", Function::atan2, 2},
-    {"sinh", Function::sinh, 1},
-    {"cosh", Function::cosh, 1},
-    {"tanh", Function::tanh, 1},
-    {"asinh", Function::asinh, 1},
-    {"acosh", Function::acosh, 1},
-    {"atanh", Function::atanh, 1},
-    {"exp", Function::exp, 1},
-    {"log", Function::log, 1},
-    {"abs", Function::abs, 1},
-}};
 
 const GiNaC::basic* identity(const GiNaC::ex& e) {
     return &GiNaC::ex_to<GiNaC::basic>(e);
@@ -53,7 +31,7 @@ struct PairsOf : GiNaC::expairseq {
 };
 
 [[noreturn]] void unsupported(const std::string& what) {
-    throw diag::InternalError("code generation: " + what);
+    throw diag::InternalError("import of the equations: " + what);
 }
 
 double real_value(const GiNaC::numeric& n) {
@@ -91,13 +69,11 @@ GinacImporter::GinacImporter(Graph& graph, const symbolic::Equations& eq) : grap
         add(eq.params[i].sym, SymbolKind::param, static_cast<int>(i));
     for (std::size_t i = 0; i < eq.a.size(); ++i)
         add(eq.a[i], SymbolKind::acceleration, static_cast<int>(i));
-    for (std::size_t i = 0; i < eq.seed.size(); ++i)
-        add(eq.seed[i], SymbolKind::seed, static_cast<int>(i));
 }
 
 NodeId GinacImporter::memoised(const GiNaC::ex& e) const {
     const NodeId* id = memo_.find(identity(e));
-    if (id == nullptr) throw diag::InternalError("code generation: an operand was not imported");
+    if (id == nullptr) throw diag::InternalError("import: an operand was not imported");
     return *id;
 }
 
@@ -133,10 +109,7 @@ void GinacImporter::expand(Frame& frame) {
         pending_.emplace_back(e.op(1), 1.0);
     } else if (GiNaC::is_a<GiNaC::function>(e)) {
         const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
-        const FunctionName* known = nullptr;
-        for (const FunctionName& f : supported_functions)
-            if (f.ginac_name == name) known = &f;
-        if (known == nullptr || known->arity != e.nops())
+        if (!ir::model_function(name, e.nops()))
             unsupported("the function '" + name + "' has no counterpart in generated code");
         for (std::size_t i = 0; i < e.nops(); ++i) pending_.emplace_back(e.op(i), 1.0);
     } else {
@@ -159,8 +132,8 @@ NodeId GinacImporter::build(const Frame& frame) {
     const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
     std::vector<NodeId> arguments;
     for (const Operand& op : operands) arguments.push_back(op.node);
-    for (const FunctionName& f : supported_functions)
-        if (f.ginac_name == name) return graph_.call(f.function, arguments);
+    if (const auto f = ir::model_function(name, arguments.size()))
+        return graph_.call(*f, arguments);
     unsupported("the function '" + name + "'"); // expand() has already rejected it
 }
 
@@ -206,4 +179,4 @@ void GinacImporter::remember(const GiNaC::ex& e, NodeId id) {
     keep_alive_.push_back(e); // the address stays this node's while we may look it up
 }
 
-} // namespace yamsc::codegen
+} // namespace yamsc::lower

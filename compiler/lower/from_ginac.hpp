@@ -1,5 +1,6 @@
 #pragma once
-// Import of GiNaC expressions into the canonical Graph. The expressions of
+// Import of GiNaC expressions into the IR graph: the one conversion of the
+// equations' representation, made after Kane's method. The expressions of
 // symbolic::Equations are DAGs with heavy sharing, so the walk is memoised on
 // node identity (the address of the GiNaC node, kept alive while the importer
 // lives so that no address is reused) and never calls GiNaC's own recursive
@@ -7,15 +8,19 @@
 // Beware that GiNaC's compare() re-points one of two equal handles to the
 // other's object ("sharing"): a handle whose identity is memoised must never
 // be compared (look symbols up through copies).
-#include "codegen/graph.hpp"
-#include "codegen/identity_map.hpp"
+#include "ir/graph.hpp"
+#include "lower/identity_map.hpp"
 #include "symbolic/equations.hpp"
 
 #include <map>
 #include <utility>
 #include <vector>
 
-namespace yamsc::codegen {
+namespace yamsc::lower {
+
+using ir::Graph;
+using ir::NodeId;
+using ir::SymbolRef;
 
 class GinacImporter {
 public:
@@ -42,4 +47,4 @@ private:
     std::vector<std::pair<GiNaC::ex, double>> pending_;
 };
 
-} // namespace yamsc::codegen
+} // namespace yamsc::lower

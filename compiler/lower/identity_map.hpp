@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace yamsc::codegen {
+namespace yamsc::lower {
 
 class IdentityMap {
 public:
@@ -59,4 +59,4 @@ private:
     std::size_t size_ = 0;
 };
 
-} // namespace yamsc::codegen
+} // namespace yamsc::lower

@@ -1,0 +1,101 @@
+#pragma once
+// The system of equations in the intermediate representation:
+// M(q) q'' = F(q, q', u, t), the outputs and everything the passes derive from
+// them, as rows of node ids into one canonical Graph. Made once from the
+// derivation's GiNaC expressions (compiler/lower/), transformed by the passes
+// (compiler/passes/), lowered to code by codegen.
+#include "ir/graph.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace yamsc::ir {
+
+using Row = std::vector<NodeId>;
+using Matrix = std::vector<Row>; // row-major, rows of equal length
+
+struct Dof {
+    std::string name;
+    std::string doc;
+};
+
+/// One entry of the input vector u (`theta_p''` is its own channel).
+struct InputChannel {
+    std::string name;   // as the user writes it: theta_p''
+    std::string c_name; // identifier for code: theta_p_dd
+    std::string doc;
+};
+
+struct Parameter {
+    std::string name;
+    std::string doc;
+    std::optional<double> value; // the default; none: must be set at run time
+};
+
+struct Output {
+    std::string name;
+    std::string doc;
+    NodeId value = 0; // function of t, q, q', u, p
+};
+
+/// The model's `linearize` block: q0, q0', u0 as functions of the parameters
+/// (all 0 when the model has none).
+struct OperatingPoint {
+    Row q, qd, u;
+    bool declared = false;
+};
+
+/// Partial derivatives, with respect to one parameter, of what the linear model
+/// is built from (docs/linearization.md): M (lower triangle only), F and the
+/// Jacobians dF_dq, dF_dqd, dF_du, dMa_dq, at fixed (t, q, q', u, a).
+struct ParameterDerivatives {
+    Matrix M, dF_dq, dF_dqd, dF_du, dMa_dq;
+    Row F;
+};
+
+struct System {
+    std::string model_name;
+    std::string title;
+    std::string source_path;   // as given on the command line
+    std::string source_digest; // hex digest of the model source (and files it read)
+
+    std::vector<Dof> dofs;
+    std::vector<InputChannel> inputs;
+    std::vector<Parameter> params;
+    std::vector<Output> outputs;
+
+    /// Every expression below is a node of this graph. Its variables are the
+    /// model's q, q', u and p.
+    Graph graph;
+
+    Matrix M; // nq x nq, symmetric; empty in the tangent form
+    Row F;    // nq
+    // M a for the acceleration symbols `a` (SymbolKind::acceleration), assembled
+    // body by body by Kane's method; when empty, passes::derive_jacobians forms
+    // Σ_s M_rs a_s.
+    Row Ma;
+
+    // passes::derive_jacobians: exact Jacobians of F, and d(M a)/dq, which with
+    // a = q'' completes the Jacobian of x' = [q', M^-1 F].
+    Matrix dF_dq, dF_dqd, dF_du, dMa_dq;
+    // passes::output_jacobians: C = [∂y/∂q, ∂y/∂q'] (ny x 2nq), D = ∂y/∂u.
+    Matrix C, D;
+    // passes::derive_tangent: one directional derivative along the seed symbols
+    // (SymbolKind::seed, [dq, dq', du]) of G = F - M a (a held) and of the outputs.
+    bool tangent_form = false;
+    Row dG, dY;
+    // passes::parameter_derivatives: one entry per parameter index of
+    // `sensitivity_params`, in that order.
+    std::vector<std::size_t> sensitivity_params;
+    std::vector<ParameterDerivatives> sensitivities;
+
+    OperatingPoint point;
+
+    int nq() const { return static_cast<int>(dofs.size()); }
+    int nu() const { return static_cast<int>(inputs.size()); }
+    int np() const { return static_cast<int>(params.size()); }
+    int ny() const { return static_cast<int>(outputs.size()); }
+};
+
+} // namespace yamsc::ir

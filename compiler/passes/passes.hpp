@@ -1,0 +1,29 @@
+#pragma once
+// The passes: IR to IR. Each adds rows of derivatives to an ir::System, built
+// by forward mode (passes/forward.hpp) in the System's own graph, so every
+// derivative shares the nodes of the equations and of the other derivatives.
+#include "ir/system.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace yamsc::passes {
+
+/// dF_dq, dF_dqd, dF_du and dMa_dq (forming M a from M when Kane's method left
+/// it empty).
+void derive_jacobians(ir::System& s);
+
+/// The tangent form, for models too large for the unrolled Jacobians: dG and
+/// dY, one directional derivative of G = F - M a (a held) and of the outputs
+/// along the seed symbols [dq, dq', du]. Needs M a.
+void derive_tangent(ir::System& s);
+
+/// C = [∂y/∂q, ∂y/∂q'] and D = ∂y/∂u: the linear model's output matrices.
+void output_jacobians(ir::System& s);
+
+/// The derivatives of M, F and the Jacobians with respect to each parameter of
+/// `params` (indices into s.params, in that order; sensitivities of the linear
+/// model, docs/linearization.md). Needs derive_jacobians.
+void parameter_derivatives(ir::System& s, const std::vector<std::size_t>& params);
+
+} // namespace yamsc::passes
