@@ -19,9 +19,9 @@
 #include <yamsc/csv.hpp>
 #include <yamsc/linear_view.hpp>
 #include <yamsc/modal.hpp>
+#include <yamsc/second_order.hpp>
 #include <yamsc/simulation.hpp>
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -74,14 +74,19 @@ std::vector<double> inputs_of(const runtime::ModelView& v, const std::vector<Ass
                       u, "input");
 }
 
-using Dense = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-
-std::vector<std::vector<double>> rows(const Dense& m) {
-    std::vector<std::vector<double>> out(static_cast<std::size_t>(m.rows()));
-    for (Eigen::Index i = 0; i < m.rows(); ++i)
-        for (Eigen::Index j = 0; j < m.cols(); ++j)
-            out[static_cast<std::size_t>(i)].push_back(m(i, j));
+/// The rows of a row-major nrow x ncol matrix.
+std::vector<std::vector<double>> rows(const std::vector<double>& m, int nrow, int ncol) {
+    std::vector<std::vector<double>> out(static_cast<std::size_t>(nrow));
+    for (int i = 0; i < nrow; ++i)
+        for (int j = 0; j < ncol; ++j)
+            out[static_cast<std::size_t>(i)].push_back(m[static_cast<std::size_t>(i * ncol + j)]);
     return out;
+}
+
+double max_abs(const std::vector<double>& v) {
+    double m = 0;
+    for (double x : v) m = std::max(m, std::fabs(x));
+    return m;
 }
 
 /// The model's `linearize` point evaluated at the bound parameters, then
@@ -314,40 +319,22 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     std::vector<double> q, qd, u;
     operating_point(*loaded, o, q, qd, u);
     const double t = 0.0;
-    const double* up = nu ? u.data() : nullptr;
 
-    Dense M(nq, nq), dq(nq, nq), dqd(nq, nq), du(nq, std::max(nu, 1));
-    Eigen::VectorXd F(nq);
-    v.mass_matrix(t, q.data(), up, M.data());
-    v.forcing(t, q.data(), qd.data(), up, F.data());
-    v.jacobians(t, q.data(), qd.data(), up, dq.data(), dqd.data(), du.data());
-    Eigen::LDLT<Eigen::MatrixXd> ldlt(M);
-    Eigen::VectorXd qdd = ldlt.solve(F);
-    std::vector<double> x0 = q;
-    x0.insert(x0.end(), qd.begin(), qd.end());
-    std::vector<double> A = runtime::state_matrix_from_view(v, x0, u, t);
-    // Linear matrices of eq. 25 at the point: M0 δq'' + C0 δq' + K0 δq = Q0 δu, from the
-    // state matrix so that K0 includes -∂(M q''0)/∂q when q''0 != 0.
-    Dense C0 = -dqd, Q0 = du.leftCols(nu);
-    Dense A_lower(nq, nq);
-    for (int i = 0; i < nq; ++i)
-        for (int j = 0; j < nq; ++j)
-            A_lower(i, j) = A[static_cast<std::size_t>((nq + i) * 2 * nq + j)];
-    Dense K0 = -(M * A_lower);
-    Dense B = Dense::Zero(2 * nq, nu);
-    if (nu) B.bottomRows(nq) = ldlt.solve(Eigen::MatrixXd(Q0));
-    std::vector<runtime::Mode> modes = runtime::modal_analysis(A, nq);
-    double residual = qdd.cwiseAbs().maxCoeff();
+    const runtime::SecondOrderModel lm = runtime::second_order_model(v, q, qd, u, t);
+    const std::vector<runtime::Mode>& modes = lm.modes;
+    const double residual = lm.equilibrium_residual;
 
     if (o.json) {
-        Dense Am = Eigen::Map<Dense>(A.data(), 2 * nq, 2 * nq);
         out << "{\"dofs\":" << json::strings(v.dof_names)
-            << ",\"inputs\":" << json::strings(v.input_names) << ",\"M0\":" << json::matrix(rows(M))
-            << ",\"C0\":" << json::matrix(rows(C0)) << ",\"K0\":" << json::matrix(rows(K0))
-            << ",\"Q0\":" << json::matrix(rows(Q0)) << ",\"A\":" << json::matrix(rows(Am))
-            << ",\"B\":" << json::matrix(rows(B)) << ",\"q0\":" << json::array(q)
+            << ",\"inputs\":" << json::strings(v.input_names)
+            << ",\"M0\":" << json::matrix(rows(lm.M0, nq, nq))
+            << ",\"C0\":" << json::matrix(rows(lm.C0, nq, nq))
+            << ",\"K0\":" << json::matrix(rows(lm.K0, nq, nq))
+            << ",\"Q0\":" << json::matrix(rows(lm.Q0, nq, nu))
+            << ",\"A\":" << json::matrix(rows(lm.A, 2 * nq, 2 * nq))
+            << ",\"B\":" << json::matrix(rows(lm.B, 2 * nq, nu)) << ",\"q0\":" << json::array(q)
             << ",\"qd0\":" << json::array(qd) << ",\"u0\":" << json::array(u)
-            << ",\"residual\":" << json::array(std::vector<double>(F.data(), F.data() + nq))
+            << ",\"residual\":" << json::array(lm.F0)
             << ",\"equilibrium_residual\":" << json::number(residual) << ",\"modes\":[";
         for (std::size_t i = 0; i < modes.size(); ++i) {
             const auto& m = modes[i];
@@ -360,7 +347,7 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     }
     if (residual > 1e-9)
         err << "yamsc: warning: the operating point is not an equilibrium (max |q''| = " << residual
-            << ", max |F(q0, q0', u0)| = " << F.cwiseAbs().maxCoeff()
+            << ", max |F(q0, q0', u0)| = " << max_abs(lm.F0)
             << "); the linear model is about a moving point\n";
     char line[160];
     out << "mode  frequency [Hz]  damping ratio  shape (largest DOF)\n";
