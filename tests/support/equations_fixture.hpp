@@ -1,7 +1,7 @@
 #pragma once
 // Test support: derive a model file's equations in-process, evaluate them with
 // the exact DAG evaluator, and load its generated code compiled on the fly.
-#include "driver/jit.hpp"
+#include "analysis/jit.hpp"
 #include "driver/pipeline.hpp"
 #include "lower/lower.hpp"
 #include "passes/passes.hpp"

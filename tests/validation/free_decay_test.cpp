@@ -5,7 +5,7 @@
 // 1 % (nonlinear) and 1.5 % (linear) on every DOF channel, R^2 above 0.99. The numbers
 // measured are much better (docs/validation.md); the tight bounds below catch a
 // regression long before the targets would.
-#include "driver/svg_plot.hpp"
+#include "analysis/svg_plot.hpp"
 #include "validation_support.hpp"
 
 #include <yamsc/atomic_file.hpp>

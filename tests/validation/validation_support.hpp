@@ -1,9 +1,9 @@
 #pragma once
 // Shared by the validation tests: the reference decks, running yamsc's commands in
 // process, and reading numbers out of their text.
-#include "driver/channels.hpp"
+#include "analysis/channels.hpp"
 #include "driver/commands.hpp"
-#include "driver/compare.hpp"
+#include "analysis/compare.hpp"
 
 #include <doctest/doctest.h>
 

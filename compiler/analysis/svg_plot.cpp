@@ -1,5 +1,5 @@
 // SVG line plots of time series (see svg_plot.hpp).
-#include "driver/svg_plot.hpp"
+#include "analysis/svg_plot.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Reading an OpenFAST deck: the `.fst` glue-code file (optional) and the ElastoDyn
 // main file, with every entry accounted for (see openfast_deck.hpp).
-#include "driver/openfast_deck.hpp"
+#include "openfast/deck.hpp"
 
 #include "beam/elastodyn_file.hpp"
 #include "driver/files.hpp"

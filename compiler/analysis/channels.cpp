@@ -1,5 +1,5 @@
 // OpenFAST channel names and units, and tables of simulation columns.
-#include "driver/channels.hpp"
+#include "analysis/channels.hpp"
 
 #include "diag/diagnostics.hpp"
 #include "driver/bindings.hpp"

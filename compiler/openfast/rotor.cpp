@@ -1,5 +1,5 @@
 // Lumped rigid rotor and tower of an ElastoDyn deck (see openfast_rotor.hpp).
-#include "driver/openfast_rotor.hpp"
+#include "openfast/rotor.hpp"
 
 #include "beam/elastodyn_file.hpp"
 #include "driver/files.hpp"

@@ -1,6 +1,6 @@
-#include "driver/campbell.hpp"
+#include "analysis/campbell.hpp"
 
-#include "driver/svg_plot.hpp"
+#include "analysis/svg_plot.hpp"
 #include "driver/values.hpp"
 
 #include <algorithm>

@@ -5,7 +5,7 @@
 // side-side DOF points the other way, so `Q_TSS1 = -q_ss1`. The shaft frame is turned
 // about y by -ShftTilt (ElastoDyn's negative tilt raises the upwind rotor) and the rotor
 // spins about its +x axis (clockwise seen from upwind), blade 1 along +z at azimuth 0.
-#include "driver/openfast_model.hpp"
+#include "openfast/model.hpp"
 
 #include <cctype>
 #include <charconv>

@@ -3,7 +3,7 @@
 // the way ElastoDyn discretizes them (so that the model carries the same mass):
 // BldNodes (TwrNodes) equal elements, the mass density interpolated linearly at the
 // element centres, times the file's mass adjustment factor, lumped there.
-#include "driver/openfast_deck.hpp"
+#include "openfast/deck.hpp"
 
 #include <array>
 #include <optional>

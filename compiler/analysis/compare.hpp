@@ -2,7 +2,7 @@
 // A simulation against a reference time series (an OpenFAST output converted to
 // CSV, or any table with a time column): the reference's channels found in the
 // simulation are interpolated onto common times and scored.
-#include "driver/channels.hpp"
+#include "analysis/channels.hpp"
 
 #include <string>
 #include <vector>

@@ -1,8 +1,8 @@
 #pragma once
 // The `.mbd` text of an ElastoDyn turbine (docs/openfast.md): a template model whose
 // bodies, joints and DOFs follow ElastoDyn's flags and whose loads are inputs.
-#include "driver/openfast_deck.hpp"
-#include "driver/openfast_rotor.hpp"
+#include "openfast/deck.hpp"
+#include "openfast/rotor.hpp"
 
 #include <map>
 #include <optional>

@@ -1,5 +1,5 @@
 // Reading reference time series and scoring a simulation against them.
-#include "driver/compare.hpp"
+#include "analysis/compare.hpp"
 
 #include "driver/bindings.hpp"
 

@@ -1,4 +1,4 @@
-#include "driver/jit.hpp"
+#include "analysis/jit.hpp"
 
 #include "codegen/emit.hpp"
 #include "codegen/module.hpp"
