@@ -34,17 +34,17 @@
 // Operations per call, worst case: the code is straight-line (loops of fixed
 // length only), so every call does exactly these (the LDL^T solves of rhs and
 // rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      16 adds, 36 muls, 0 divs, 4 calls
-//   forcing          30 adds, 88 muls, 0 divs, 4 calls
-//   jacobians        50 adds, 167 muls, 0 divs, 4 calls
+//   mass_matrix      18 adds, 39 muls, 0 divs, 6 calls
+//   forcing          32 adds, 91 muls, 0 divs, 6 calls
+//   jacobians        65 adds, 199 muls, 0 divs, 6 calls
 //   outputs          0 adds, 1 muls, 0 divs, 0 calls
-//   rhs              44 adds, 117 muls, 3 divs, 4 calls
-//   rhs_jacobian     92 adds, 263 muls, 11 divs, 4 calls
-//   linear           84 adds, 256 muls, 3 divs, 4 calls
-//   state_space      98 adds, 270 muls, 17 divs, 4 calls
+//   rhs              47 adds, 121 muls, 3 divs, 6 calls
+//   rhs_jacobian     108 adds, 296 muls, 11 divs, 6 calls
+//   linear           100 adds, 289 muls, 3 divs, 6 calls
+//   state_space      114 adds, 303 muls, 17 divs, 6 calls
 //   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         206 adds, 489 muls, 13 divs, 16 calls
+//   rk4_step         218 adds, 505 muls, 13 divs, 24 calls
 
 #ifndef nrel5mw_land_2dof_YAMSC_GENERATED_H
 #define nrel5mw_land_2dof_YAMSC_GENERATED_H

@@ -237,6 +237,7 @@ private:
         const auto& nodes = parent->flex->sid->nodes;
         Step st;
         st.kind = Step::Kind::node;
+        st.exact_rotation = true; // `elastic_rotation = exact` unless the joint says otherwise
         st.loc = j.parent.loc;
         if (j.parent.kind == ast::PointRef::Kind::tip) {
             if (nodes.empty()) {

@@ -46,9 +46,11 @@ struct Step {
     Vec vector;          // offset: the displacement; translate/rotate: the axis (not normalised)
     int axis_index = -1; // 0..2 when the axis is a signed coordinate axis, else -1
     int axis_sign = 1;
-    Expr arg;                    // translate/rotate: distance or angle, a function of q, u, t, p
-    int node = -1;               // node: index into the parent's SID nodes
-    bool exact_rotation = false; // node: rotation matrices of the slopes, not I + skew(psi q)
+    Expr arg;      // translate/rotate: distance or angle, a function of q, u, t, p
+    int node = -1; // node: index into the parent's SID nodes
+    /// node: rotation matrices of the slopes (`exact`, the default), or the rotation
+    /// nearest to I + skew(psi q) (`small`)
+    bool exact_rotation = false;
     /// node, exact rotation: the axes (0 x, 1 y, 2 z) in the order the slope rotations
     /// apply, each about the frame the previous one left (`exact` = `exact_xyz`).
     std::array<int, 3> rotation_order{{0, 1, 2}};

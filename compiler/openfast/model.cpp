@@ -371,8 +371,9 @@ private:
         out_ << "rigid nacelle {\n    mass = NacMass\n    com = (NacCMxn, NacCMyn, NacCMzn)\n"
                 "    inertia = (0, 0, NacYIner - NacMass * (NacCMxn^2 + NacCMyn^2))\n}\n";
         // ElastoDyn turns the tower top by an orthonormal matrix of the slopes (its
-        // SmllRotTrans), which `exact` matches; `small` (I + skew) is not orthonormal and
-        // costs ~0.4 % of accuracy in a 2 m free decay.
+        // SmllRotTrans) with the slopes' rates as angular velocity, which `exact` (the
+        // default, written out) matches closest: 0.03 % in a 2 m free decay, 0.08 % with
+        // `small` (docs/validation.md).
         std::string yaw_steps = flexible_tower() ? "elastic_rotation = exact" : top_at;
         if (on("YawDOF"))
             yaw_steps += (yaw_steps.empty() ? "" : "; ") + std::string("rotate z nac_yaw");

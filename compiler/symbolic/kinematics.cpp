@@ -64,6 +64,41 @@ FrameState rotate_about(const FrameState& f, const Vec3& e, const ex& th, Symbol
                         partials_along(th, e, symbols));
 }
 
+/// The elastic rotation θ of a node as the rotation nearest to I + [θ]× (its
+/// orthonormal polar factor, ElastoDyn's small-angle rotation matrix): with
+/// s = sqrt(1 + θ·θ), R = (I + [θ]×)/s + θθᵀ/(s(s+1)), a rotation by atan|θ|
+/// about θ. I + [θ]× itself is not a rotation (its columns are √(1 + |θ|²)
+/// long), and Kane's method on it gives M and F that no kinetic energy shares.
+/// The angular velocity is R's own, vee(Rᵀ Ṙ) = W θ̇ in the new axes, with
+/// W = I/s - θθᵀ/(s²(s+1)) - [θ]×/(s(s+1)), so M and F follow from one T.
+FrameState rotate_small(const FrameState& f, const NodeMotion& node, Symbols& symbols) {
+    const Vec3& th = node.theta;
+    const ex s = sqrt(1 + dot(th, th));
+    const ex a = pow(s, -1), c = pow(s * (s + 1), -1);
+    Mat3 rot, W;
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) {
+            const ex diagonal = i == j ? a : ex(0);
+            rot.m[i][j] = diagonal + c * th[i] * th[j];
+            W.m[i][j] = diagonal - a * c * th[i] * th[j];
+        }
+    // [θ]× entries: (i, j, k, sign) with [θ]×_ij = sign θ_k.
+    const int skew[6][4] = {{0, 1, 2, -1}, {0, 2, 1, 1},  {1, 0, 2, 1},
+                            {1, 2, 0, -1}, {2, 0, 1, -1}, {2, 1, 0, 1}};
+    for (const auto& e : skew) {
+        const auto i = static_cast<std::size_t>(e[0]), j = static_cast<std::size_t>(e[1]),
+                   k = static_cast<std::size_t>(e[2]);
+        rot.m[i][j] += e[3] * a * th[k];
+        W.m[i][j] -= e[3] * c * th[k];
+    }
+    const Vec3 w_rel = W * node.thetad;
+    Vec3 alpha_rel;
+    for (std::size_t i = 0; i < 3; ++i) alpha_rel[i] = symbols.time_derivative(w_rel[i], false);
+    std::map<int, Vec3> dw_dqd;
+    for (const auto& [r, dth] : node.dtheta_dq) dw_dqd.emplace(r, W * dth);
+    return rotate_frame(f, rot, w_rel, alpha_rel, dw_dqd);
+}
+
 } // namespace
 
 FrameState move_origin(const FrameState& f, const Vec3& p, const Vec3& pd, const Vec3& pdd,
@@ -126,17 +161,9 @@ FrameState apply_step(const FrameState& f, const model::Step& step, Symbols& sym
                 e[i] = 1;
                 n = rotate_about(n, e, node.theta[i], symbols);
             }
-        } else {
-            // Linearised rotation I + skew(θ), θ = ψ q (paper Appendix D2).
-            Mat3 rot = Mat3::identity();
-            const Vec3& th = node.theta;
-            rot.m[0][1] = -th[2];
-            rot.m[0][2] = th[1];
-            rot.m[1][0] = th[2];
-            rot.m[1][2] = -th[0];
-            rot.m[2][0] = -th[1];
-            rot.m[2][1] = th[0];
-            n = rotate_frame(n, rot, node.thetad, Vec3{}, node.dtheta_dq);
+        } else if (!(node.theta[0].is_zero() && node.theta[1].is_zero() &&
+                     node.theta[2].is_zero())) {
+            n = rotate_small(n, node, symbols);
         }
         if (node.orientation) n = rotate_frame(n, *node.orientation, Vec3{}, Vec3{}, {});
         return n;

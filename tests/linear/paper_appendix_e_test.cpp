@@ -332,6 +332,38 @@ TEST_CASE("nrel5mw_land_3dof: geometric stiffness and frequencies (paper 4.4, 4.
     CHECK(f[0] == doctest::Approx(0.32257).epsilon(1e-4)); // pinned: no paper value
 }
 
+/// What writing cos(nu q) = 1 in the equations changes, derived here on its
+/// own: the RNA's centre of mass (x, z) from the tower top, which moves by q and
+/// turns by nu q about y, is at p = (q + x c + z s, 0, L + z c - x s) in the
+/// platform's axes, c = cos(nu q), s = sin(nu q). The platform pitches by phi
+/// about y, so T = M_N (|p|^2 phi'^2 + 2 (p_z dp_x/dq - p_x dp_z/dq) phi' q' +
+/// ...) / 2: M23 gets M_N (p_z dp_x/dq - p_x dp_z/dq), and F2 the Coriolis term
+/// -d(M22)/dq phi' q' = -2 M_N p.dp/dq phi' q'. Both exact (M23 has z c and
+/// p.dp/dq has x c), then to second order in nu as ours (the Taylor polynomial)
+/// and as the paper's (c = 1, s = nu q, then to second order). Returned: ours
+/// minus the paper's.
+struct CosineTerms {
+    ex M23, F2_phid_qd;
+};
+
+CosineTerms cosine_terms(const ex& M_N, const ex& x, const ex& z, const ex& L, const ex& nu,
+                         const ex& q) {
+    const symbol n("n"); // nu, with q held, for the expansion
+    const symbol& qs = ex_to<symbol>(q);
+    const ex c = cos(n * q), s = sin(n * q);
+    const ex px = q + x * c + z * s, pz = L + z * c - x * s;
+    const ex M23 = M_N * (pz * px.diff(qs) - px * pz.diff(qs));
+    const ex F2 = -2 * M_N * (px * px.diff(qs) + pz * pz.diff(qs));
+    auto second_order = [&](const ex& e) { // (series leaves a polynomial whole)
+        const ex p = series_to_poly(e.series(n == 0, 3)).expand();
+        ex out = 0;
+        for (int k = 0; k <= 2; ++k) out += p.coeff(n, k) * pow(nu, k);
+        return out.expand();
+    };
+    auto paper = [&](const ex& e) { return second_order(e.subs(exmap{{c, 1}, {s, n * q}})); };
+    return {second_order(M23) - paper(M23), second_order(F2) - paper(F2)};
+}
+
 TEST_CASE("nrel5mw_floating_3dof: approximated M and F against Appendix E3 (E27-E45)") {
     const Equations eq = yamsc::test::derive_file("models/nrel5mw_floating_3dof.mbd");
     auto s = [&](const std::string& n) { return sym(eq, n); };
@@ -350,9 +382,9 @@ TEST_CASE("nrel5mw_floating_3dof: approximated M and F against Appendix E3 (E27-
     // the surge-pitch coupling of a mass m at height h is m h. A sign convention
     // or typo; `Mdz` below is the paper's symbol, -tower_mdCM_3_1 makes it ours.
     const ex Mdz = -M_dTz;
-    // Terms the paper drops, all from cos(nu_y q_T) = 1 - nu_y^2 q_T^2 / 2 in the
-    // RNA's position (kept at our second order in nu_y; the paper keeps the sine's
-    // second-order terms but writes the cosine as 1).
+    // Terms the paper drops, all from cos(nu_y q_T) = 1 - nu_y^2 q_T^2 / 2 where
+    // the exact equations have it (kept at our second order in nu_y; the paper
+    // keeps the sine's second-order terms but writes the cosine as 1).
     const ex half_nu2_q2 = nu * nu * q * q / 2;
 
     CHECK(same(eq.M[0][0], M_F + M_T + M_N, fixed)); // E27
@@ -375,13 +407,17 @@ TEST_CASE("nrel5mw_floating_3dof: approximated M and F against Appendix E3 (E27-
                                   2 * nu * q * (z * q - L_T * x));
     CHECK_FALSE(same(eq.M[1][1], E30_printed, fixed));
     CHECK(same(eq.M[1][1], E30 - M_N * nu * nu * q * q * (L_T * z + x * q), fixed));
-    // E31 has nu_y^2 z_NG q_T^2 where ours (and the derivation: the cosine's
-    // -z_NG nu^2 q^2 / 2 in the RNA's height) has half of it.
+    // E31 has nu_y^2 z_NG q_T^2 where ours has half of it: not a misprint, but
+    // the cosine again. Besides the M_N nu^2 z_NG q_T^2 of its sine terms, the
+    // exact M23 has M_N z_NG cos(nu_y q_T) (the RNA's height), whose
+    // -nu^2 q^2 / 2 halves it; the paper writes that cosine as 1.
+    const CosineTerms cosine = cosine_terms(M_N, x, z, L_T, nu, q);
+    CHECK(same(cosine.M23, -M_N * z * half_nu2_q2, {}));
     const ex E31 = C_r +
                    (J_yN + M_N * (x * x + z * z + L_T * z + nu * q * (z * q - L_T * x))) * nu +
                    M_N * (L_T + z);
     CHECK_FALSE(same(eq.M[1][2], E31, fixed));
-    CHECK(same(eq.M[1][2], E31 - M_N * z * half_nu2_q2, fixed));
+    CHECK(same(eq.M[1][2], E31 + cosine.M23, fixed));
     const ex E32 =
         M_e + M_N + (J_yN + M_N * (x * x - 2 * x * q + z * z)) * nu * nu + 2 * M_N * nu * z;
     CHECK(same(eq.M[2][2], E32, fixed));
@@ -406,9 +442,12 @@ TEST_CASE("nrel5mw_floating_3dof: approximated M and F against Appendix E3 (E27-
     CHECK(same(eq.F[0], E33_36 - half_nu2_q2 * (f_a + M_N * phid * phid * (x + z * phi)), fixed));
     // E37-E40. E38 prints phi_y q_T' for phi_y' q_T' (a Coriolis term: it is the
     // -2 m (omega x v) of the RNA, and E42 has the same bracket with phi_y'^2).
-    // Beyond the cosine terms, ours has 3 M_N nu_y^2 x_NG q_T^2 phi' q_T' where
-    // E38 gives 2: the cosine's -x_NG nu^2 q^2 / 2 in the RNA's fore-aft position,
-    // differentiated, adds M_N nu^2 x q^2 phi' q'.
+    // Ours has 3 M_N nu_y^2 x_NG q_T^2 phi' q_T' where E38 gives 2: not a
+    // misprint either, but the cosine's -nu^2 q^2 / 2 in the x_NG cos(nu_y q_T)
+    // of p.dp/dq (the RNA's fore-aft coordinate), which adds M_N nu^2 x q^2
+    // phi' q' to the Coriolis term; the other cosine terms are those of gravity
+    // and thrust.
+    CHECK(same(cosine.F2_phid_qd, M_N * nu * nu * x * q * q, {}));
     const ex E37_40 = tau_H + M_N * nu * nu * (L_T * x - z * q) * qd * qd -
                       2 * M_N *
                           (q + x + nu * (2 * z * q - L_T * x) - nu * nu * q * (L_T * z + x * q)) *
@@ -418,7 +457,7 @@ TEST_CASE("nrel5mw_floating_3dof: approximated M and F against Appendix E3 (E27-
                       f_a * (L_T + z_NR + th * x_NR + th * q + nu * q * q - L_T * th * nu * q);
     CHECK_FALSE(same(eq.F[1], E37_40, fixed));
     CHECK(same(eq.F[1],
-               E37_40 + M_N * nu * nu * x * q * q * phid * qd -
+               E37_40 + cosine.F2_phid_qd * phid * qd -
                    half_nu2_q2 * (M_N * g * (x + z * phi) + f_a * (L_T + th * q)),
                fixed));
     // E41-E45.
