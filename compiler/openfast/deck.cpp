@@ -46,23 +46,35 @@ bool is_key(const Token& t) {
 // How `from-openfast` treats each entry of the ElastoDyn main file.
 enum class Use { dof, number, file, ignored, two_bladed, furling, optional_number };
 
+/// The numeric entries of the ElastoDyn main file that the model uses, in ElastoDyn's
+/// spelling (without "()"): the one list both the classification of the entries
+/// and their names in OpenFastDeck::num come from.
+const std::vector<std::string>& numeric_entries() {
+    static const std::vector<std::string> names{
+        "OoPDefl",   "IPDefl",    "BlPitch1",  "BlPitch2",  "BlPitch3",  "Azimuth",   "RotSpeed",
+        "NacYaw",    "TTDspFA",   "TTDspSS",   "PtfmSurge", "PtfmSway",  "PtfmHeave", "PtfmRoll",
+        "PtfmPitch", "PtfmYaw",   "NumBl",     "TipRad",    "HubRad",    "PreCone1",  "PreCone2",
+        "PreCone3",  "HubCM",     "OverHang",  "ShftTilt",  "NacCMxn",   "NacCMyn",   "NacCMzn",
+        "Twr2Shft",  "TowerHt",   "TowerBsHt", "PtfmCMxt",  "PtfmCMyt",  "PtfmCMzt",  "PtfmRefzt",
+        "TipMass1",  "TipMass2",  "TipMass3",  "HubMass",   "HubIner",   "GenIner",   "NacMass",
+        "NacYIner",  "YawBrMass", "PtfmMass",  "PtfmRIner", "PtfmPIner", "PtfmYIner", "BldNodes",
+        "GBRatio",   "DTTorSpr",  "DTTorDmp",  "TwrNodes"};
+    return names;
+}
+
+/// Numeric entries the model uses when present (defaults otherwise).
+const std::vector<std::string>& optional_numeric_entries() {
+    static const std::vector<std::string> names{"Gravity",    "AzimB1Up",   "GBoxEff",
+                                                "PtfmXYIner", "PtfmYZIner", "PtfmXZIner"};
+    return names;
+}
+
 const std::map<std::string, Use>& elastodyn_keys() {
     static const std::map<std::string, Use> keys = [] {
         std::map<std::string, Use> k;
         for (const std::string& f : elastodyn_dof_flags()) k[canonical(f)] = Use::dof;
-        for (const char* n :
-             {"OoPDefl",   "IPDefl",    "BlPitch1",  "BlPitch2",  "BlPitch3",  "Azimuth",
-              "RotSpeed",  "NacYaw",    "TTDspFA",   "TTDspSS",   "PtfmSurge", "PtfmSway",
-              "PtfmHeave", "PtfmRoll",  "PtfmPitch", "PtfmYaw",   "NumBl",     "TipRad",
-              "HubRad",    "PreCone1",  "PreCone2",  "PreCone3",  "HubCM",     "OverHang",
-              "ShftTilt",  "NacCMxn",   "NacCMyn",   "NacCMzn",   "Twr2Shft",  "TowerHt",
-              "TowerBsHt", "PtfmCMxt",  "PtfmCMyt",  "PtfmCMzt",  "PtfmRefzt", "TipMass1",
-              "TipMass2",  "TipMass3",  "HubMass",   "HubIner",   "GenIner",   "NacMass",
-              "NacYIner",  "YawBrMass", "PtfmMass",  "PtfmRIner", "PtfmPIner", "PtfmYIner",
-              "BldNodes",  "GBRatio",   "DTTorSpr",  "DTTorDmp",  "TwrNodes"})
-            k[canonical(n)] = Use::number;
-        for (const char* n :
-             {"Gravity", "AzimB1Up", "GBoxEff", "PtfmXYIner", "PtfmYZIner", "PtfmXZIner"})
+        for (const std::string& n : numeric_entries()) k[canonical(n)] = Use::number;
+        for (const std::string& n : optional_numeric_entries())
             k[canonical(n)] = Use::optional_number;
         for (const char* n : {"BldFile1", "BldFile2", "BldFile3", "TwrFile"})
             k[canonical(n)] = Use::file;
@@ -295,18 +307,8 @@ private:
     static std::string name_of(const std::string& key) {
         static const std::map<std::string, std::string> names = [] {
             std::map<std::string, std::string> n;
-            for (const char* s :
-                 {"Gravity",   "OoPDefl",   "IPDefl",     "BlPitch1",   "BlPitch2",  "BlPitch3",
-                  "Azimuth",   "RotSpeed",  "NacYaw",     "TTDspFA",    "TTDspSS",   "PtfmSurge",
-                  "PtfmSway",  "PtfmHeave", "PtfmRoll",   "PtfmPitch",  "PtfmYaw",   "NumBl",
-                  "TipRad",    "HubRad",    "PreCone1",   "PreCone2",   "PreCone3",  "HubCM",
-                  "OverHang",  "ShftTilt",  "NacCMxn",    "NacCMyn",    "NacCMzn",   "Twr2Shft",
-                  "TowerHt",   "TowerBsHt", "PtfmCMxt",   "PtfmCMyt",   "PtfmCMzt",  "PtfmRefzt",
-                  "TipMass1",  "TipMass2",  "TipMass3",   "HubMass",    "HubIner",   "GenIner",
-                  "NacMass",   "NacYIner",  "YawBrMass",  "PtfmMass",   "PtfmRIner", "PtfmPIner",
-                  "PtfmYIner", "BldNodes",  "GBRatio",    "DTTorSpr",   "DTTorDmp",  "TwrNodes",
-                  "AzimB1Up",  "GBoxEff",   "PtfmXYIner", "PtfmYZIner", "PtfmXZIner"})
-                n[canonical(s)] = s;
+            for (const std::string& s : numeric_entries()) n[canonical(s)] = s;
+            for (const std::string& s : optional_numeric_entries()) n[canonical(s)] = s;
             return n;
         }();
         auto it = names.find(key);
