@@ -2,11 +2,11 @@
 #include "data/file_source.hpp"
 #include "driver/bindings.hpp"
 #include "driver/commands.hpp"
+#include "driver/outputs.hpp"
+#include "model/names.hpp"
 #include "openfast/deck.hpp"
 #include "openfast/model.hpp"
 #include "openfast/rotor.hpp"
-#include "driver/outputs.hpp"
-#include "model/names.hpp"
 #include "parse/parser.hpp"
 
 #include <yamsc/atomic_file.hpp>

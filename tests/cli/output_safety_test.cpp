@@ -48,18 +48,6 @@ Run yamsc(const std::string& dir, const std::string& args) {
     return {status, read_file(log + ".out"), read_file(log + ".err")};
 }
 
-/// Names in `dir` that contain `.tmp.` (the writer's temporary files).
-std::vector<std::string> temporaries(const std::string& dir) {
-    std::vector<std::string> out;
-    if (DIR* d = opendir(dir.c_str())) {
-        while (dirent* e = readdir(d))
-            if (std::string(e->d_name).find(".tmp.") != std::string::npos)
-                out.emplace_back(e->d_name);
-        closedir(d);
-    }
-    return out;
-}
-
 mode_t file_type(const std::string& path) {
     struct stat st {};
     return ::lstat(path.c_str(), &st) == 0 ? (st.st_mode & S_IFMT) : 0;

@@ -5,6 +5,8 @@
 // depend on the working directory, the output folder or the file times; and no
 // temporary file is left behind, whether the run succeeds or fails. Inputs that
 // are not files (a folder, /dev/zero), as the model or as its data, are errors too.
+#include "test_files.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cstdint>
@@ -18,6 +20,8 @@
 #include <vector>
 
 namespace {
+
+using test_support::temporaries;
 
 const std::string source_dir = YAMSC_SOURCE_DIR;
 // A space in the folder name: depfiles must escape it.
@@ -65,18 +69,6 @@ std::string digest_in(const std::string& text) {
     if (at == std::string::npos) return "(none)";
     at += tag.size();
     return text.substr(at, text.find('"', at) - at);
-}
-
-/// Names in `dir` that contain `.tmp.` (the atomic writer's temporary files).
-std::vector<std::string> temporaries(const std::string& dir) {
-    std::vector<std::string> out;
-    if (DIR* d = opendir(dir.c_str())) {
-        while (dirent* e = readdir(d))
-            if (std::string(e->d_name).find(".tmp.") != std::string::npos)
-                out.emplace_back(e->d_name);
-        closedir(d);
-    }
-    return out;
 }
 
 void fresh_dir(const std::string& dir) {

@@ -1,13 +1,16 @@
 #pragma once
 // Files and commands as the tests that run yamsc or a compiler need them:
 // a fresh scratch folder under the test build folder, whole-file reads and
-// writes, and a shell command's exit status.
+// writes, a shell command's exit status, and the writer's temporary files left in a
+// folder.
 #include <cstdlib>
+#include <dirent.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <vector>
 
 namespace test_support {
 
@@ -41,6 +44,18 @@ inline std::string replace_all(std::string s, const std::string& from, const std
 inline int exit_status(const std::string& command) {
     const int status = std::system(command.c_str());
     return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// Names in `dir` that contain `.tmp.` (the writer's temporary files).
+inline std::vector<std::string> temporaries(const std::string& dir) {
+    std::vector<std::string> out;
+    if (DIR* d = opendir(dir.c_str())) {
+        while (dirent* e = readdir(d))
+            if (std::string(e->d_name).find(".tmp.") != std::string::npos)
+                out.emplace_back(e->d_name);
+        closedir(d);
+    }
+    return out;
 }
 
 } // namespace test_support

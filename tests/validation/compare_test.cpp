@@ -1,7 +1,7 @@
 // Reference tables, the error measures of --compare, OpenFAST channel naming and the SVG
 // writer, on data whose answers are known by hand.
-#include "driver/bindings.hpp"
 #include "analysis/svg_plot.hpp"
+#include "driver/bindings.hpp"
 #include "validation_support.hpp"
 
 #include <cmath>

@@ -2,8 +2,8 @@
 // Shared by the validation tests: the reference decks, running yamsc's commands in
 // process, and reading numbers out of their text.
 #include "analysis/channels.hpp"
-#include "driver/commands.hpp"
 #include "analysis/compare.hpp"
+#include "driver/commands.hpp"
 
 #include <doctest/doctest.h>
 
