@@ -90,17 +90,17 @@
 // Operations per call, worst case: the code is straight-line (loops of fixed
 // length only), so every call does exactly these (the LDL^T solves of rhs and
 // rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      142 adds, 543 muls, 0 divs, 2 calls
-//   forcing          167 adds, 540 muls, 0 divs, 2 calls
+//   mass_matrix      146 adds, 557 muls, 0 divs, 2 calls
+//   forcing          167 adds, 538 muls, 0 divs, 2 calls
 //   jacobians        365 adds, 1516 muls, 0 divs, 2 calls
 //   outputs          0 adds, 2 muls, 0 divs, 0 calls
-//   rhs              309 adds, 1059 muls, 6 divs, 2 calls
-//   rhs_jacobian     811 adds, 2823 muls, 24 divs, 8 calls
-//   linear           785 adds, 2833 muls, 6 divs, 8 calls
-//   state_space      845 adds, 2893 muls, 36 divs, 8 calls
+//   rhs              313 adds, 1071 muls, 6 divs, 2 calls
+//   rhs_jacobian     815 adds, 2835 muls, 24 divs, 8 calls
+//   linear           789 adds, 2845 muls, 6 divs, 8 calls
+//   state_space      849 adds, 2905 muls, 36 divs, 8 calls
 //   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         1280 adds, 4267 muls, 25 divs, 8 calls
+//   rk4_step         1296 adds, 4315 muls, 25 divs, 8 calls
 
 #ifndef nrel5mw_land_3dof_YAMSC_GENERATED_H
 #define nrel5mw_land_3dof_YAMSC_GENERATED_H

@@ -1,5 +1,7 @@
 #include "codegen/body.hpp"
 
+#include "codegen/helper_sources.hpp"
+
 #include "codegen/body_plan.hpp"
 
 #include "diag/diagnostics.hpp"
@@ -206,42 +208,7 @@ bool uses_solver(const Module& module) {
 
 std::string solver_helpers_text(const Syntax& syntax, const std::string& linkage) {
     // Mirrors ldlt_factor_count and ldlt_solve_count in printer.cpp.
-    return fmt::format(
-        R"(// In-place LDL^T factorisation of the symmetric positive definite n x n matrix A
-// (row-major; only the lower triangle is read): on return the strict lower
-// triangle holds L (unit diagonal) and the diagonal holds D. No pivoting and no
-// square roots: a mass matrix is positive definite.
-{0}void {1}ldlt_factor({2}* A, int n) {{
-    for (int j = 0; j < n; ++j) {{
-        {2} d = A[j * n + j];
-        for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k] * A[k * n + k];
-        A[j * n + j] = d;
-        for (int i = j + 1; i < n; ++i) {{
-            {2} s = A[i * n + j];
-            for (int k = 0; k < j; ++k) s -= A[i * n + k] * A[j * n + k] * A[k * n + k];
-            A[i * n + j] = s / d;
-        }}
-    }}
-}}
-
-// Solves (L D L^T) X = B in place for the n x m row-major block B.
-{0}void {1}ldlt_solve(const {2}* LD, int n, {2}* B, int m) {{
-    for (int c = 0; c < m; ++c) {{
-        for (int i = 0; i < n; ++i) {{
-            {2} s = B[i * m + c];
-            for (int k = 0; k < i; ++k) s -= LD[i * n + k] * B[k * m + c];
-            B[i * m + c] = s;
-        }}
-        for (int i = 0; i < n; ++i) B[i * m + c] /= LD[i * n + i];
-        for (int i = n - 1; i >= 0; --i) {{
-            {2} s = B[i * m + c];
-            for (int k = i + 1; k < n; ++k) s -= LD[k * n + i] * B[k * m + c];
-            B[i * m + c] = s;
-        }}
-    }}
-}}
-)",
-        linkage, syntax.helper_prefix, syntax.real_type);
+    return ldlt_source(syntax, linkage);
 }
 
 } // namespace yamsc::codegen

@@ -7,8 +7,6 @@
 
 #include <cctype>
 
-#include <map>
-
 namespace yamsc::codegen {
 namespace {
 
@@ -24,43 +22,31 @@ int trailing_primes(const std::string& name, std::string& base) {
     return static_cast<int>(name.size() - end);
 }
 
-/// Every symbol of the equations with its LaTeX name; the accelerations `a`
-/// of dMa_dq are the operating point's q''0. Parameters print before the
-/// coordinates, rates and inputs in a product (rank 0 and 1).
-struct SymbolTable {
-    std::vector<GiNaC::symbol> symbols;
-    std::vector<std::string> names;
-    std::map<std::string, int> ranks;
-
-    Expander expander() const {
-        Expander x(symbols, names);
-        for (const auto& [name, rank] : ranks) x.set_rank(name, rank);
-        return x;
+/// An Expander that knows every symbol of the system by its LaTeX name; the
+/// accelerations `a` of dMa_dq are the operating point's q''0. Parameters print
+/// before the coordinates, rates and inputs in a product (rank 0 and 1).
+Expander expander(const ir::System& s) {
+    using ir::SymbolKind;
+    Expander x(s.graph);
+    x.name({SymbolKind::time, 0}, "t");
+    for (int i = 0; i < s.nq(); ++i) {
+        const std::string& name = s.dofs[static_cast<std::size_t>(i)].name;
+        x.name({SymbolKind::q, i}, symbol_name(name));
+        x.name({SymbolKind::qd, i}, symbol_name(name, 1));
+        x.name({SymbolKind::qdd, i}, symbol_name(name, 2));
     }
-
-    explicit SymbolTable(const symbolic::Equations& eq) {
-        add(eq.t, "t");
-        for (const symbolic::Dof& d : eq.dofs) {
-            add(d.q, symbol_name(d.name));
-            add(d.qd, symbol_name(d.name, 1));
-            add(d.qdd, symbol_name(d.name, 2));
-        }
-        for (const symbolic::InputChannel& u : eq.inputs) {
-            std::string base;
-            const int primes = trailing_primes(u.name, base);
-            add(u.sym, symbol_name(base, primes));
-        }
-        for (const symbolic::Parameter& p : eq.params) add(p.sym, symbol_name(p.name), 0);
-        for (std::size_t i = 0; i < eq.a.size(); ++i)
-            add(eq.a[i], symbol_name(eq.dofs[i].name, 2, "0"));
+    for (int k = 0; k < s.nu(); ++k) {
+        std::string base;
+        const int primes = trailing_primes(s.inputs[static_cast<std::size_t>(k)].name, base);
+        x.name({SymbolKind::input, k}, symbol_name(base, primes));
     }
-
-    void add(const GiNaC::symbol& s, std::string name, int rank = 1) {
-        symbols.push_back(s);
-        ranks[name] = rank;
-        names.push_back(std::move(name));
-    }
-};
+    for (int j = 0; j < s.np(); ++j)
+        x.name({SymbolKind::param, j}, symbol_name(s.params[static_cast<std::size_t>(j)].name), 0);
+    for (int i = 0; i < s.nq(); ++i)
+        x.name({SymbolKind::acceleration, i},
+               symbol_name(s.dofs[static_cast<std::size_t>(i)].name, 2, "0"));
+    return x;
+}
 
 /// The index of entry (i, j) of an n x m matrix: `11` while every index is one
 /// digit, `1,10` otherwise.
@@ -112,7 +98,7 @@ std::string equation(const std::string& lhs, const std::vector<std::string>& ter
 }
 
 /// The terms of `e`, or a note when its expansion is too long to print.
-std::vector<std::string> terms_or_note(Expander& x, const GiNaC::ex& e) {
+std::vector<std::string> terms_or_note(Expander& x, const std::vector<ir::Operand>& e) {
     try {
         return x.terms(e);
     } catch (const latex::TooLong& too_long) {
@@ -120,10 +106,15 @@ std::vector<std::string> terms_or_note(Expander& x, const GiNaC::ex& e) {
     }
 }
 
+/// An entry and its value Σ weight * node.
 struct Entry {
     std::string lhs;
-    GiNaC::ex value;
+    std::vector<ir::Operand> value;
 };
+
+Entry entry(std::string lhs, ir::NodeId value) {
+    return {std::move(lhs), {{value, 1.0}}};
+}
 
 /// An align* block of the entries that are not zero; a sentence when all are.
 std::string block(Expander& x, const std::vector<Entry>& entries, const std::string& all_zero) {
@@ -139,39 +130,39 @@ std::string block(Expander& x, const std::vector<Entry>& entries, const std::str
     return out + "\\end{align*}\n";
 }
 
-std::string equations_of_motion(const symbolic::Equations& eq, Expander& x) {
-    const std::size_t n = eq.dofs.size();
+std::string equations_of_motion(const ir::Matrix& M, const ir::Row& F, Expander& x) {
+    const std::size_t n = F.size();
     std::vector<Entry> mass, forcing;
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = i; j < n; ++j)
-            mass.push_back({"M_{" + index(i, j, n, n) + "}", eq.M[i][j]});
+            mass.push_back(entry("M_{" + index(i, j, n, n) + "}", M[i][j]));
     for (std::size_t i = 0; i < n; ++i)
-        forcing.push_back({"F_{" + std::to_string(i + 1) + "}", eq.F[i]});
+        forcing.push_back(entry("F_{" + std::to_string(i + 1) + "}", F[i]));
     return "Mass matrix (symmetric: $M_{ji} = M_{ij}$; entries not shown are zero):\n" +
            block(x, mass, "The mass matrix is zero.") + "Forcing:\n" +
            block(x, forcing, "The forcing is zero.");
 }
 
-std::string symbols_section(const symbolic::Equations& eq) {
+std::string symbols_section(const ir::System& s) {
     std::string out = "\\subsection*{Symbols}\n\\begin{itemize}\n";
     auto item = [](const std::string& math, const std::string& doc) {
         return "\\item $" + math + "$" + (doc.empty() ? "" : " --- " + escape_text(doc)) + "\n";
     };
     out += "\\item Degrees of freedom $q$, in this order:\n\\begin{itemize}\n";
-    for (const symbolic::Dof& d : eq.dofs) out += item(symbol_name(d.name), d.doc);
+    for (const ir::Dof& d : s.dofs) out += item(symbol_name(d.name), d.doc);
     out += "\\end{itemize}\n";
-    if (!eq.inputs.empty()) {
+    if (!s.inputs.empty()) {
         out += "\\item Inputs $u$:\n\\begin{itemize}\n";
-        for (const symbolic::InputChannel& u : eq.inputs) {
+        for (const ir::InputChannel& u : s.inputs) {
             std::string base;
             const int primes = trailing_primes(u.name, base);
             out += item(symbol_name(base, primes), u.doc);
         }
         out += "\\end{itemize}\n";
     }
-    if (!eq.params.empty()) {
+    if (!s.params.empty()) {
         out += "\\item Parameters, with their defaults:\n\\begin{itemize}\n";
-        for (const symbolic::Parameter& p : eq.params)
+        for (const ir::Parameter& p : s.params)
             out += item(symbol_name(p.name) +
                             (p.value ? " = " + latex::number(*p.value) : std::string()),
                         p.doc);
@@ -180,33 +171,38 @@ std::string symbols_section(const symbolic::Equations& eq) {
     return out + "\\end{itemize}\n";
 }
 
-std::string linear_section(const symbolic::Equations& eq, const symbolic::OperatingPoint& op,
-                           const SymbolTable& table) {
-    const std::size_t n = eq.dofs.size(), nu = eq.inputs.size();
-    Expander at_point = table.expander();
-    at_point.substitute(eq.t, 0);
+std::string linear_section(const ir::System& s) {
+    using ir::SymbolKind;
+    const std::size_t n = s.dofs.size(), nu = s.inputs.size();
+    if (s.dF_dq.size() != n || s.dF_dqd.size() != n || s.dF_du.size() != n || s.dMa_dq.size() != n)
+        throw diag::InternalError("latex: the linear model needs the unrolled Jacobians");
+    const ir::OperatingPoint& op = s.point;
+    Expander at_point = expander(s);
+    at_point.substitute({SymbolKind::time, 0}, 0.0);
     std::vector<Entry> point;
     for (std::size_t i = 0; i < n; ++i) {
-        at_point.substitute(eq.dofs[i].q, op.q[i]);
-        at_point.substitute(eq.dofs[i].qd, op.qd[i]);
-        point.push_back({symbol_name(eq.dofs[i].name, 0, "0"), op.q[i]});
-        point.push_back({symbol_name(eq.dofs[i].name, 1, "0"), op.qd[i]});
+        const int k = static_cast<int>(i);
+        at_point.substitute({SymbolKind::q, k}, op.q[i]);
+        at_point.substitute({SymbolKind::qd, k}, op.qd[i]);
+        point.push_back(entry(symbol_name(s.dofs[i].name, 0, "0"), op.q[i]));
+        point.push_back(entry(symbol_name(s.dofs[i].name, 1, "0"), op.qd[i]));
     }
     for (std::size_t k = 0; k < nu; ++k) {
-        at_point.substitute(eq.inputs[k].sym, op.u[k]);
+        at_point.substitute({SymbolKind::input, static_cast<int>(k)}, op.u[k]);
         std::string base;
-        const int primes = trailing_primes(eq.inputs[k].name, base);
-        point.push_back({symbol_name(base, primes, "0"), op.u[k]});
+        const int primes = trailing_primes(s.inputs[k].name, base);
+        point.push_back(entry(symbol_name(base, primes, "0"), op.u[k]));
     }
     std::string out = "\\subsection*{Linear model at the operating point}\n"
                       "The operating point of the model's \\texttt{linearize} block "
                       "(values not shown are zero):\n";
-    Expander plain = table.expander();
+    Expander plain = expander(s);
     out += block(plain, point, "All coordinates, rates and inputs are zero.");
 
     std::vector<Entry> residual;
     for (std::size_t i = 0; i < n; ++i)
-        residual.push_back({"F_{" + std::to_string(i + 1) + "}(q_0, \\dot{q}_0, u_0)", eq.F[i]});
+        residual.push_back(
+            entry("F_{" + std::to_string(i + 1) + "}(q_0, \\dot{q}_0, u_0)", s.F[i]));
     bool equilibrium = true;
     for (const Entry& r : residual) equilibrium = equilibrium && at_point.terms(r.value).empty();
     out += "Linearized equations (paper eq.~24--25): $M_0\\,\\delta\\ddot{q} + "
@@ -217,7 +213,8 @@ std::string linear_section(const symbolic::Equations& eq, const symbolic::Operat
     if (equilibrium) {
         out += "The operating point is an equilibrium: $F(q_0, \\dot{q}_0, u_0) = 0$, hence "
                "$\\ddot{q}_0 = 0$.\n\n";
-        for (std::size_t i = 0; i < n; ++i) at_point.substitute(eq.a[i], 0);
+        for (std::size_t i = 0; i < n; ++i)
+            at_point.substitute({SymbolKind::acceleration, static_cast<int>(i)}, 0.0);
     } else {
         out += "The operating point is \\emph{not} an equilibrium; its residual is\n" +
                block(at_point, residual, "") +
@@ -227,13 +224,14 @@ std::string linear_section(const symbolic::Equations& eq, const symbolic::Operat
     std::vector<Entry> M0, C0, K0, Q0;
     for (std::size_t i = 0; i < n; ++i) {
         for (std::size_t j = i; j < n; ++j)
-            M0.push_back({"M_{0," + index(i, j, n, n) + "}", eq.M[i][j]});
+            M0.push_back(entry("M_{0," + index(i, j, n, n) + "}", s.M[i][j]));
         for (std::size_t j = 0; j < n; ++j) {
-            C0.push_back({"C_{0," + index(i, j, n, n) + "}", -eq.dF_dqd[i][j]});
-            K0.push_back({"K_{0," + index(i, j, n, n) + "}", eq.dMa_dq[i][j] - eq.dF_dq[i][j]});
+            C0.push_back({"C_{0," + index(i, j, n, n) + "}", {{s.dF_dqd[i][j], -1.0}}});
+            K0.push_back({"K_{0," + index(i, j, n, n) + "}",
+                          {{s.dMa_dq[i][j], 1.0}, {s.dF_dq[i][j], -1.0}}});
         }
         for (std::size_t k = 0; k < nu; ++k)
-            Q0.push_back({"Q_{0," + index(i, k, n, nu) + "}", eq.dF_du[i][k]});
+            Q0.push_back(entry("Q_{0," + index(i, k, n, nu) + "}", s.dF_du[i][k]));
     }
     out += "Mass ($M_{0,ji} = M_{0,ij}$):\n" + block(at_point, M0, "$M_0$ is zero.");
     out += "Damping:\n" + block(at_point, C0, "$C_0$ is zero.");
@@ -248,9 +246,8 @@ std::string linear_section(const symbolic::Equations& eq, const symbolic::Operat
 } // namespace
 
 std::string emit_latex(const LatexInput& input, const EmitOptions& options) {
-    if (!input.equations) throw diag::InternalError("latex: no equations");
-    const symbolic::Equations& eq = *input.equations;
-    const SymbolTable table(eq);
+    if (!input.system) throw diag::InternalError("latex: no equations");
+    const ir::System& eq = *input.system;
     auto comment = [](const std::string& s) {
         std::string out;
         for (char c : s) out += (c == '\n' || c == '\r') ? ' ' : c;
@@ -277,20 +274,18 @@ std::string emit_latex(const LatexInput& input, const EmitOptions& options) {
            "}, derived by Kane's method.\n";
     out += symbols_section(eq);
 
-    Expander expander = table.expander();
-    if (input.exact) {
+    Expander x = expander(eq);
+    if (!eq.exact_F.empty()) {
         out += "\\subsection*{Approximated equations of motion}\nTaylor-expanded about 0 in ";
         for (std::size_t i = 0; i < input.approximations.size(); ++i)
             out += (i == 0 ? "" : "; ") + input.approximations[i];
-        out += " (the generated code uses this form).\n\n" + equations_of_motion(eq, expander);
-        const SymbolTable exact_table(*input.exact);
-        Expander exact = exact_table.expander();
-        out +=
-            "\\subsection*{Exact equations of motion}\n" + equations_of_motion(*input.exact, exact);
+        out += " (the generated code uses this form).\n\n" + equations_of_motion(eq.M, eq.F, x);
+        out += "\\subsection*{Exact equations of motion}\n" +
+               equations_of_motion(eq.exact_M, eq.exact_F, x);
     } else {
-        out += "\\subsection*{Equations of motion}\n" + equations_of_motion(eq, expander);
+        out += "\\subsection*{Equations of motion}\n" + equations_of_motion(eq.M, eq.F, x);
     }
-    if (input.point && input.point->declared) out += linear_section(eq, *input.point, table);
+    if (eq.point.declared) out += linear_section(eq);
     return out + "\\end{document}\n";
 }
 

@@ -5,8 +5,7 @@
 // a `linearize` block, the operating point, M0, C0, K0, Q0 and the residual
 // F(q0, q0', u0), printed like the paper's Appendix E (codegen/latex_printer.hpp).
 #include "codegen/emit.hpp"
-#include "symbolic/equations.hpp"
-#include "symbolic/linearize.hpp"
+#include "ir/system.hpp"
 
 #include <string>
 #include <vector>
@@ -14,15 +13,12 @@
 namespace yamsc::codegen {
 
 struct LatexInput {
-    /// The equations as compiled, with their Jacobians (approximated when the
-    /// model has `approx`).
-    const symbolic::Equations* equations = nullptr;
-    /// The exact M and F when `equations` are approximated; null otherwise.
-    const symbolic::Equations* exact = nullptr;
+    /// The equations as compiled: M and F (approximated when the model has
+    /// `approx`, exact_M and exact_F then the exact ones) and, when the operating
+    /// point is declared, the unrolled Jacobians (passes::derive_jacobians).
+    const ir::System* system = nullptr;
     /// The `approx` groups, as readable text ("$\theta_{t}$ to order 1").
     std::vector<std::string> approximations;
-    /// The operating point; the linear model is printed when it was declared.
-    const symbolic::OperatingPoint* point = nullptr;
 };
 
 /// The document. Expressions too long to expand are named as such instead.

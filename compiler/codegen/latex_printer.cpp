@@ -11,10 +11,9 @@
 
 namespace yamsc::codegen::latex {
 
-using symbolic::TapeFunction;
-using symbolic::TapeId;
-using symbolic::TapeKind;
-using symbolic::TapeTerm;
+using ir::Function;
+using ir::NodeId;
+using ir::NodeKind;
 
 namespace {
 
@@ -39,41 +38,41 @@ std::string subscript_part(const std::string& part) {
     return escape_text(part);
 }
 
-const char* function_command(TapeFunction f) {
+const char* function_command(Function f) {
     switch (f) {
-    case TapeFunction::sin:
+    case Function::sin:
         return "\\sin";
-    case TapeFunction::cos:
+    case Function::cos:
         return "\\cos";
-    case TapeFunction::tan:
+    case Function::tan:
         return "\\tan";
-    case TapeFunction::asin:
+    case Function::asin:
         return "\\arcsin";
-    case TapeFunction::acos:
+    case Function::acos:
         return "\\arccos";
-    case TapeFunction::atan:
+    case Function::atan:
         return "\\arctan";
-    case TapeFunction::atan2:
+    case Function::atan2:
         return "\\operatorname{atan2}";
-    case TapeFunction::sinh:
+    case Function::sinh:
         return "\\sinh";
-    case TapeFunction::cosh:
+    case Function::cosh:
         return "\\cosh";
-    case TapeFunction::tanh:
+    case Function::tanh:
         return "\\tanh";
-    case TapeFunction::asinh:
+    case Function::asinh:
         return "\\operatorname{arsinh}";
-    case TapeFunction::acosh:
+    case Function::acosh:
         return "\\operatorname{arcosh}";
-    case TapeFunction::atanh:
+    case Function::atanh:
         return "\\operatorname{artanh}";
-    case TapeFunction::exp:
+    case Function::exp:
         return "\\exp";
-    case TapeFunction::log:
+    case Function::log:
         return "\\ln";
-    case TapeFunction::abs:
-    case TapeFunction::sqrt: // the Tape writes powers as products, never these
-    case TapeFunction::pow:
+    case Function::abs:
+    case Function::sqrt: // printed as powers (Expander::compute)
+    case Function::pow:
         return "";
     }
     return "";
@@ -162,36 +161,35 @@ std::string number(double value) {
            "10^{" + std::to_string(exponent) + "}";
 }
 
-Expander::Expander(const std::vector<GiNaC::symbol>& symbols, std::vector<std::string> names,
-                   std::size_t max_terms)
-    : tape_(std::make_unique<symbolic::Tape>(symbols)), names_(std::move(names)),
-      max_terms_(max_terms) {
-    if (names_.size() != symbols.size())
-        throw diag::InternalError("latex: one name per symbol expected");
+Expander::Expander(const ir::Graph& graph, std::size_t max_terms)
+    : graph_(graph), max_terms_(max_terms) {}
+
+void Expander::name(ir::SymbolRef s, std::string latex, int rank) {
+    rank_[latex] = rank;
+    names_[key(s)] = std::move(latex);
 }
 
-Expander::~Expander() = default;
-Expander::Expander(Expander&&) noexcept = default;
-Expander& Expander::operator=(Expander&&) noexcept = default;
-
-void Expander::substitute(const GiNaC::symbol& s, const GiNaC::ex& value) {
-    const TapeId id = tape_->import(s);
-    const int v = tape_->variable_of(id);
-    if (v < 0) throw diag::InternalError("latex: substituting an unknown symbol");
-    const Poly p = poly(tape_->import(value));
+void Expander::substitute(ir::SymbolRef s, NodeId value) {
+    Poly p = poly(value);
     memo_.clear(); // earlier expansions used the symbol itself
-    substituted_[static_cast<std::size_t>(v)] = p;
+    substituted_[key(s)] = std::move(p);
 }
 
-void Expander::set_rank(const std::string& name, int rank) {
-    rank_[name] = rank;
+void Expander::substitute(ir::SymbolRef s, double value) {
+    memo_.clear();
+    substituted_[key(s)] = value == 0 ? Poly{} : Poly{{Monomial{}, value}};
 }
 
-std::vector<std::string> Expander::terms(const GiNaC::ex& e) {
-    return print_terms(poly(tape_->import(e)));
+std::vector<std::string> Expander::terms(const std::vector<ir::Operand>& combination) {
+    std::vector<Poly> polys;
+    for (const ir::Operand& op : combination) polys.push_back(poly(op.node));
+    std::vector<std::pair<const Poly*, double>> parts;
+    for (std::size_t i = 0; i < polys.size(); ++i)
+        parts.push_back({&polys[i], combination[i].weight});
+    return print_terms(parts.size() == 1 && parts[0].second == 1.0 ? polys[0] : sum(parts));
 }
 
-const Expander::Poly& Expander::poly(TapeId node) {
+const Expander::Poly& Expander::poly(NodeId node) {
     if (auto it = memo_.find(node); it != memo_.end()) return it->second;
     Poly p = compute(node);
     if (p.size() > max_terms_)
@@ -203,70 +201,69 @@ Expander::Poly Expander::atom(const std::string& text, int exponent) const {
     return Poly{{Monomial{{text, exponent}}, 1.0}};
 }
 
-Expander::Poly Expander::compute(TapeId node) {
-    symbolic::Tape& t = *tape_;
-    // A copy: expanding operands may add nodes and move the tape's storage.
-    const std::vector<TapeTerm> ops(t.operands(node), t.operands(node) + t.operand_count(node));
-    switch (t.kind(node)) {
-    case TapeKind::number:
-        return t.value(node) == 0 ? Poly{} : Poly{{Monomial{}, t.value(node)}};
-    case TapeKind::symbol: {
-        const int v = t.variable_of(node);
-        if (v < 0) throw diag::InternalError("latex: a symbol without a name");
-        auto it = substituted_.find(static_cast<std::size_t>(v));
-        if (it != substituted_.end()) return it->second;
-        return atom(names_[static_cast<std::size_t>(v)]);
+Expander::Poly Expander::compute(NodeId node) {
+    const ir::Node& n = graph_.node(node);
+    const ir::OperandSpan ops = graph_.operands(node);
+    switch (n.kind) {
+    case NodeKind::number:
+        return n.value == 0 ? Poly{} : Poly{{Monomial{}, n.value}};
+    case NodeKind::symbol: {
+        if (auto it = substituted_.find(key(n.symbol)); it != substituted_.end()) return it->second;
+        auto it = names_.find(key(n.symbol));
+        if (it == names_.end()) throw diag::InternalError("latex: a symbol without a name");
+        return atom(it->second);
     }
-    case TapeKind::add: {
+    case NodeKind::add: {
         std::vector<Poly> polys;
-        for (const TapeTerm& op : ops) polys.push_back(poly(op.node));
-        const Poly constant = t.value(node) == 0 ? Poly{} : Poly{{Monomial{}, t.value(node)}};
+        for (const ir::Operand& op : ops) polys.push_back(poly(op.node));
+        const Poly constant = n.value == 0 ? Poly{} : Poly{{Monomial{}, n.value}};
         std::vector<std::pair<const Poly*, double>> parts{{&constant, 1.0}};
         for (std::size_t i = 0; i < ops.size(); ++i) parts.push_back({&polys[i], ops[i].weight});
         return sum(parts);
     }
-    case TapeKind::mul: {
+    case NodeKind::mul: {
         // Factors in the order of their printed form: the rounding of the
         // coefficients does not depend on the operand order.
         std::vector<std::pair<std::string, Poly>> factors;
-        for (const TapeTerm& op : ops) {
+        for (const ir::Operand& op : ops) {
             Poly f = power(poly(op.node), op.weight);
             factors.emplace_back(print(f), std::move(f));
         }
         std::sort(factors.begin(), factors.end(),
                   [](const auto& a, const auto& b) { return a.first < b.first; });
-        Poly out{{Monomial{}, t.value(node)}};
+        Poly out{{Monomial{}, n.value}};
         for (const auto& f : factors) out = product(out, f.second);
         return out;
     }
-    case TapeKind::power: {
-        const Poly& base = poly(ops[0].node);
-        const Poly& exponent = poly(ops[1].node);
-        if (exponent.size() == 1 && exponent.begin()->first.empty())
-            return power(base, exponent.begin()->second);
-        return atom("\\left(" + print(base) + "\\right)^{" + print(exponent) + "}");
-    }
-    case TapeKind::call: {
-        const TapeFunction f = t.function(node);
+    case NodeKind::call: {
+        const Function f = n.function;
         std::vector<Poly> args;
         bool constant = true;
-        for (const TapeTerm& op : ops) {
+        for (const ir::Operand& op : ops) {
             args.push_back(poly(op.node));
             constant = constant && (args.back().empty() || (args.back().size() == 1 &&
                                                             args.back().begin()->first.empty()));
         }
+        auto value = [](const Poly& p) { return p.empty() ? 0.0 : p.begin()->second; };
+        // The graph writes powers that are not small integers as sqrt and pow.
+        if (f == Function::sqrt) return power(args[0], 0.5);
+        if (f == Function::pow) {
+            if (args[1].empty() || (args[1].size() == 1 && args[1].begin()->first.empty()))
+                return power(args[0], value(args[1]));
+            return atom("\\left(" + print(args[0]) + "\\right)^{" + print(args[1]) + "}");
+        }
         if (constant) {
-            auto value = [](const Poly& p) { return p.empty() ? 0.0 : p.begin()->second; };
-            const double v = evaluate(f, value(args[0]), args.size() > 1 ? value(args[1]) : 0.0);
+            const double v =
+                ir::evaluate(f, value(args[0]), args.size() > 1 ? value(args[1]) : 0.0);
             if (std::isfinite(v)) return v == 0 ? Poly{} : Poly{{Monomial{}, v}};
         }
         std::string inner;
         for (const Poly& a : args) inner += (inner.empty() ? "" : ", ") + print(a);
-        if (f == TapeFunction::abs) return atom("\\left|" + inner + "\\right|");
+        if (f == Function::abs) return atom("\\left|" + inner + "\\right|");
         return atom(std::string(function_command(f)) + "\\left(" + inner + "\\right)");
     }
     }
-    throw diag::InternalError("latex: unknown tape node");
+    throw diag::InternalError("latex: unknown node kind");
 }
 
 Expander::Poly Expander::sum(const std::vector<std::pair<const Poly*, double>>& parts) const {

@@ -4,17 +4,14 @@
 // collected, numbers with 6 significant digits, the model's own names
 // (`M_N` -> `M_{N}`, `theta_t` -> `\theta_{t}`, `q'` -> `\dot{q}`).
 //
-// Expansion walks a Tape (symbolic/tape.hpp), memoised per node: GiNaC's own
-// expand and printing walk shared DAGs as trees. Terms are ordered by their
-// printed form, so the text does not depend on GiNaC's (address-seeded) order
-// of operands. An expression whose expansion exceeds a number of terms is
-// reported as too long instead of printed.
-#include "symbolic/tape.hpp"
-
-#include <ginac/ginac.h>
+// Expansion walks the IR graph (ir/graph.hpp), memoised per node: the
+// equations are DAGs, and a walk as a tree would be exponential. Terms are
+// ordered by their printed form, so the text depends neither on the graph's
+// operand order nor on how a value was built. An expression whose expansion
+// exceeds a number of terms is reported as too long instead of printed.
+#include "ir/graph.hpp"
 
 #include <map>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -41,30 +38,32 @@ struct TooLong : std::runtime_error {
 
 class Expander {
 public:
-    /// `symbols` with their LaTeX names; every symbol of the expressions must be one.
-    Expander(const std::vector<GiNaC::symbol>& symbols, std::vector<std::string> names,
-             std::size_t max_terms = 400);
-    ~Expander();
-    Expander(Expander&&) noexcept;
-    Expander& operator=(Expander&&) noexcept;
+    /// Expressions of `graph` (which must outlive the Expander); every symbol they
+    /// read must be named first.
+    explicit Expander(const ir::Graph& graph, std::size_t max_terms = 400);
 
-    /// Where a symbol's name goes in a printed product: lower ranks first (default
-    /// 0; functions and parenthesised sums come last). E.g. parameters before
-    /// coordinates: `c \dot{\theta}`, `g m \sin\left(\theta\right)`.
-    void set_rank(const std::string& name, int rank);
+    /// The LaTeX name of a symbol, and where it goes in a printed product: lower
+    /// ranks first (functions and parenthesised sums come last). E.g. parameters
+    /// (rank 0) before coordinates (1): `c \dot{\theta}`, `g m \sin\left(\theta\right)`.
+    void name(ir::SymbolRef s, std::string latex, int rank = 1);
 
-    /// From now on, `s` stands for `value` (an expression over the same symbols).
-    void substitute(const GiNaC::symbol& s, const GiNaC::ex& value);
+    /// From now on, `s` stands for `value` (a node of the same graph) or a number.
+    void substitute(ir::SymbolRef s, ir::NodeId value);
+    void substitute(ir::SymbolRef s, double value);
 
-    /// The signed terms of the expanded expression, in print order, each starting
-    /// with "+" or "-" ("-\frac{1}{2} x^{2}"); empty for 0. Throws TooLong.
-    std::vector<std::string> terms(const GiNaC::ex& e);
+    /// The signed terms of the expanded expression Σ weight * node, in print
+    /// order, each starting with "+" or "-" ("-\frac{1}{2} x^{2}"); empty for 0.
+    /// Throws TooLong.
+    std::vector<std::string> terms(const std::vector<ir::Operand>& combination);
+    std::vector<std::string> terms(ir::NodeId e) { return terms({{e, 1.0}}); }
 
 private:
     using Monomial = std::vector<std::pair<std::string, int>>; // atom -> exponent, by atom
     using Poly = std::map<Monomial, double>;
-    const Poly& poly(symbolic::TapeId node);
-    Poly compute(symbolic::TapeId node);
+    using Key = std::pair<int, int>; // a symbol: kind, index
+    static Key key(ir::SymbolRef s) { return {static_cast<int>(s.kind), s.index}; }
+    const Poly& poly(ir::NodeId node);
+    Poly compute(ir::NodeId node);
     Poly sum(const std::vector<std::pair<const Poly*, double>>& parts) const;
     Poly product(const Poly& a, const Poly& b) const;
     Poly reduce_trigonometry(Poly p) const;
@@ -73,12 +72,12 @@ private:
     std::string print(const Poly& p) const;
     std::vector<std::string> print_terms(const Poly& p) const;
 
-    std::unique_ptr<symbolic::Tape> tape_;
-    std::vector<std::string> names_;
+    const ir::Graph& graph_;
     std::size_t max_terms_;
-    std::map<std::size_t, Poly> substituted_; // by variable index
-    std::map<std::string, int> rank_;         // by atom text
-    std::unordered_map<symbolic::TapeId, Poly> memo_;
+    std::map<Key, std::string> names_;
+    std::map<Key, Poly> substituted_;
+    std::map<std::string, int> rank_; // by atom text
+    std::unordered_map<ir::NodeId, Poly> memo_;
 };
 
 } // namespace yamsc::codegen::latex

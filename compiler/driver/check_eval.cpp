@@ -4,8 +4,9 @@
 #include "driver/json.hpp"
 #include "driver/pipeline.hpp"
 #include "driver/sid_values.hpp"
-#include "symbolic/dag.hpp"
+#include "ir/evaluate.hpp"
 
+#include <cmath>
 #include <ostream>
 
 namespace yamsc::driver {
@@ -101,47 +102,62 @@ int check(const CheckOptions& o, std::ostream& out, std::ostream& err) {
 
 int eval(const EvalOptions& o, std::ostream& out, std::ostream& err) {
     diag::Diagnostics diags;
-    FrontEnd fe = run_front_end(o.model, Until::equations, diags);
+    FrontEnd fe = run_front_end(o.model, Until::system, diags);
     err << diags.render();
-    if (diags.has_errors() || !fe.equations) return 1;
-    const symbolic::Equations& eq = *fe.equations;
+    if (diags.has_errors() || !fe.system) return 1;
+    const ir::System& sys = *fe.system;
     std::vector<Assignment> set =
         o.sid.empty() ? std::vector<Assignment>{} : sid_parameter_values(*fe.model, o.sid);
     set.insert(set.end(), o.set.begin(), o.set.end());
-    const auto nq = static_cast<std::size_t>(eq.nq());
+    const auto nq = static_cast<std::size_t>(sys.nq());
 
     std::vector<std::string> pnames, unames, dofs;
     std::vector<std::optional<double>> pdefaults;
-    for (const auto& p : eq.params) {
+    for (const auto& p : sys.params) {
         pnames.push_back(p.name);
         pdefaults.push_back(p.value);
     }
-    for (const auto& u : eq.inputs) unames.push_back(u.name);
-    for (const auto& d : eq.dofs) dofs.push_back(d.name);
+    for (const auto& u : sys.inputs) unames.push_back(u.name);
+    for (const auto& d : sys.dofs) dofs.push_back(d.name);
     std::vector<double> p = bind_named(pnames, pdefaults, set, "parameter");
     std::vector<double> u =
         bind_named(unames, std::vector<std::optional<double>>(unames.size(), 0.0), o.u, "input");
     std::vector<double> q = o.q.empty() ? std::vector<double>(nq, 0.0) : sized(o.q, nq, "--q");
     std::vector<double> qd = o.qd.empty() ? std::vector<double>(nq, 0.0) : sized(o.qd, nq, "--qd");
 
-    symbolic::Evaluator::Values values;
-    values[eq.t] = o.t;
-    for (std::size_t i = 0; i < nq; ++i) {
-        values[eq.dofs[i].q] = q[i];
-        values[eq.dofs[i].qd] = qd[i];
-    }
-    for (std::size_t i = 0; i < u.size(); ++i) values[eq.inputs[i].sym] = u[i];
-    for (std::size_t i = 0; i < p.size(); ++i) values[eq.params[i].sym] = p[i];
-    symbolic::Evaluator evaluate(values);
+    // M, F and the outputs in one evaluation of the graph (the M, F of `approx`
+    // models approximated, as the generated code computes them).
+    std::vector<ir::NodeId> roots;
+    for (const ir::Row& row : sys.M) roots.insert(roots.end(), row.begin(), row.end());
+    roots.insert(roots.end(), sys.F.begin(), sys.F.end());
+    for (const ir::Output& y : sys.outputs) roots.push_back(y.value);
+    const std::vector<double> values =
+        ir::evaluate(sys.graph, roots, [&](ir::SymbolRef s) -> double {
+            const auto i = static_cast<std::size_t>(s.index);
+            switch (s.kind) {
+            case ir::SymbolKind::time:
+                return o.t;
+            case ir::SymbolKind::q:
+                return q[i];
+            case ir::SymbolKind::qd:
+                return qd[i];
+            case ir::SymbolKind::input:
+                return u[i];
+            case ir::SymbolKind::param:
+                return p[i];
+            default: // q'' and `a`: in the graph (M a), never read by M, F or y
+                return std::nan("");
+            }
+        });
     std::vector<std::vector<double>> M(nq, std::vector<double>(nq));
     std::vector<double> F(nq), y;
-    for (std::size_t r = 0; r < nq; ++r) {
-        for (std::size_t s = 0; s < nq; ++s) M[r][s] = evaluate(eq.M[r][s]);
-        F[r] = evaluate(eq.F[r]);
-    }
-    for (const auto& output : eq.outputs) y.push_back(evaluate(output.value));
+    std::size_t next = 0;
+    for (std::size_t r = 0; r < nq; ++r)
+        for (std::size_t c = 0; c < nq; ++c) M[r][c] = values[next++];
+    for (std::size_t r = 0; r < nq; ++r) F[r] = values[next++];
+    while (next < values.size()) y.push_back(values[next++]);
     std::vector<std::string> onames;
-    for (const auto& output : eq.outputs) onames.push_back(output.name);
+    for (const auto& output : sys.outputs) onames.push_back(output.name);
     out << "{\"nq\":" << nq << ",\"dofs\":" << json::strings(dofs) << ",\"M\":" << json::matrix(M)
         << ",\"F\":" << json::array(F) << ",\"outputs\":" << json::strings(onames)
         << ",\"y\":" << json::array(y) << "}\n";

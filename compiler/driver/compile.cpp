@@ -12,8 +12,6 @@
 #include "driver/pipeline.hpp"
 #include "model/names.hpp"
 #include "passes/passes.hpp"
-#include "symbolic/derive.hpp"
-#include "symbolic/linearize.hpp"
 #include <yamsc/atomic_file.hpp>
 
 #include <ostream>
@@ -84,25 +82,13 @@ std::string depfile_text(const CompileOptions& o, const std::vector<std::string>
 void write_latex(const CompileOptions& o, const FrontEnd& fe) {
     if (!o.header.empty()) throw UsageError("--header does not apply to --lang latex");
     codegen::LatexInput in;
-    // The LaTeX printer still reads GiNaC: it takes the Jacobians from the Tape.
-    symbolic::Equations eq = *fe.equations;
-    if (!fe.system->tangent_form) symbolic::derive_jacobians(eq);
-    in.equations = &eq;
-    std::optional<symbolic::Equations> exact;
-    if (!fe.model->approximations.empty()) {
-        diag::Diagnostics ignored; // the same derivation already succeeded
-        exact = symbolic::derive(*fe.model, ignored);
-        if (!exact) throw diag::InternalError("the exact equations could not be derived again");
-        in.exact = &*exact;
-        for (const model::Approximation& a : fe.model->approximations) {
-            std::string names;
-            for (const auto& s : a.symbols)
-                names += (names.empty() ? "$" : ", $") + codegen::latex::symbol_name(s.name) + "$";
-            in.approximations.push_back(names + " to order " + std::to_string(a.order));
-        }
+    in.system = &*fe.system;
+    for (const model::Approximation& a : fe.model->approximations) {
+        std::string names;
+        for (const auto& s : a.symbols)
+            names += (names.empty() ? "$" : ", $") + codegen::latex::symbol_name(s.name) + "$";
+        in.approximations.push_back(names + " to order " + std::to_string(a.order));
     }
-    const symbolic::OperatingPoint point = symbolic::operating_point(*fe.model, *fe.equations);
-    in.point = &point;
     codegen::EmitOptions emit;
     emit.compiler_version = YAMSC_VERSION;
     emit.command_line = "--lang latex";
@@ -146,8 +132,10 @@ codegen::Options module_options(const CompileOptions& o, ir::System& s) {
 
 /// --jacobians; sensitivities are formed from the unrolled Jacobians (the CLI
 /// refuses them with --jacobians tangent).
+/// The LaTeX document prints M and the unrolled Jacobians, whatever the size.
 Derivatives derivatives_of(const CompileOptions& o) {
-    if (!o.sensitivities.empty()) return Derivatives::unrolled;
+    if (!o.sensitivities.empty() || (o.dump == Dump::none && o.lang == Language::latex))
+        return Derivatives::unrolled;
     return o.jacobians.value_or(Derivatives::automatic);
 }
 

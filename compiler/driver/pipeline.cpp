@@ -5,7 +5,7 @@
 #include "lower/lower.hpp"
 #include "parse/parser.hpp"
 #include "passes/passes.hpp"
-#include "symbolic/approx.hpp"
+#include "passes/taylor.hpp"
 #include "symbolic/derive.hpp"
 #include "symbolic/linearize.hpp"
 
@@ -30,6 +30,42 @@ std::string timed(const char* what, double s) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "%s: %.3f s", what, s);
     return buf;
+}
+
+/// The model's `approx` groups, in order, as passes on the System. Reports what
+/// cannot be expanded at the group's `approx` line; false then.
+bool approximate(const model::Model& m, ir::System& s, diag::Diagnostics& diags) {
+    // The first channel of each input (its derivatives are channels of their own).
+    std::vector<int> first_channel;
+    int channel = 0;
+    for (const model::Input& in : m.inputs) {
+        first_channel.push_back(channel);
+        channel += in.order + 1;
+    }
+    for (const model::Approximation& group : m.approximations) {
+        std::vector<ir::SymbolRef> symbols;
+        std::string names;
+        for (const auto& sym : group.symbols) {
+            names += (names.empty() ? "" : ", ") + sym.name;
+            if (sym.kind == model::NameKind::param)
+                symbols.push_back({ir::SymbolKind::param, sym.index});
+            else if (sym.kind == model::NameKind::dof)
+                symbols.push_back({ir::SymbolKind::q, sym.index});
+            else
+                symbols.push_back(
+                    {ir::SymbolKind::input, first_channel.at(static_cast<std::size_t>(sym.index))});
+        }
+        try {
+            passes::approximate(s, symbols, group.order);
+        } catch (const passes::NotExpandable& x) {
+            diags.error(x.not_supported ? diag::Kind::NotSupported : diag::Kind::InvalidValue,
+                        group.loc,
+                        "approx: cannot expand the equations in " + names + " to order " +
+                            std::to_string(group.order) + ": they contain " + x.what());
+            return false;
+        }
+    }
+    return true;
 }
 
 } // namespace
@@ -68,13 +104,14 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
     }
     fe.equations->source_digest = digest(all);
     say(timed("derived the equations of motion", clock.seconds()));
+    if (until == Until::equations) return fe;
+    fe.system = lower::lower(*fe.equations, symbolic::operating_point(*fe.model, *fe.equations));
+    say(timed("imported the equations into the IR", clock.seconds()));
     if (!fe.model->approximations.empty()) {
-        if (!symbolic::approximate(*fe.model, *fe.equations, diags)) return fe;
+        if (!approximate(*fe.model, *fe.system, diags)) return fe;
         say(timed("approximated (approx)", clock.seconds()));
     }
     if (until != Until::jacobians) return fe;
-    fe.system = lower::lower(*fe.equations, symbolic::operating_point(*fe.model, *fe.equations));
-    say(timed("imported the equations into the IR", clock.seconds()));
     if (tangent) {
         passes::derive_tangent(*fe.system);
         say(timed("derived the tangent (directional derivatives)", clock.seconds()));

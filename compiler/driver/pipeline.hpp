@@ -18,10 +18,12 @@ struct FrontEnd {
     std::optional<ast::ModelFile> ast;
     std::optional<model::Model> model;
     std::optional<symbolic::Equations> equations;
-    std::optional<ir::System> system; // Until::jacobians: the equations in the IR, derived
+    // Until::system: the equations in the IR, approximated (`approx`);
+    // Until::jacobians: with their derivatives (the passes) as well.
+    std::optional<ir::System> system;
 };
 
-enum class Until { ast, model, equations, jacobians };
+enum class Until { ast, model, equations, system, jacobians };
 
 /// Runs the stages up to `until`. `progress` (may be empty) receives a line per stage.
 /// `checked` (may be empty) sees the checked model before the equations are

@@ -76,6 +76,11 @@ struct System {
     // Σ_s M_rs a_s.
     Row Ma;
 
+    // passes::approximate: M and F as derived, before the model's `approx`
+    // groups replaced them (the LaTeX document prints both); empty otherwise.
+    Matrix exact_M;
+    Row exact_F;
+
     // passes::derive_jacobians: exact Jacobians of F, and d(M a)/dq, which with
     // a = q'' completes the Jacobian of x' = [q', M^-1 F].
     Matrix dF_dq, dF_dqd, dF_du, dMa_dq;

@@ -9,6 +9,13 @@
 
 namespace yamsc::passes {
 
+/// One `approx` group: M and F replaced by their Taylor polynomials about 0 in
+/// `group` (variables: q, u or p), truncated at total order `order`
+/// (passes/taylor.hpp). The first call keeps the rows as derived in exact_M and
+/// exact_F; the outputs and M a stay exact. Run before the derivatives. Throws
+/// NotExpandable (taylor.hpp) for what has no expansion.
+void approximate(ir::System& s, const std::vector<ir::SymbolRef>& group, int order);
+
 /// dF_dq, dF_dqd, dF_du and dMa_dq (forming M a from M when Kane's method left
 /// it empty).
 void derive_jacobians(ir::System& s);

@@ -13,8 +13,4 @@ namespace yamsc::symbolic {
 std::optional<Equations> derive(const model::Model& m, diag::Diagnostics& diags,
                                 bool mass_matrix = true);
 
-/// Fills the exact Jacobians dF/dq, dF/dq', dF/du and d(M a)/dq in GiNaC, for
-/// the LaTeX printer (code generation derives them on the IR: passes/).
-void derive_jacobians(Equations& eq);
-
 } // namespace yamsc::symbolic

@@ -62,9 +62,8 @@ struct Equations {
     Matrix M; // nq x nq, symmetric, depends on q and p (and u, t for prescribed motion)
     Row F;    // nq
 
-    // Exact Jacobians of F (filled by derive_jacobians in symbolic/jacobians.cpp),
-    // for the LaTeX printer only: generated code takes its derivatives from the
-    // passes on the IR (passes/jacobians.cpp).
+    // The compiler derives the Jacobians on the IR (passes/); these GiNaC ones
+    // are filled only by tests, as references independent of the IR.
     Matrix dF_dq, dF_dqd, dF_du; // nq x nq, nq x nq, nq x nu
     // d(M(q) a)/dq for a vector of symbols `a` (nq x nq): with a = q'' it completes
     // the Jacobian of the first-order system x' = f(x) = [q', M^-1 F].
@@ -72,7 +71,7 @@ struct Equations {
     Matrix dMa_dq;
     // M(q) a assembled body by body from Kane's q''-part of the inertia forces: a DAG
     // of O(bodies x DOFs) nodes where Σ_s M_rs a_s has O(bodies x DOFs²). Filled by
-    // derive() together with `a`; when empty, derive_jacobians forms Σ_s M_rs a_s.
+    // derive() together with `a`; when empty, passes::derive_jacobians forms Σ_s M_rs a_s.
     Row Ma;
 
     int nq() const { return static_cast<int>(dofs.size()); }

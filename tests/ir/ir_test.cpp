@@ -213,21 +213,23 @@ TEST_CASE("the passes fill the rows of a System") {
 }
 
 TEST_CASE("code generation does not derive: no codegen file includes a symbolic header") {
-    // Code generation lowers the IR and prints it; the derivatives come from the
-    // passes. The LaTeX printer still reads GiNaC (it expands polynomials on the
-    // symbolic Tape) and is the one exception until it is ported to the IR.
+    // Code generation lowers the IR and prints it (C++, C and LaTeX); the
+    // derivatives come from the passes, and GiNaC stays behind the import.
     const std::filesystem::path dir = std::filesystem::path(YAMSC_SOURCE_DIR) / "compiler/codegen";
     std::vector<std::string> offenders;
     int files = 0;
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        if (!entry.is_regular_file()) continue; // helpers/: C sources, no includes
         const std::string name = entry.path().filename().string();
         std::ifstream in(entry.path());
         std::stringstream text;
         text << in.rdbuf();
         ++files;
-        if (text.str().find("#include \"symbolic/") != std::string::npos) offenders.push_back(name);
+        if (text.str().find("#include \"symbolic/") != std::string::npos ||
+            text.str().find("#include <ginac") != std::string::npos)
+            offenders.push_back(name);
     }
     std::sort(offenders.begin(), offenders.end());
     CHECK(files > 20);
-    CHECK(offenders == std::vector<std::string>{"emit_latex.hpp", "latex_printer.hpp"});
+    CHECK(offenders.empty());
 }

@@ -3,6 +3,7 @@
 // the exact DAG evaluator, and load its generated code compiled on the fly.
 #include "analysis/jit.hpp"
 #include "driver/pipeline.hpp"
+#include "ir_to_ginac.hpp"
 #include "lower/lower.hpp"
 #include "passes/passes.hpp"
 #include "symbolic/dag.hpp"
@@ -19,14 +20,31 @@ inline std::string source_path(const std::string& relative) {
     return std::string(YAMSC_SOURCE_DIR) + "/" + relative;
 }
 
+/// The equations of a front end's run as compiled: for a model with `approx`, M
+/// and F are the approximated ones (made on the IR by passes::approximate,
+/// converted back to GiNaC here for comparisons with printed formulas).
+inline symbolic::Equations compiled_equations(driver::FrontEnd& fe) {
+    REQUIRE(fe.equations);
+    REQUIRE(fe.system);
+    symbolic::Equations eq = std::move(*fe.equations);
+    if (!fe.system->exact_F.empty()) {
+        IrToGinac to_ginac(fe.system->graph, eq);
+        for (std::size_t r = 0; r < eq.M.size(); ++r)
+            for (std::size_t c = 0; c < eq.M[r].size(); ++c)
+                eq.M[r][c] = to_ginac(fe.system->M[r][c]);
+        for (std::size_t r = 0; r < eq.F.size(); ++r) eq.F[r] = to_ginac(fe.system->F[r]);
+    }
+    return eq;
+}
+
+/// The equations of a model file as compiled (compiled_equations).
 inline symbolic::Equations derive_file(const std::string& relative) {
     diag::Diagnostics diags;
     driver::FrontEnd fe =
-        driver::run_front_end(source_path(relative), driver::Until::jacobians, diags);
+        driver::run_front_end(source_path(relative), driver::Until::system, diags);
     INFO(diags.render());
     REQUIRE_FALSE(diags.has_errors());
-    REQUIRE(fe.equations);
-    return std::move(*fe.equations);
+    return compiled_equations(fe);
 }
 
 /// M and F of the symbolic equations at a state, parameters at their defaults
