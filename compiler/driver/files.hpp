@@ -1,7 +1,7 @@
 #pragma once
 // Files: reading sources with a located error, and the digest that identifies
 // a model's source in generated headers. Outputs are checked against the
-// inputs by driver/outputs.hpp and written by the runtime's
+// inputs by driver/outputs.hpp and written by yamsc_files'
 // write_file_atomically (yamsc/atomic_file.hpp).
 #include "diag/diagnostics.hpp"
 
