@@ -1,5 +1,6 @@
 #include "analysis/jit.hpp"
 
+#include "analysis/jit_cache.hpp"
 #include "codegen/emit.hpp"
 #include "codegen/module.hpp"
 #include "driver/files.hpp"
@@ -7,54 +8,51 @@
 #include "embedded_abi.hpp"
 #include <yamsc/atomic_file.hpp>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
-#include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 namespace yamsc::driver {
 
 namespace {
 
-std::string env(const char* name) {
-    const char* v = std::getenv(name);
-    return v ? v : "";
+const char* const compile_flags = "-std=c++17 -O2 -shared -fPIC -fvisibility=hidden";
+
+/// The ABI's export macro of each routine.
+const std::map<std::string, std::string>& export_macros() {
+    static const std::map<std::string, std::string> macros{
+        {"rhs", "YAMSC_EXPORT_RHS"},
+        {"rhs_jacobian", "YAMSC_EXPORT_RHS_JACOBIAN"},
+        {"mass_matrix", "YAMSC_EXPORT_MASS_MATRIX"},
+        {"forcing", "YAMSC_EXPORT_FORCING"},
+        {"jacobians", "YAMSC_EXPORT_JACOBIANS"},
+        {"outputs", "YAMSC_EXPORT_OUTPUTS"}};
+    return macros;
 }
 
-std::string cache_folder(const JitOptions& o) {
-    if (!o.cache_dir.empty()) return o.cache_dir;
-    if (auto d = env("YAMSC_CACHE_DIR"); !d.empty()) return d;
-    if (auto d = env("XDG_CACHE_HOME"); !d.empty()) return d + "/yamsc";
-    if (auto d = env("HOME"); !d.empty()) return d + "/.cache/yamsc";
-    return "/tmp/yamsc-cache-" + std::to_string(::getuid());
+/// rhs first, then the others in the ABI's order, each once.
+std::vector<std::string> normalised(const std::vector<std::string>& routines) {
+    std::vector<std::string> out{"rhs"};
+    for (const char* name : {"rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"})
+        if (std::find(routines.begin(), routines.end(), name) != routines.end())
+            out.emplace_back(name);
+    for (const std::string& r : routines)
+        if (!export_macros().count(r))
+            throw std::invalid_argument("the model ABI has no routine '" + r + "'");
+    return out;
 }
 
-void make_dirs(const std::string& path) {
-    for (std::size_t pos = 1; pos <= path.size(); ++pos) {
-        if (pos == path.size() || path[pos] == '/') {
-            std::string part = path.substr(0, pos);
-            if (::mkdir(part.c_str(), 0755) != 0 && errno != EEXIST)
-                throw std::runtime_error("cannot create the cache folder '" + part + "'");
-        }
-    }
-}
-
-std::string compiler_of(const JitOptions& o) {
-    if (!o.compiler.empty()) return o.compiler;
-    if (auto c = env("YAMSC_CXX"); !c.empty()) return c;
-    if (auto c = env("CXX"); !c.empty()) return c;
-#ifdef YAMSC_CXX_COMPILER
-    if (std::string c = YAMSC_CXX_COMPILER; !c.empty() && ::access(c.c_str(), X_OK) == 0) return c;
-#endif
-    return "c++";
-}
-
-bool exists(const std::string& path) {
-    return ::access(path.c_str(), R_OK) == 0;
+std::string joined(const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out;
 }
 
 std::string shell_quote(const std::string& s) {
@@ -63,58 +61,106 @@ std::string shell_quote(const std::string& s) {
     return out + "'";
 }
 
+std::string seconds_text(double s) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, s < 10 ? "%.1f s" : "%.0f s", s);
+    return buf;
+}
+
+/// Compiles `source` into `library` (atomically: a temporary file renamed).
+void compile(const std::string& compiler, const std::string& source, const std::string& library) {
+    const std::string tmp = library + ".tmp." + std::to_string(::getpid());
+    runtime::write_file_atomically(tmp + ".cpp", source);
+    const std::string log = tmp + ".log";
+    const std::string cmd = shell_quote(compiler) + " " + compile_flags + " -o " +
+                            shell_quote(tmp + ".so") + " " + shell_quote(tmp + ".cpp") + " > " +
+                            shell_quote(log) + " 2>&1";
+    const int status = std::system(cmd.c_str());
+    std::remove((tmp + ".cpp").c_str());
+    if (status != 0) {
+        std::ifstream in(log);
+        std::stringstream messages;
+        messages << in.rdbuf();
+        std::remove(log.c_str());
+        std::remove((tmp + ".so").c_str());
+        throw std::runtime_error("the C++ compiler failed on the generated model (" + compiler +
+                                 "):\n" + messages.str().substr(0, 4000));
+    }
+    std::remove(log.c_str());
+    if (std::rename((tmp + ".so").c_str(), library.c_str()) != 0) {
+        std::remove((tmp + ".so").c_str());
+        throw std::runtime_error("cannot store the compiled model in '" + library + "'");
+    }
+}
+
 } // namespace
 
-std::string shared_model_source(const ir::System& eq) {
-    codegen::Module module = codegen::build_module(eq);
+std::string shared_model_source(const ir::System& eq, const std::vector<std::string>& routines) {
+    const std::vector<std::string> wanted = normalised(routines);
+    codegen::Options module_options;
+    module_options.linear_model = false;
+    codegen::Module module = codegen::build_module(eq, module_options);
+    codegen::keep_routines(module, wanted);
     codegen::EmitOptions options;
     options.compiler_version = YAMSC_VERSION;
-    options.command_line = "yamsc sim (compiled on the fly)";
+    options.command_line = "yamsc (compiled on the fly: " + joined(wanted) + ")";
     std::string source = codegen::emit_cpp(module, options).source;
-    return source + "\n// ---- C ABI for the runtime's loader ----\n" + abi_export_text + "\n" +
-           "YAMSC_EXPORT_MODEL(" + eq.model_name + ")\n";
+    source += "\n// ---- C ABI for the runtime's loader ----\n" + std::string(abi_export_text) +
+              "\nYAMSC_EXPORT_MODEL_INFO(" + eq.model_name + ")\n";
+    for (const std::string& r : wanted)
+        source += export_macros().at(r) + "(" + eq.model_name + ")\n";
+    return source;
+}
+
+std::unique_ptr<runtime::SharedModel> load_compiled_model(const ModelIdentity& id,
+                                                          const std::function<ir::System()>& derive,
+                                                          const JitOptions& o) {
+    auto tell = [](const std::function<void(const std::string&)>& to, const std::string& s) {
+        if (to) to(s);
+    };
+    const std::vector<std::string> routines = normalised(id.routines);
+    const std::string compiler = compiler_of(o.compiler);
+    const ModelCache cache(cache_folder(o.cache_dir));
+    const std::string key =
+        digest(id.content_digest + "\n" + joined(routines) + "\n" + compile_flags + "\n" +
+               compiler_identity(compiler) + "\n" + program_identity() + "\n" + abi_export_text);
+    const std::string library = cache.library_path(id.model_name, key);
+    if (::access(library.c_str(), R_OK) == 0) {
+        try {
+            auto model = std::make_unique<runtime::SharedModel>(library);
+            tell(o.progress, "using the compiled model cached in " + library);
+            return model;
+        } catch (const runtime::SharedModelError& e) {
+            // A damaged entry is rebuilt, not fatal.
+            tell(o.progress,
+                 std::string("recompiling a cached model that does not load: ") + e.what());
+        }
+    }
+    const std::string source = shared_model_source(derive(), routines);
+    const CompileEstimate estimate = cache.estimate(source.size());
+    char size[32];
+    std::snprintf(size, sizeof size, "%.2f MB", static_cast<double>(source.size()) / 1e6);
+    tell(o.notice, "compiling model '" + id.model_name + "' (" + joined(routines) + "; " + size +
+                       " of C++) with " + compiler + "; this usually takes about " +
+                       seconds_text(estimate.seconds) +
+                       (estimate.measured_here ? " here" : " (no compile timed here yet)") +
+                       "; later runs load it from " + cache.folder());
+    const auto start = std::chrono::steady_clock::now();
+    compile(compiler, source, library);
+    const double took =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    cache.record_compile(source.size(), took);
+    tell(o.progress, "compiled in " + seconds_text(took));
+    return std::make_unique<runtime::SharedModel>(library);
 }
 
 std::unique_ptr<runtime::SharedModel> load_compiled_model(const ir::System& eq,
-                                                          const JitOptions& o) {
-    auto say = [&](const std::string& s) {
-        if (o.progress) o.progress(s);
-    };
-    const std::string source = shared_model_source(eq);
-    const std::string compiler = compiler_of(o);
-    const std::string flags = "-std=c++17 -O2 -shared -fPIC -fvisibility=hidden";
-    const std::string key = digest(source + "\n" + compiler + "\n" + flags);
-    const std::string dir = cache_folder(o);
-    make_dirs(dir);
-    const std::string base = dir + "/" + eq.model_name + "-" + key;
-    const std::string library = base + ".so";
-    if (!exists(library)) {
-        say("compiling the generated model with " + compiler + " (cached in " + dir + ")");
-        const std::string tmp = base + ".tmp." + std::to_string(::getpid());
-        runtime::write_file_atomically(tmp + ".cpp", source);
-        const std::string log = tmp + ".log";
-        std::string cmd = shell_quote(compiler) + " " + flags + " -o " + shell_quote(tmp + ".so") +
-                          " " + shell_quote(tmp + ".cpp") + " > " + shell_quote(log) + " 2>&1";
-        int status = std::system(cmd.c_str());
-        std::remove((tmp + ".cpp").c_str());
-        if (status != 0) {
-            std::ifstream in(log);
-            std::stringstream messages;
-            messages << in.rdbuf();
-            std::remove(log.c_str());
-            std::remove((tmp + ".so").c_str());
-            throw std::runtime_error("the C++ compiler failed on the generated model (" + compiler +
-                                     "):\n" + messages.str().substr(0, 4000));
-        }
-        std::remove(log.c_str());
-        if (std::rename((tmp + ".so").c_str(), library.c_str()) != 0) {
-            std::remove((tmp + ".so").c_str());
-            throw std::runtime_error("cannot store the compiled model in '" + library + "'");
-        }
-    } else {
-        say("using the compiled model cached in " + library);
-    }
-    return std::make_unique<runtime::SharedModel>(library);
+                                                          const JitOptions& options) {
+    const std::vector<std::string> all{"rhs",     "rhs_jacobian", "mass_matrix",
+                                       "forcing", "jacobians",    "outputs"};
+    const ModelIdentity id{eq.model_name, digest(shared_model_source(eq, all)), all};
+    return load_compiled_model(
+        id, [&]() { return eq; }, options);
 }
 
 } // namespace yamsc::driver

@@ -12,8 +12,6 @@
 #include "driver/pipeline.hpp"
 #include "driver/sid_values.hpp"
 #include "model/expr_check.hpp"
-#include "symbolic/dag.hpp"
-#include "symbolic/linearize.hpp"
 
 #include <yamsc/atomic_file.hpp>
 #include <yamsc/csv.hpp>
@@ -36,26 +34,45 @@ struct Loaded {
     std::unique_ptr<runtime::SharedModel> library;
     runtime::ModelView view;
     std::vector<double> params;
-    FrontEnd front; // the checked model and its equations (lin: the operating point)
+    FrontEnd front; // the checked model (its equations are derived only to compile it)
 };
 
 /// `outputs` are checked against the model's data files before anything is derived.
+/// `routines`: those the command calls (jit.hpp); a cached library of the same
+/// model and routines is loaded without deriving the equations.
 std::optional<Loaded> load(const std::string& path, const std::vector<Assignment>& set,
                            const std::string& sid_spec, bool verbose, std::ostream& err,
-                           const std::vector<NamedFile>& outputs) {
+                           const std::vector<NamedFile>& outputs,
+                           const std::vector<std::string>& routines) {
     diag::Diagnostics diags;
     auto progress = [&](const std::string& s) {
         if (verbose) err << "yamsc: " << s << "\n";
     };
     FrontEnd fe =
-        run_front_end(path, Until::jacobians, diags, progress, Derivatives::automatic,
+        run_front_end(path, Until::model, diags, progress, Derivatives::automatic,
                       [&](const model::Model& m) { check_outputs(data_files_of(m), outputs); });
     err << diags.render();
     if (diags.has_errors()) return std::nullopt;
     JitOptions jit;
     jit.progress = progress;
+    jit.notice = [&](const std::string& s) { err << "yamsc: " << s << std::endl; };
+    const ModelIdentity id{fe.model->name, content_digest(*fe.source, *fe.model), routines};
+    // Reported as located diagnostics (exit 1), like the checker's errors.
+    struct NotDerived {};
+    auto derive = [&]() {
+        diag::Diagnostics derivation;
+        FrontEnd full = fe;
+        continue_front_end(full, path, Until::jacobians, derivation, progress);
+        err << derivation.render();
+        if (derivation.has_errors() || !full.system) throw NotDerived{};
+        return std::move(*full.system);
+    };
     Loaded l;
-    l.library = load_compiled_model(*fe.system, jit);
+    try {
+        l.library = load_compiled_model(id, derive, jit);
+    } catch (const NotDerived&) {
+        return std::nullopt;
+    }
     std::vector<std::optional<double>> defaults;
     for (double v : l.library->default_params())
         defaults.push_back(std::isnan(v) ? std::nullopt : std::optional<double>(v));
@@ -67,6 +84,33 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
     l.view = l.library->view(l.params);
     l.front = std::move(fe);
     return l;
+}
+
+/// Values of parameter expressions (the `initial` and `linearize` blocks) at
+/// the bound parameters; `names[i]` names values[i] in messages.
+std::vector<double> evaluate_at(const Loaded& l, const std::vector<double>& params,
+                                const std::vector<model::Expr>& values,
+                                const std::vector<std::string>& names, const char* block) {
+    model::NameValues bound;
+    const std::vector<std::string>& param_names = l.library->param_names();
+    for (std::size_t i = 0; i < param_names.size() && i < params.size(); ++i)
+        bound[param_names[i]] = params[i];
+    std::vector<double> out;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        std::string why;
+        const std::optional<double> x = model::evaluate_with(values[i], bound, why);
+        if (!x)
+            throw UserError(std::string("the ") + block + " value of '" +
+                            (i < names.size() ? names[i] : "?") + "' cannot be evaluated: " + why);
+        out.push_back(*x);
+    }
+    return out;
+}
+
+std::vector<std::string> primed(const std::vector<std::string>& names) {
+    std::vector<std::string> out;
+    for (const std::string& n : names) out.push_back(n + "'");
+    return out;
 }
 
 std::vector<double> inputs_of(const runtime::ModelView& v, const std::vector<Assignment>& u) {
@@ -93,15 +137,15 @@ double max_abs(const std::vector<double>& v) {
 /// overridden by --at (DOFs, rates, input channels) and --u (inputs).
 void operating_point(const Loaded& l, const std::vector<double>& params, const LinOptions& o,
                      std::vector<double>& q, std::vector<double>& qd, std::vector<double>& u) {
-    const symbolic::Equations& eq = *l.front.equations;
-    const symbolic::OperatingPoint op = symbolic::operating_point(*l.front.model, eq);
-    symbolic::Evaluator::Values values;
-    for (std::size_t i = 0; i < eq.params.size(); ++i) values[eq.params[i].sym] = params[i];
-    symbolic::Evaluator value(values);
-    for (const GiNaC::ex& e : op.q) q.push_back(value(e));
-    for (const GiNaC::ex& e : op.qd) qd.push_back(value(e));
-    for (const GiNaC::ex& e : op.u) u.push_back(value(e));
     const runtime::ModelView& v = l.view;
+    q.assign(static_cast<std::size_t>(v.nq), 0.0);
+    qd.assign(static_cast<std::size_t>(v.nq), 0.0);
+    u.assign(static_cast<std::size_t>(v.nu), 0.0);
+    if (const auto& point = l.front.model->operating_point) {
+        q = evaluate_at(l, params, point->q, v.dof_names, "linearize");
+        qd = evaluate_at(l, params, point->qd, primed(v.dof_names), "linearize");
+        u = evaluate_at(l, params, point->u, v.input_names, "linearize");
+    }
     for (const Assignment& a : o.at) {
         const std::string channel = a.name + std::string(static_cast<std::size_t>(a.primes), '\'');
         auto dof = std::find(v.dof_names.begin(), v.dof_names.end(), a.name);
@@ -167,21 +211,8 @@ void initial_state(const Loaded& l, const std::vector<Assignment>& ic, std::vect
     q.assign(static_cast<std::size_t>(v.nq), 0.0);
     qd.assign(static_cast<std::size_t>(v.nq), 0.0);
     if (const auto& init = l.front.model->initial_state) {
-        model::NameValues params;
-        const std::vector<std::string>& names = l.library->param_names();
-        for (std::size_t i = 0; i < names.size() && i < l.params.size(); ++i)
-            params[names[i]] = l.params[i];
-        auto evaluate = [&](const model::Expr& e, const std::string& name) {
-            std::string why;
-            const std::optional<double> x = model::evaluate_with(e, params, why);
-            if (!x)
-                throw UserError("the initial value of '" + name + "' cannot be evaluated: " + why);
-            return *x;
-        };
-        for (std::size_t i = 0; i < q.size(); ++i) {
-            q[i] = evaluate(init->q[i], v.dof_names[i]);
-            qd[i] = evaluate(init->qd[i], v.dof_names[i] + "'");
-        }
+        q = evaluate_at(l, l.params, init->q, v.dof_names, "initial");
+        qd = evaluate_at(l, l.params, init->qd, primed(v.dof_names), "initial");
     }
     std::vector<double> given_q, given_qd;
     bind_state(v.dof_names, ic, given_q, given_qd, "--ic");
@@ -256,7 +287,12 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     // A bad reference fails before anything is simulated or written.
     std::optional<Table> reference;
     if (!o.compare.empty()) reference = read_table(o.compare);
-    auto loaded = load(o.model, o.set, o.sid, o.verbose, err, outputs);
+    // rhs and outputs; CVODE's Newton iterations use the exact rhs_jacobian,
+    // and --linear linearizes with M and the Jacobians of F.
+    std::vector<std::string> routines{"rhs", "outputs"};
+    if (o.method == SimMethod::cvode) routines.push_back("rhs_jacobian");
+    if (o.linear) routines.insert(routines.end(), {"mass_matrix", "jacobians"});
+    auto loaded = load(o.model, o.set, o.sid, o.verbose, err, outputs, routines);
     if (!loaded) return 1;
     std::vector<double> q, qd;
     initial_state(*loaded, o.ic, q, qd);
@@ -311,7 +347,9 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     std::vector<NamedFile> inputs = sid_files_of(o.sid);
     inputs.push_back({"the model", o.model});
     check_outputs(inputs, outputs);
-    auto loaded = load(o.model, o.set, o.sid, false, err, outputs);
+    // The second-order model (M, F and its Jacobians) and, for the modes, A.
+    auto loaded = load(o.model, o.set, o.sid, false, err, outputs,
+                       {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians"});
     if (!loaded) return 1;
     if (o.sweep) return campbell(*loaded, o, out);
     const runtime::ModelView& v = loaded->view;

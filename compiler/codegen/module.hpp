@@ -202,6 +202,12 @@ struct Module {
 /// generated code cannot express.
 Module build_module(const ir::System& s, const Options& options = {});
 
+/// Keeps the public routines named in `wanted` (in the module's order) and the
+/// internal routines they call; drops every other. For a module compiled for
+/// one use only (the JIT): the C emitter's rk4_step needs rhs. Throws
+/// diag::InternalError for a name the module has no public routine of.
+void keep_routines(Module& module, const std::vector<std::string>& wanted);
+
 /// A readable, deterministic listing of the module (for `yamsc --dump=module`).
 std::string dump(const Module& module);
 

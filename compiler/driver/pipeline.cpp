@@ -1,6 +1,7 @@
 #include "driver/pipeline.hpp"
 
 #include "data/file_source.hpp"
+#include "diag/errors.hpp"
 #include "driver/files.hpp"
 #include "lower/lower.hpp"
 #include "parse/parser.hpp"
@@ -70,13 +71,19 @@ bool approximate(const model::Model& m, ir::System& s, diag::Diagnostics& diags)
 
 } // namespace
 
+std::string content_digest(const diag::SourceFile& source, const model::Model& m) {
+    std::string all = source.text();
+    for (const auto& f : m.files_read) {
+        diag::Diagnostics ignored;
+        if (auto data = read_source(f, ignored)) all += "\n" + data->text();
+    }
+    return digest(all);
+}
+
 FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& diags,
                        const std::function<void(const std::string&)>& progress,
                        Derivatives derivatives,
                        const std::function<void(const model::Model&)>& checked) {
-    auto say = [&](const std::string& s) {
-        if (progress) progress(s);
-    };
     FrontEnd fe;
     fe.source = read_source(path, diags);
     if (!fe.source) return fe;
@@ -87,31 +94,40 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
     if (!fe.model || diags.has_errors()) return fe;
     if (checked) checked(*fe.model);
     if (until == Until::model) return fe;
-    say(timed("parsed and checked", clock.seconds()));
+    if (progress) progress(timed("parsed and checked", clock.seconds()));
+    continue_front_end(fe, path, until, diags, progress, derivatives);
+    return fe;
+}
+
+void continue_front_end(FrontEnd& fe, const std::string& path, Until until,
+                        diag::Diagnostics& diags,
+                        const std::function<void(const std::string&)>& progress,
+                        Derivatives derivatives) {
+    if (!fe.model || !fe.source)
+        throw diag::InternalError("continue_front_end needs a checked model");
+    auto say = [&](const std::string& s) {
+        if (progress) progress(s);
+    };
+    Stopwatch clock;
     // Only the Jacobian stage can use the tangent form; `approx` needs M itself.
     const bool tangent =
         until == Until::jacobians && fe.model->approximations.empty() &&
         (derivatives == Derivatives::tangent ||
          (derivatives == Derivatives::automatic && fe.model->dofs.size() >= tangent_form_min_dofs));
     fe.equations = symbolic::derive(*fe.model, diags, !tangent);
-    if (!fe.equations || diags.has_errors()) return fe;
+    if (!fe.equations || diags.has_errors()) return;
     fe.equations->source_path = path;
     // The digest covers the data files too: generated code changes when they do.
-    std::string all = fe.source->text();
-    for (const auto& f : fe.model->files_read) {
-        diag::Diagnostics ignored;
-        if (auto data = read_source(f, ignored)) all += "\n" + data->text();
-    }
-    fe.equations->source_digest = digest(all);
+    fe.equations->source_digest = content_digest(*fe.source, *fe.model);
     say(timed("derived the equations of motion", clock.seconds()));
-    if (until == Until::equations) return fe;
+    if (until == Until::equations) return;
     fe.system = lower::lower(*fe.equations, symbolic::operating_point(*fe.model, *fe.equations));
     say(timed("imported the equations into the IR", clock.seconds()));
     if (!fe.model->approximations.empty()) {
-        if (!approximate(*fe.model, *fe.system, diags)) return fe;
+        if (!approximate(*fe.model, *fe.system, diags)) return;
         say(timed("approximated (approx)", clock.seconds()));
     }
-    if (until != Until::jacobians) return fe;
+    if (until != Until::jacobians) return;
     if (tangent) {
         passes::derive_tangent(*fe.system);
         say(timed("derived the tangent (directional derivatives)", clock.seconds()));
@@ -120,7 +136,7 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
         passes::output_jacobians(*fe.system);
         say(timed("derived the Jacobians", clock.seconds()));
     }
-    return fe;
+    return;
 }
 
 } // namespace yamsc::driver

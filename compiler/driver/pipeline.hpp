@@ -34,4 +34,15 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
                        Derivatives derivatives = Derivatives::automatic,
                        const std::function<void(const model::Model&)>& checked = {});
 
+/// Runs the stages after the checker up to `until` on a FrontEnd that stopped at
+/// Until::model (the JIT checks its cache in between: a hit derives nothing).
+void continue_front_end(FrontEnd& fe, const std::string& path, Until until,
+                        diag::Diagnostics& diags,
+                        const std::function<void(const std::string&)>& progress = {},
+                        Derivatives derivatives = Derivatives::automatic);
+
+/// The digest of a model by content: its text and every data file it read, in
+/// order (not their paths). Generated code records it; the JIT's cache keys on it.
+std::string content_digest(const diag::SourceFile& source, const model::Model& m);
+
 } // namespace yamsc::driver

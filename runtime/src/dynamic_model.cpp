@@ -45,6 +45,12 @@ Function resolve(void* handle, const char* symbol, const std::string& path) {
     return reinterpret_cast<Function>(address);
 }
 
+/// A routine the library may leave out (abi_export.hpp): null when absent.
+template <class Function> Function optional_routine(void* handle, const char* symbol) {
+    dlerror();
+    return reinterpret_cast<Function>(dlsym(handle, symbol));
+}
+
 std::vector<std::string> names_of(yamsc_name_fn name, int kind, int count,
                                   const std::string& path) {
     std::vector<std::string> names;
@@ -79,12 +85,14 @@ SharedModel::SharedModel(const std::string& path) : path_(path) {
     library->sizes = resolve<yamsc_sizes_fn>(h, "yamsc_sizes", path);
     library->name = resolve<yamsc_name_fn>(h, "yamsc_name", path);
     library->default_params = resolve<yamsc_default_params_fn>(h, "yamsc_default_params", path);
-    library->rhs = resolve<yamsc_rhs_fn>(h, "yamsc_rhs", path);
-    library->rhs_jacobian = resolve<yamsc_rhs_jacobian_fn>(h, "yamsc_rhs_jacobian", path);
-    library->mass_matrix = resolve<yamsc_mass_matrix_fn>(h, "yamsc_mass_matrix", path);
-    library->forcing = resolve<yamsc_forcing_fn>(h, "yamsc_forcing", path);
-    library->jacobians = resolve<yamsc_jacobians_fn>(h, "yamsc_jacobians", path);
-    library->outputs = resolve<yamsc_outputs_fn>(h, "yamsc_outputs", path);
+    library->rhs = optional_routine<yamsc_rhs_fn>(h, "yamsc_rhs");
+    library->rhs_jacobian = optional_routine<yamsc_rhs_jacobian_fn>(h, "yamsc_rhs_jacobian");
+    library->mass_matrix = optional_routine<yamsc_mass_matrix_fn>(h, "yamsc_mass_matrix");
+    library->forcing = optional_routine<yamsc_forcing_fn>(h, "yamsc_forcing");
+    library->jacobians = optional_routine<yamsc_jacobians_fn>(h, "yamsc_jacobians");
+    library->outputs = optional_routine<yamsc_outputs_fn>(h, "yamsc_outputs");
+    if (!library->rhs)
+        throw SharedModelError("'" + path + "' is not a yamsc model: symbol yamsc_rhs is missing");
 
     library->sizes(&nq_, &nu_, &np_, &ny_);
     if (nq_ < 0 || nu_ < 0 || np_ < 0 || ny_ < 0)
@@ -103,6 +111,19 @@ std::vector<double> SharedModel::default_params() const {
     library_->default_params(p.data());
     p.pop_back();
     return p;
+}
+
+std::vector<std::string> SharedModel::routines() const {
+    const std::pair<const char*, bool> all[] = {{"rhs", library_->rhs != nullptr},
+                                                {"rhs_jacobian", library_->rhs_jacobian != nullptr},
+                                                {"mass_matrix", library_->mass_matrix != nullptr},
+                                                {"forcing", library_->forcing != nullptr},
+                                                {"jacobians", library_->jacobians != nullptr},
+                                                {"outputs", library_->outputs != nullptr}};
+    std::vector<std::string> present;
+    for (const auto& [name, here] : all)
+        if (here) present.emplace_back(name);
+    return present;
 }
 
 int SharedModel::param_index(const std::string& name) const {
@@ -133,22 +154,26 @@ ModelView SharedModel::view(std::vector<double> params) const {
     v.rhs = [lib, p](double t, const double* x, const double* u, double* xdot) {
         lib->rhs(t, x, u, p->data(), xdot);
     };
-    v.rhs_jacobian = [lib, p](double t, const double* x, const double* u, double* J) {
-        lib->rhs_jacobian(t, x, u, p->data(), J);
-    };
-    v.mass_matrix = [lib, p](double t, const double* q, const double* u, double* M) {
-        lib->mass_matrix(t, q, u, p->data(), M);
-    };
-    v.forcing = [lib, p](double t, const double* q, const double* qd, const double* u, double* F) {
-        lib->forcing(t, q, qd, u, p->data(), F);
-    };
-    v.jacobians = [lib, p](double t, const double* q, const double* qd, const double* u,
-                           double* dF_dq, double* dF_dqd, double* dF_du) {
-        lib->jacobians(t, q, qd, u, p->data(), dF_dq, dF_dqd, dF_du);
-    };
-    v.outputs = [lib, p](double t, const double* q, const double* qd, const double* u, double* y) {
-        lib->outputs(t, q, qd, u, p->data(), y);
-    };
+    // Routines the library was compiled without stay empty (ModelView's contract).
+    if (lib->rhs_jacobian)
+        v.rhs_jacobian = [lib, p](double t, const double* x, const double* u, double* J) {
+            lib->rhs_jacobian(t, x, u, p->data(), J);
+        };
+    if (lib->mass_matrix)
+        v.mass_matrix = [lib, p](double t, const double* q, const double* u, double* M) {
+            lib->mass_matrix(t, q, u, p->data(), M);
+        };
+    if (lib->forcing)
+        v.forcing = [lib, p](double t, const double* q, const double* qd, const double* u,
+                             double* F) { lib->forcing(t, q, qd, u, p->data(), F); };
+    if (lib->jacobians)
+        v.jacobians = [lib, p](double t, const double* q, const double* qd, const double* u,
+                               double* dF_dq, double* dF_dqd, double* dF_du) {
+            lib->jacobians(t, q, qd, u, p->data(), dF_dq, dF_dqd, dF_du);
+        };
+    if (lib->outputs)
+        v.outputs = [lib, p](double t, const double* q, const double* qd, const double* u,
+                             double* y) { lib->outputs(t, q, qd, u, p->data(), y); };
     return v;
 }
 

@@ -58,7 +58,8 @@ TEST_CASE("yamsc lin: the model's operating point, a function of the parameters"
         CHECK(array(r.out, "q0")[0] == doctest::Approx(th0).epsilon(1e-15));
         CHECK(array(r.out, "u0")[0] == doctest::Approx(m * g * L * std::sin(th0)).epsilon(1e-14));
         CHECK(first_number(r.out, "equilibrium_residual") < 1e-12);
-        CHECK(r.err.empty());
+        // No warning (stderr may say that the model is being compiled).
+        CHECK(r.err.find("warning") == std::string::npos);
         const double wn = std::sqrt(g * std::cos(th0) / L);
         CHECK(first_number(r.out, "freq_hz") == doctest::Approx(wn / (2 * M_PI)).epsilon(1e-12));
         CHECK(first_number(r.out, "damping_ratio") ==

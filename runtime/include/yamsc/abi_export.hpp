@@ -13,6 +13,11 @@
 // Compile with `-shared -fPIC -fvisibility=hidden`: only the functions below are
 // exported, so the model's own symbols can never be interposed by the host.
 //
+// The routines (rhs, rhs_jacobian, mass_matrix, forcing, jacobians, outputs)
+// are optional: YAMSC_EXPORT_MODEL_INFO plus one YAMSC_EXPORT_<ROUTINE> per
+// routine the source defines. The loader requires the model information and
+// leaves a routine the library lacks empty in its views.
+//
 // Parameters cross the ABI as a flat array of `np` doubles in declaration
 // order (NS::Model::params_to_array / params_from_array).
 
@@ -62,7 +67,8 @@ inline const char* name_at(const char* const* names, int n, int i) {
 }
 } // namespace yamsc_abi_detail
 
-#define YAMSC_EXPORT_MODEL(NS)                                                                     \
+// The sizes, names and parameters: every library exports these.
+#define YAMSC_EXPORT_MODEL_INFO(NS)                                                                \
     extern "C" {                                                                                   \
     YAMSC_ABI_VISIBLE int yamsc_abi_version(void) {                                                \
         return YAMSC_ABI_VERSION;                                                                  \
@@ -90,31 +96,50 @@ inline const char* name_at(const char* const* names, int n, int i) {
     YAMSC_ABI_VISIBLE void yamsc_default_params(double* p) {                                       \
         NS::Model::params_to_array(NS::Model::Params{}, p);                                        \
     }                                                                                              \
-    YAMSC_ABI_VISIBLE void yamsc_rhs(double t, const double* x, const double* u, const double* p,  \
-                                     double* xdot) {                                               \
-        NS::Model::rhs(t, x, u, NS::Model::params_from_array(p), xdot);                            \
-    }                                                                                              \
-    YAMSC_ABI_VISIBLE void yamsc_rhs_jacobian(double t, const double* x, const double* u,          \
-                                              const double* p, double* J) {                        \
-        NS::Model::rhs_jacobian(t, x, u, NS::Model::params_from_array(p), J);                      \
-    }                                                                                              \
-    YAMSC_ABI_VISIBLE void yamsc_mass_matrix(double t, const double* q, const double* u,           \
-                                             const double* p, double* M) {                         \
-        NS::Model::mass_matrix(t, q, u, NS::Model::params_from_array(p), M);                       \
-    }                                                                                              \
-    YAMSC_ABI_VISIBLE void yamsc_forcing(double t, const double* q, const double* qd,              \
-                                         const double* u, const double* p, double* F) {            \
-        NS::Model::forcing(t, q, qd, u, NS::Model::params_from_array(p), F);                       \
-    }                                                                                              \
-    YAMSC_ABI_VISIBLE void yamsc_jacobians(double t, const double* q, const double* qd,            \
-                                           const double* u, const double* p, double* dF_dq,        \
-                                           double* dF_dqd, double* dF_du) {                        \
-        NS::Model::jacobians(t, q, qd, u, NS::Model::params_from_array(p), dF_dq, dF_dqd, dF_du);  \
-    }                                                                                              \
-    YAMSC_ABI_VISIBLE void yamsc_outputs(double t, const double* q, const double* qd,              \
-                                         const double* u, const double* p, double* y) {            \
-        NS::Model::outputs(t, q, qd, u, NS::Model::params_from_array(p), y);                       \
-    }                                                                                              \
     }
+
+// One macro per routine: a library compiled for one command (`yamsc sim`
+// compiles rhs and outputs) exports only the routines its source defines.
+#define YAMSC_EXPORT_RHS(NS)                                                                       \
+    extern "C" YAMSC_ABI_VISIBLE void yamsc_rhs(double t, const double* x, const double* u,        \
+                                                const double* p, double* xdot) {                   \
+        NS::Model::rhs(t, x, u, NS::Model::params_from_array(p), xdot);                            \
+    }
+#define YAMSC_EXPORT_RHS_JACOBIAN(NS)                                                              \
+    extern "C" YAMSC_ABI_VISIBLE void yamsc_rhs_jacobian(                                          \
+        double t, const double* x, const double* u, const double* p, double* J) {                  \
+        NS::Model::rhs_jacobian(t, x, u, NS::Model::params_from_array(p), J);                      \
+    }
+#define YAMSC_EXPORT_MASS_MATRIX(NS)                                                               \
+    extern "C" YAMSC_ABI_VISIBLE void yamsc_mass_matrix(                                           \
+        double t, const double* q, const double* u, const double* p, double* M) {                  \
+        NS::Model::mass_matrix(t, q, u, NS::Model::params_from_array(p), M);                       \
+    }
+#define YAMSC_EXPORT_FORCING(NS)                                                                   \
+    extern "C" YAMSC_ABI_VISIBLE void yamsc_forcing(double t, const double* q, const double* qd,   \
+                                                    const double* u, const double* p, double* F) { \
+        NS::Model::forcing(t, q, qd, u, NS::Model::params_from_array(p), F);                       \
+    }
+#define YAMSC_EXPORT_JACOBIANS(NS)                                                                 \
+    extern "C" YAMSC_ABI_VISIBLE void yamsc_jacobians(                                             \
+        double t, const double* q, const double* qd, const double* u, const double* p,             \
+        double* dF_dq, double* dF_dqd, double* dF_du) {                                            \
+        NS::Model::jacobians(t, q, qd, u, NS::Model::params_from_array(p), dF_dq, dF_dqd, dF_du);  \
+    }
+#define YAMSC_EXPORT_OUTPUTS(NS)                                                                   \
+    extern "C" YAMSC_ABI_VISIBLE void yamsc_outputs(double t, const double* q, const double* qd,   \
+                                                    const double* u, const double* p, double* y) { \
+        NS::Model::outputs(t, q, qd, u, NS::Model::params_from_array(p), y);                       \
+    }
+
+// Everything: a model compiled with all its routines (the generated default).
+#define YAMSC_EXPORT_MODEL(NS)                                                                     \
+    YAMSC_EXPORT_MODEL_INFO(NS)                                                                    \
+    YAMSC_EXPORT_RHS(NS)                                                                           \
+    YAMSC_EXPORT_RHS_JACOBIAN(NS)                                                                  \
+    YAMSC_EXPORT_MASS_MATRIX(NS)                                                                   \
+    YAMSC_EXPORT_FORCING(NS)                                                                       \
+    YAMSC_EXPORT_JACOBIANS(NS)                                                                     \
+    YAMSC_EXPORT_OUTPUTS(NS)
 
 #endif // YAMSC_ABI_EXPORT_HPP

@@ -19,7 +19,8 @@ public:
 
 class SharedModel {
 public:
-    /// dlopens `path` and checks the ABI version, every symbol and the sizes.
+    /// dlopens `path` and checks the ABI version, the model's information
+    /// symbols, rhs and the sizes. The other routines may be absent.
     explicit SharedModel(const std::string& path);
 
     const std::string& path() const { return path_; }
@@ -34,12 +35,15 @@ public:
 
     /// The model's defaults in declaration order; NaN where a parameter has no default.
     std::vector<double> default_params() const;
+    /// The routines the library holds (rhs always), in the ABI's order.
+    std::vector<std::string> routines() const;
     /// The index of a parameter, or -1.
     int param_index(const std::string& name) const;
 
     /// A view with the parameters bound (np values). Throws std::invalid_argument
     /// on a wrong count or a NaN value (a parameter without default left unset),
-    /// naming the parameter. The view keeps the library loaded: it stays valid
+    /// naming the parameter. Routines the library lacks are empty functions in
+    /// the view. The view keeps the library loaded: it stays valid
     /// after this SharedModel is destroyed.
     ModelView view(std::vector<double> params) const;
 

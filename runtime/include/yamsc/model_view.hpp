@@ -10,6 +10,9 @@
 
 namespace yamsc::runtime {
 
+/// Functions a model was compiled without are empty (`yamsc sim` compiles only
+/// what it calls); users test them before calling (the integrators fall back
+/// to finite differences without rhs_jacobian).
 struct ModelView {
     int nq = 0, nu = 0, ny = 0;
     std::vector<std::string> dof_names, input_names, output_names;
