@@ -23,7 +23,10 @@ const char* usage_text = R"(usage:
   yamsc check MODEL.mbd [--json]
   yamsc eval MODEL.mbd [--q v,..] [--qd v,..] [--u name=v,..] [--set name=v,..] [--t T] --json
   yamsc lin MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--json]
+                      [--trim [--hold dof,..]]
                       [--sweep NAME=FROM:STEP:TO [-o campbell.csv] [--plot campbell.svg]]
+  yamsc trim MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--hold dof,..]
+                       [--json]
   yamsc sim MODEL.mbd --tmax T --dt DT [--ic name=v,..] [--u name=v,..] [--set name=v,..]
                       [--method rk4|cvode] [--rtol R] [--atol A] [-o out.csv] [-v]
                       [--channels all|openfast] [--compare ref.csv] [--plot out.svg]
@@ -32,7 +35,7 @@ const char* usage_text = R"(usage:
   yamsc sid --elastodyn-tower FILE | --elastodyn-blade FILE --length L [--modes fa1,ss1,..]
             [--stations N] [-o body.sid]
   yamsc --version | --help
-eval, lin and sim take --sid body=file.sid: the shape integrals of a flexible body
+eval, lin, trim and sim take --sid body=file.sid: the shape integrals of a flexible body
 declared with `symbolic modes`, read from a SID file. Values accept `deg`: --set theta_t=5deg.
 sim starts from the model's `initial` block (zeros without one); --ic overrides single values.
 Exit status: 0 ok, 1 error in the model or its inputs, 2 usage error (also an output that
@@ -171,10 +174,14 @@ int run(int argc, char** argv) {
         return eval(o, std::cout, std::cerr);
     }
     if (cmd == "lin") {
-        Args a(argc, argv, 2, {"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot"},
-               {"--json"});
+        Args a(argc, argv, 2,
+               {"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot", "--hold"},
+               {"--json", "--trim"});
         LinOptions o;
         o.model = a.model();
+        o.trim = a.has("--trim");
+        o.hold = comma_list(a.get("--hold"));
+        if (!o.trim && !o.hold.empty()) throw UsageError("--hold needs --trim");
         if (a.has("--sweep")) o.sweep = parse_sweep(a.get("--sweep"));
         o.output = a.get("-o");
         o.plot = a.get("--plot");
@@ -187,6 +194,18 @@ int run(int argc, char** argv) {
         o.json = a.has("--json");
         if (o.sweep && o.json) throw UsageError("--sweep writes CSV, not --json");
         return lin(o, std::cout, std::cerr);
+    }
+    if (cmd == "trim") {
+        Args a(argc, argv, 2, {"--at", "--u", "--set", "--sid", "--hold"}, {"--json"});
+        TrimOptions o;
+        o.model = a.model();
+        o.at = a.assignments("--at");
+        o.u = a.assignments("--u");
+        o.set = a.assignments("--set");
+        o.sid = a.get("--sid");
+        o.hold = comma_list(a.get("--hold"));
+        o.json = a.has("--json");
+        return trim(o, std::cout, std::cerr);
     }
     if (cmd == "sid") {
         Args a(

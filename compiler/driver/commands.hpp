@@ -66,11 +66,21 @@ struct EvalOptions {
 struct LinOptions {
     std::string model;
     std::vector<Assignment> at, set, u;
-    std::string sid; // --sid body=file.sid,..
+    bool trim = false;             // --trim: linearize about the trimmed point
+    std::vector<std::string> hold; // --hold: DOFs trim keeps (besides those spinning)
+    std::string sid;               // --sid body=file.sid,..
     bool json = false;
     std::optional<Sweep> sweep; // --sweep NAME=FROM:STEP:TO: a Campbell diagram
     std::string output;         // -o: its CSV (default: stdout)
     std::string plot;           // --plot: its SVG
+};
+
+struct TrimOptions {
+    std::string model;
+    std::vector<Assignment> at, set, u; // the starting point, as for lin
+    std::string sid;
+    std::vector<std::string> hold; // DOFs kept as given (besides those with a rate)
+    bool json = false;
 };
 
 struct SimOptions {
@@ -108,6 +118,7 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err);
 int check(const CheckOptions& o, std::ostream& out, std::ostream& err);
 int eval(const EvalOptions& o, std::ostream& out, std::ostream& err);
 int lin(const LinOptions& o, std::ostream& out, std::ostream& err);
+int trim(const TrimOptions& o, std::ostream& out, std::ostream& err);
 int sim(const SimOptions& o, std::ostream& out, std::ostream& err);
 int sid(const SidOptions& o, std::ostream& out, std::ostream& err);
 int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream& err);

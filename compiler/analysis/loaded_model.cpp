@@ -1,0 +1,148 @@
+#include "analysis/loaded_model.hpp"
+
+#include "analysis/jit.hpp"
+#include "driver/bindings.hpp"
+#include "driver/sid_values.hpp"
+#include "model/expr_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+
+namespace yamsc::driver {
+
+namespace {
+
+/// Values of parameter expressions (the `initial` and `linearize` blocks) at
+/// the bound parameters; `names[i]` names values[i] in messages.
+std::vector<double> evaluate_at(const Loaded& l, const std::vector<double>& params,
+                                const std::vector<model::Expr>& values,
+                                const std::vector<std::string>& names, const char* block) {
+    model::NameValues bound;
+    const std::vector<std::string>& param_names = l.library->param_names();
+    for (std::size_t i = 0; i < param_names.size() && i < params.size(); ++i)
+        bound[param_names[i]] = params[i];
+    std::vector<double> out;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        std::string why;
+        const std::optional<double> x = model::evaluate_with(values[i], bound, why);
+        if (!x)
+            throw UserError(std::string("the ") + block + " value of '" +
+                            (i < names.size() ? names[i] : "?") + "' cannot be evaluated: " + why);
+        out.push_back(*x);
+    }
+    return out;
+}
+
+std::vector<std::string> primed(const std::vector<std::string>& names) {
+    std::vector<std::string> out;
+    for (const std::string& n : names) out.push_back(n + "'");
+    return out;
+}
+
+} // namespace
+
+std::optional<Loaded> load(const std::string& path, const std::vector<Assignment>& set,
+                           const std::string& sid_spec, bool verbose, std::ostream& err,
+                           const std::vector<NamedFile>& outputs,
+                           const std::vector<std::string>& routines) {
+    diag::Diagnostics diags;
+    auto progress = [&](const std::string& s) {
+        if (verbose) err << "yamsc: " << s << "\n";
+    };
+    FrontEnd fe =
+        run_front_end(path, Until::model, diags, progress, Derivatives::automatic,
+                      [&](const model::Model& m) { check_outputs(data_files_of(m), outputs); });
+    err << diags.render();
+    if (diags.has_errors()) return std::nullopt;
+    JitOptions jit;
+    jit.progress = progress;
+    jit.notice = [&](const std::string& s) { err << "yamsc: " << s << std::endl; };
+    const ModelIdentity id{fe.model->name, content_digest(*fe.source, *fe.model), routines};
+    // Reported as located diagnostics (exit 1), like the checker's errors.
+    struct NotDerived {};
+    auto derive = [&]() {
+        diag::Diagnostics derivation;
+        FrontEnd full = fe;
+        continue_front_end(full, path, Until::jacobians, derivation, progress);
+        err << derivation.render();
+        if (derivation.has_errors() || !full.system) throw NotDerived{};
+        return std::move(*full.system);
+    };
+    Loaded l;
+    try {
+        l.library = load_compiled_model(id, derive, jit);
+    } catch (const NotDerived&) {
+        return std::nullopt;
+    }
+    std::vector<std::optional<double>> defaults;
+    for (double v : l.library->default_params())
+        defaults.push_back(std::isnan(v) ? std::nullopt : std::optional<double>(v));
+    // --sid values first, so that --set still overrides them.
+    std::vector<Assignment> all =
+        sid_spec.empty() ? std::vector<Assignment>{} : sid_parameter_values(*fe.model, sid_spec);
+    all.insert(all.end(), set.begin(), set.end());
+    l.params = bind_named(l.library->param_names(), defaults, all, "parameter");
+    l.view = l.library->view(l.params);
+    l.front = std::move(fe);
+    return l;
+}
+
+std::vector<std::string> linear_model_routines() {
+    return {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians"};
+}
+
+std::vector<double> inputs_of(const runtime::ModelView& v, const std::vector<Assignment>& u) {
+    return bind_named(v.input_names, std::vector<std::optional<double>>(v.input_names.size(), 0.0),
+                      u, "input");
+}
+
+void operating_point(const Loaded& l, const std::vector<double>& params,
+                     const std::vector<Assignment>& at, const std::vector<Assignment>& u_given,
+                     std::vector<double>& q, std::vector<double>& qd, std::vector<double>& u) {
+    const runtime::ModelView& v = l.view;
+    q.assign(static_cast<std::size_t>(v.nq), 0.0);
+    qd.assign(static_cast<std::size_t>(v.nq), 0.0);
+    u.assign(static_cast<std::size_t>(v.nu), 0.0);
+    if (const auto& point = l.front.model->operating_point) {
+        q = evaluate_at(l, params, point->q, v.dof_names, "linearize");
+        qd = evaluate_at(l, params, point->qd, primed(v.dof_names), "linearize");
+        u = evaluate_at(l, params, point->u, v.input_names, "linearize");
+    }
+    for (const Assignment& a : at) {
+        const std::string channel = a.name + std::string(static_cast<std::size_t>(a.primes), '\'');
+        auto dof = std::find(v.dof_names.begin(), v.dof_names.end(), a.name);
+        auto input = std::find(v.input_names.begin(), v.input_names.end(), channel);
+        if (dof != v.dof_names.end() && a.primes <= 1)
+            (a.primes == 0 ? q : qd)[static_cast<std::size_t>(dof - v.dof_names.begin())] = a.value;
+        else if (input != v.input_names.end())
+            u[static_cast<std::size_t>(input - v.input_names.begin())] = a.value;
+        else {
+            std::vector<std::string> names = v.dof_names;
+            names.insert(names.end(), v.input_names.begin(), v.input_names.end());
+            throw UserError("--at: unknown DOF or input '" + channel + "'" +
+                            diag::did_you_mean(a.name, names));
+        }
+    }
+    std::vector<std::optional<double>> from_point(u.begin(), u.end());
+    u = bind_named(v.input_names, from_point, u_given, "input");
+}
+
+void initial_state(const Loaded& l, const std::vector<Assignment>& ic, std::vector<double>& q,
+                   std::vector<double>& qd) {
+    const runtime::ModelView& v = l.view;
+    q.assign(static_cast<std::size_t>(v.nq), 0.0);
+    qd.assign(static_cast<std::size_t>(v.nq), 0.0);
+    if (const auto& init = l.front.model->initial_state) {
+        q = evaluate_at(l, l.params, init->q, v.dof_names, "initial");
+        qd = evaluate_at(l, l.params, init->qd, primed(v.dof_names), "initial");
+    }
+    std::vector<double> given_q, given_qd;
+    bind_state(v.dof_names, ic, given_q, given_qd, "--ic");
+    for (const Assignment& a : ic) {
+        const auto i = static_cast<std::size_t>(
+            std::find(v.dof_names.begin(), v.dof_names.end(), a.name) - v.dof_names.begin());
+        (a.primes == 0 ? q : qd)[i] = (a.primes == 0 ? given_q : given_qd)[i];
+    }
+}
+} // namespace yamsc::driver

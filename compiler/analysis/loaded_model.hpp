@@ -1,0 +1,52 @@
+#pragma once
+// A model ready to run for `sim`, `lin` and `trim`: checked, compiled (only
+// the routines the command calls, analysis/jit.hpp), bound to its parameters;
+// and the points it starts from (`initial` and `linearize` blocks, --ic, --at).
+#include "driver/commands.hpp"
+#include "driver/outputs.hpp"
+#include "driver/pipeline.hpp"
+
+#include <yamsc/dynamic_model.hpp>
+
+#include <iosfwd>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace yamsc::driver {
+
+/// A model compiled and bound to its parameters, ready to run.
+struct Loaded {
+    std::unique_ptr<runtime::SharedModel> library;
+    runtime::ModelView view;
+    std::vector<double> params;
+    FrontEnd front; // the checked model (its equations are derived only to compile it)
+};
+
+/// `outputs` are checked against the model's data files before anything is derived.
+/// `routines`: those the command calls (jit.hpp); a cached library of the same
+/// model and routines is loaded without deriving the equations. nullopt when the
+/// model has errors (already printed to `err`).
+std::optional<Loaded> load(const std::string& path, const std::vector<Assignment>& set,
+                           const std::string& sid_spec, bool verbose, std::ostream& err,
+                           const std::vector<NamedFile>& outputs,
+                           const std::vector<std::string>& routines);
+
+/// The routines `lin` and `trim` call: the second-order model and A.
+std::vector<std::string> linear_model_routines();
+
+/// Constant inputs from --u (0 where not given).
+std::vector<double> inputs_of(const runtime::ModelView& v, const std::vector<Assignment>& u);
+
+/// The model's `linearize` point evaluated at `params`, then overridden by
+/// `at` (DOFs, rates, input channels) and `u` (inputs).
+void operating_point(const Loaded& l, const std::vector<double>& params,
+                     const std::vector<Assignment>& at, const std::vector<Assignment>& u_given,
+                     std::vector<double>& q, std::vector<double>& qd, std::vector<double>& u);
+
+/// The model's `initial` block at the bound parameters (zeros without one), then --ic.
+void initial_state(const Loaded& l, const std::vector<Assignment>& ic, std::vector<double>& q,
+                   std::vector<double>& qd);
+
+} // namespace yamsc::driver

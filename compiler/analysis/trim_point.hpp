@@ -1,0 +1,20 @@
+#pragma once
+// Trim as `yamsc trim` and `yamsc lin --trim` use it: which DOFs are held, the
+// Newton solve (runtime/trim.hpp), and the error that names the DOFs left out
+// of balance.
+#include <yamsc/trim.hpp>
+
+#include <string>
+#include <vector>
+
+namespace yamsc::driver {
+
+/// Trims from (q, q') at inputs u. Held: the DOFs named in `hold` and every
+/// DOF with a nonzero rate at the start (a spinning rotor keeps its speed).
+/// Throws UserError for an unknown name in `hold` and when Newton's method
+/// does not converge (with the residual of each free DOF).
+runtime::TrimResult trim_point(const runtime::ModelView& view, const std::vector<double>& q,
+                               const std::vector<double>& qd, const std::vector<double>& u,
+                               const std::vector<std::string>& hold);
+
+} // namespace yamsc::driver

@@ -1,0 +1,50 @@
+#pragma once
+// Trim: the operating point where the model is at rest in its own equations,
+// F(q, q', u) = 0 for every DOF that is not held, by Newton's method with the
+// generated Jacobian ∂F/∂q. Held DOFs keep their value and rate (a rotor
+// spinning at a set speed); their residual is the generalized force that would
+// hold them there (the torque a controller would have to apply).
+//
+// For a parked turbine this is the static equilibrium under gravity and
+// constant loads (q' = 0, q'' = 0). With a spinning rotor held at its speed it
+// is the quasi-static point at the given azimuth: the free DOFs' rates are
+// kept as given (normally 0) and their accelerations vanish there.
+#include "yamsc/model_view.hpp"
+
+#include <string>
+#include <vector>
+
+namespace yamsc::runtime {
+
+struct TrimSettings {
+    /// Converged when max |F| over the free DOFs is at most this fraction of
+    /// the generalized-force scale (max |F| at the start, at least 1).
+    double relative_tolerance = 1e-10;
+    /// Also converged when a Newton step moves no free DOF by more than this
+    /// times max(1, max |q|): F is then at its floating-point floor.
+    double step_tolerance = 1e-13;
+    int max_iterations = 50;
+};
+
+struct TrimResult {
+    std::vector<double> q, qd;    ///< the point (held DOFs as given)
+    std::vector<double> residual; ///< F(q, q', u) for every DOF
+    std::vector<bool> held;       ///< as given
+    int iterations = 0;           ///< Newton steps taken
+    double max_free_residual = 0; ///< max |F| over the free DOFs
+    double tolerance = 0;         ///< what max_free_residual had to reach
+    bool converged = false;
+};
+
+/// Newton's method from (q0, q0') at inputs u and time t. Each step solves
+/// J δ = -F over the free DOFs with the minimum-norm solution (a complete
+/// orthogonal decomposition), so that directions without stiffness (a free
+/// rotor's azimuth) are left where they are, and is halved until |F| decreases.
+/// The view needs forcing and jacobians. Throws std::invalid_argument for
+/// wrong sizes; a point that does not converge is returned with
+/// converged = false (the caller reports the residual by DOF).
+TrimResult trim(const ModelView& view, const std::vector<double>& q0,
+                const std::vector<double>& qd0, const std::vector<double>& u,
+                const std::vector<bool>& held, double t = 0.0, const TrimSettings& settings = {});
+
+} // namespace yamsc::runtime

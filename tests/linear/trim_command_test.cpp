@@ -1,0 +1,87 @@
+// `yamsc trim` and `yamsc lin --trim`: the pendulum held by a torque trims to
+// its parameter th0 from any start; the 2-DOF turbine's tower settles under the
+// nacelle's overhanging weight at the same point from a perturbed start, and
+// lin --trim linearizes there without the moving-point warning.
+#include "generated_model.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+using namespace linear_test;
+
+namespace {
+
+struct Run {
+    bool ok;
+    std::string out, err;
+};
+
+Run yamsc(const std::string& args) {
+    const std::string dir = scratch_dir("trim_command");
+    const bool ok =
+        run(std::string(YAMSC_EXE) + " " + args + " > " + dir + "/out.txt 2> " + dir + "/err.txt");
+    return {ok, read_file(dir + "/out.txt"), read_file(dir + "/err.txt")};
+}
+
+/// The first number of a JSON array `"key":[x, ...]`.
+double first_of(const std::string& json, const std::string& key) {
+    const auto at = json.find("\"" + key + "\":[");
+    REQUIRE(at != std::string::npos);
+    return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
+}
+
+const std::string source = YAMSC_SOURCE_DIR;
+const std::string pendulum = source + "/tests/linear/models/pendulum_op.mbd";
+const std::string turbine = source + "/models/nrel5mw_land_2dof.mbd";
+
+} // namespace
+
+TEST_CASE("trim: the pendulum held by its torque returns to th0 from any start") {
+    for (const char* start : {"theta=0", "theta=1.1", "theta=-0.2"}) {
+        CAPTURE(start);
+        const Run r = yamsc("trim " + pendulum + " --at " + start + " --json");
+        REQUIRE(r.ok);
+        CHECK(first_of(r.out, "q") == doctest::Approx(0.4).epsilon(1e-13));
+    }
+    // Another th0 moves the torque of the `linearize` block, and the trim with it.
+    const Run moved = yamsc("trim " + pendulum + " --set th0=0.9 --at theta=0 --json");
+    REQUIRE(moved.ok);
+    CHECK(first_of(moved.out, "q") == doctest::Approx(0.9).epsilon(1e-13));
+}
+
+TEST_CASE("trim: a torque beyond m g L has no equilibrium: exit 1 with the residual by DOF") {
+    const Run r = yamsc("trim " + pendulum + " --u tau=20");
+    CHECK_FALSE(r.ok);
+    CHECK(r.err.find("trim did not converge") != std::string::npos);
+    CHECK(r.err.find("theta") != std::string::npos);
+}
+
+TEST_CASE("trim: the 2-DOF turbine's static tower deflection, the same from a perturbed start") {
+    const Run at_rest = yamsc("trim " + turbine + " --json");
+    const Run perturbed = yamsc("trim " + turbine + " --at q=0.8 --json");
+    REQUIRE(at_rest.ok);
+    REQUIRE(perturbed.ok);
+    const double q = first_of(at_rest.out, "q");
+    CHECK(q == doctest::Approx(first_of(perturbed.out, "q")).epsilon(1e-10));
+    // The nacelle's weight ahead of the tower bends it upwind by about 9 mm.
+    CHECK(q == doctest::Approx(-0.009237054658).epsilon(1e-8));
+    CHECK(std::fabs(first_of(at_rest.out, "residual")) < 1e-6);
+
+    const Run lin = yamsc("lin " + turbine + " --trim");
+    REQUIRE(lin.ok);
+    CHECK(lin.err.find("not an equilibrium") == std::string::npos);
+    CHECK(lin.out.find("0.32696") != std::string::npos);
+    const Run plain = yamsc("lin " + turbine);
+    CHECK(plain.err.find("not an equilibrium") != std::string::npos);
+}
+
+TEST_CASE("trim: --hold keeps a DOF; unknown names are errors") {
+    const Run held = yamsc("trim " + pendulum + " --at theta=0.1 --hold theta --json");
+    REQUIRE(held.ok);
+    CHECK(first_of(held.out, "q") == 0.1);
+    const Run unknown = yamsc("trim " + pendulum + " --hold thta");
+    CHECK_FALSE(unknown.ok);
+    CHECK(unknown.err.find("did you mean 'theta'") != std::string::npos);
+}
