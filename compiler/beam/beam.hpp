@@ -36,6 +36,10 @@ struct Beam {
     std::vector<Station> stations; // sorted by s, covering 0..1
     std::vector<Mode> modes;       // in SID order
     int integration_stations = 50; // points of the integration grid (also the SID nodes)
+    // > 0: ElastoDyn's discretization instead (Grid::elements): this many equal
+    // elements, properties at their centres, midpoint sums. The SID then equals
+    // ElastoDyn's lumped blade or tower (docs/beam-preprocessing.md).
+    int elements = 0;
 };
 
 } // namespace yamsc::beam

@@ -73,8 +73,15 @@ std::vector<double> station_breaks(const Beam& beam) {
 } // namespace
 
 SampledBeam sample_beam(const Beam& beam) {
-    SampledBeam b{
-        Grid(beam.length, beam.integration_stations, station_breaks(beam)), {}, {}, {}, {}, {}, {}};
+    SampledBeam b{beam.elements > 0
+                      ? Grid::elements(beam.length, beam.elements)
+                      : Grid(beam.length, beam.integration_stations, station_breaks(beam)),
+                  {},
+                  {},
+                  {},
+                  {},
+                  {},
+                  {}};
     for (double z : b.grid.z()) {
         const double s = z / beam.length;
         b.m.push_back(interpolate(beam.stations, s, &Station::mass_per_length));

@@ -60,6 +60,7 @@ public:
         loads();
         initial_state();
         outputs();
+        displacement_outputs();
         return out_.str();
     }
 
@@ -423,7 +424,7 @@ private:
             out_ << "flexible blade" << n << " {\n    beam "
                  << mbd_string(in_.blade_paths[static_cast<std::size_t>(k - 1)])
                  << " elastodyn_blade {\n        length = TipRad - HubRad\n        modes = ("
-                 << modes << ")\n        stations = " << d_.blade_nodes << "\n    }\n}\n";
+                 << modes << ")\n        elements = " << d_.blade_nodes << "\n    }\n}\n";
             std::string steps;
             if (k > 1) steps = "rotate x " + mbd_number(360.0 * (k - 1) / d_.blades) + " deg; ";
             steps += "rotate y PreCone" + n + "; at (0, 0, HubRad)";
@@ -498,17 +499,7 @@ private:
                 "RotSpeed = " + mbd_number(v("RotSpeed")) + " rpm (" + d_.where.at("rotspeed") +
                     ")");
         }
-        if (flexible_blades() && (v("OoPDefl") != 0 || v("IPDefl") != 0)) {
-            diags_.warning(diag::Kind::NotSupported, {d_.ed, 0, 0},
-                           "OoPDefl and IPDefl are set as the tip deflections of the first flap "
-                           "and edge modes, without ElastoDyn's correction for pitch and twist");
-            for (int k = 1; k <= d_.blades; ++k) {
-                if (on("FlapDOF1") && v("OoPDefl") != 0)
-                    set(blade_dof(k, "flap1"), mbd_number(v("OoPDefl")), "OoPDefl");
-                if (on("EdgeDOF") && v("IPDefl") != 0)
-                    set(blade_dof(k, "edge1"), mbd_number(v("IPDefl")), "IPDefl");
-            }
-        }
+        if (flexible_blades() && (v("OoPDefl") != 0 || v("IPDefl") != 0)) blade_initial_state(set);
         if (lines.empty()) return;
         out_ << "\n# ---- initial conditions of the deck (`yamsc sim` starts here; --ic "
                 "overrides)\n";
@@ -519,6 +510,29 @@ private:
         if (on("GenDOF") && v("RotSpeed") != 0)
             out_ << "linearize { psi' = " << rpm(v("RotSpeed"))
                  << " }   # `yamsc lin` and `sim --linear` about the rotor speed\n";
+    }
+
+    /// ElastoDyn's InitBlDefl: OoPDefl and IPDefl (coned frame) solved for the flap and
+    /// edge DOFs with the tip values of the twisted shapes (docs/openfast.md).
+    template <class Set> void blade_initial_state(Set& set) {
+        const double deg = std::acos(-1.0) / 180;
+        for (int k = 1; k <= d_.blades; ++k) {
+            const std::size_t i = static_cast<std::size_t>(k - 1);
+            if (i >= in_.blade_tips.size()) break;
+            const BladeInitial b = initial_blade_deflection(
+                in_.blade_tips[i], v("BlPitch" + std::to_string(k)) * deg, v("OoPDefl"),
+                v("IPDefl"), on("FlapDOF1"), on("FlapDOF2"), on("EdgeDOF"));
+            if (!b.warning.empty())
+                diags_.warning(diag::Kind::NotSupported, {d_.ed, 0, 0},
+                               "blade " + std::to_string(k) + ": " + b.warning);
+            const std::string why = "OoPDefl = " + mbd_number(v("OoPDefl")) +
+                                    ", IPDefl = " + mbd_number(v("IPDefl")) +
+                                    " m at the tip, as ElastoDyn's InitBlDefl";
+            if (on("FlapDOF1")) set(blade_dof(k, "flap1"), mbd_number(b.flap1), why);
+            if (on("EdgeDOF")) set(blade_dof(k, "edge1"), mbd_number(b.edge1), why);
+            if (on("FlapDOF2") && !on("FlapDOF1"))
+                set(blade_dof(k, "flap2"), mbd_number(b.flap2), why);
+        }
     }
 
     static std::string lower(std::string s) {
@@ -560,6 +574,84 @@ private:
                 if (on(mode[0]))
                     output("Q_B" + std::to_string(k) + mode[2], blade_dof(k, mode[1]), "m");
     }
+    /// ElastoDyn's displacement channels (OutListParameters), in its signs and units.
+    void displacement_outputs() {
+        if (flexible_tower()) {
+            out_ << "\n# ---- ElastoDyn's tower-top displacements, in the tower-base frame\n";
+            out_ << "# (the nacelle frame starts at the tower top)\n";
+            output("TTDspFA", "position(nacelle).x in tower", "m");
+            output("TTDspSS", "position(nacelle).y in tower", "m");
+        }
+        if (on("TwFADOF1")) output("QD_TFA1", "q_fa1'", "m/s");
+        if (on("TwSSDOF1")) output("QD_TSS1", "-q_ss1'", "m/s");
+        if (on("TwFADOF2")) output("QD_TFA2", "q_fa2'", "m/s");
+        if (on("TwSSDOF2")) output("QD_TSS2", "-q_ss2'", "m/s");
+        if (on("YawDOF")) {
+            output("Q_Yaw", "nac_yaw", "rad");
+            output("QD_Yaw", "nac_yaw'", "rad/s");
+        }
+        if (on("GenDOF")) output("QD_GeAz", "psi'", "rad/s");
+        if (on("DrTrDOF")) output("QD_DrTr", "drtr'", "rad/s");
+        for (int k = 1; k <= d_.blades; ++k)
+            for (const auto& mode : blade_modes)
+                if (on(mode[0]))
+                    output("QD_B" + std::to_string(k) + mode[2], blade_dof(k, mode[1]) + "'",
+                           "m/s");
+        if (!flexible_blades() || in_.blade_tips.size() < static_cast<std::size_t>(d_.blades))
+            return;
+        // A point is fixed in its body's frame, so the tips' deflections are written from
+        // the tip node of each blade's SID (ElastoDyn's TwistedSF and AxRedBld at its
+        // TipNode): in the coned frame (the blade frame before its pitch).
+        out_ << "\n# ---- ElastoDyn's blade-tip deflections in the coned frame: OoPDefl (TipDxc)\n"
+                "# out of plane, IPDefl (TipDyc) in plane, TipDzc along the blade; the tip node's\n"
+                "# shapes (x, y per unit DOF; axial: second order) from the blade's SID\n";
+        for (int k = 1; k <= d_.blades; ++k) {
+            const BladeTipShapes& tip = in_.blade_tips[static_cast<std::size_t>(k - 1)];
+            const std::array<double, 2>* shapes[3] = {&tip.flap1, &tip.edge1, &tip.flap2};
+            std::string dx, dy;
+            for (std::size_t m = 0; m < 3; ++m) {
+                if (!on(blade_modes[m][0])) continue;
+                const std::string q = blade_dof(k, blade_modes[m][1]);
+                dx += term((*shapes[m])[0], q);
+                dy += term((*shapes[m])[1], q);
+            }
+            const std::string n = std::to_string(k);
+            const std::string pitch = "BlPitch" + n;
+            if (v(pitch) == 0) {
+                output("OoPDefl" + n, strip(dx), "m");
+                output("IPDefl" + n, strip(dy), "m");
+            } else {
+                output("OoPDefl" + n,
+                       "cos(" + pitch + ") * (" + strip(dx) + ") + sin(" + pitch + ") * (" +
+                           strip(dy) + ")",
+                       "m");
+                output("IPDefl" + n,
+                       "-sin(" + pitch + ") * (" + strip(dx) + ") + cos(" + pitch + ") * (" +
+                           strip(dy) + ")",
+                       "m");
+            }
+            std::string dz;
+            for (std::size_t a = 0; a < 3; ++a)
+                for (std::size_t b = a; b < 3; ++b) {
+                    if (!on(blade_modes[a][0]) || !on(blade_modes[b][0])) continue;
+                    const double c = (a == b ? 0.5 : 1.0) * tip.axial[a][b];
+                    dz += term(c, blade_dof(k, blade_modes[a][1]) + " * " +
+                                      blade_dof(k, blade_modes[b][1]));
+                }
+            output("TipDzc" + n, strip(dz), "m");
+        }
+    }
+    /// " + c * q" in the model's syntax (empty when c is 0).
+    static std::string term(double c, const std::string& q) {
+        if (c == 0) return "";
+        return (c < 0 ? " - " : " + ") + mbd_number(std::fabs(c)) + " * " + q;
+    }
+    /// A sum of terms without its leading " + " ("0" when empty).
+    static std::string strip(const std::string& sum) {
+        if (sum.empty()) return "0";
+        return sum.compare(0, 3, " - ") == 0 ? "-" + sum.substr(3) : sum.substr(3);
+    }
+
     void output(const std::string& name, const std::string& value, const std::string& unit) {
         out_ << pad("output " + name + " = " + value, 50) << "# [" << unit << "]\n";
     }

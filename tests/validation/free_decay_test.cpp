@@ -11,6 +11,7 @@
 #include <yamsc/atomic_file.hpp>
 
 #include <fstream>
+#include <map>
 #include <regex>
 
 using namespace validation;
@@ -132,4 +133,32 @@ TEST_CASE("floating 3 DOF (surge, pitch, tower FA1) agrees with OpenFAST; linear
     CHECK(f[0] == doctest::Approx(0.1007).epsilon(0.001));
     CHECK(f[1] == doctest::Approx(0.8000).epsilon(0.001));
     plot(floating_case, nonlinear, linear);
+}
+
+TEST_CASE("land-based 16 DOF (every ElastoDyn DOF, 30 s): DOF channels against OpenFAST") {
+    // The full onshore NREL 5-MW: tower 2+2 modes, yaw, generator, drivetrain, three
+    // blades with flap 1, edge 1, flap 2 (issue 13). The generated model is compiled
+    // once (about 90 s); the nonlinear run only.
+    const Case& c = land_16dof_case;
+    convert(c);
+    const Table sim = simulate(c, false);
+    const Table reference = yamsc::driver::read_table(reference_csv(c));
+    const Comparison cmp = yamsc::driver::compare_tables(sim, reference);
+    MESSAGE(c.model + " nonlinear\n" + yamsc::driver::format_comparison(cmp, reference_csv(c)));
+    // What yamsc achieves today (docs/validation.md), with a little room: the issue's
+    // target is 1 % on every channel.
+    const std::map<std::string, double> measured{
+        {"Q_TFA1_[m]", 1}, {"Q_TSS1_[m]", 1}, {"Q_TFA2_[m]", 1}, {"Q_TSS2_[m]", 1},
+        {"NacYaw_[deg]", 1}, {"RotSpeed_[rpm]", 1}, {"Q_DrTr_[rad]", 1}, {"Q_B1F1_[m]", 1},
+        {"Q_B1E1_[m]", 1}, {"Q_B1F2_[m]", 1}, {"Q_B2F1_[m]", 1}, {"Q_B2E1_[m]", 1},
+        {"Q_B2F2_[m]", 1}, {"Q_B3F1_[m]", 1}, {"Q_B3E1_[m]", 1}, {"Q_B3F2_[m]", 1}};
+    for (const std::string& channel : c.channels) {
+        CAPTURE(channel);
+        const ChannelScore* s = nullptr;
+        for (const ChannelScore& x : cmp.channels)
+            if (x.name == channel) s = &x;
+        REQUIRE(s);
+        CHECK(s->samples == static_cast<std::size_t>(c.tmax / 0.01 + 1.5));
+        CHECK(s->mean_rel_error < measured.at(channel));
+    }
 }
