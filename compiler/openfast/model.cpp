@@ -388,27 +388,34 @@ private:
     void rotor() {
         const std::string shaft = "at (0, 0, Twr2Shft); rotate y -ShftTilt; at (OverHang, 0, 0)";
         const std::string spin = on("GenDOF") ? "psi" : "psi0 + Omega0 * t";
-        const std::string gen_inertia = "GenIner * GBRatio^2";
         std::string rotor_name = flexible_blades() ? "hub" : "rotor";
         std::string rotor_parent = "nacelle", rotor_steps = shaft + "; rotate x " + spin;
+        // ElastoDyn's generator turns at GBRatio times the generator azimuth with the
+        // inertia GenIner about the shaft: its spin energy is that of GenIner GBRatio^2
+        // on the low-speed shaft, its angular momentum (gyroscopic moments on the nacelle
+        // and tower) only GBRatio times GenIner's. A body on the low-speed shaft with
+        // GenIner GBRatio^2 would carry GBRatio times too much (docs/openfast.md).
+        out_ << "# The generator: GenIner about the high-speed shaft, geared to the rotor.\n";
+        out_ << "rigid generator { mass = 0; inertia = (GenIner, 0, 0) }\n";
+        out_ << "joint nacelle -> generator { " << shaft << "; rotate x GBRatio * "
+             << (on("GenDOF") ? spin : "(" + spin + ")") << " }\n";
         if (on("DrTrDOF")) {
-            out_ << "# The generator side of the drivetrain (its inertia seen from the low-speed "
-                    "shaft)\n# and the rotor, twisted by drtr against the drivetrain spring.\n";
-            out_ << "rigid gen_shaft { mass = 0; inertia = (" << gen_inertia << ", 0, 0) }\n";
+            out_ << "# The generator side of the drivetrain (the low-speed shaft at the generator "
+                    "azimuth)\n# and the rotor, twisted by drtr against the drivetrain spring.\n";
+            out_ << "rigid gen_shaft { mass = 0 }\n";
             out_ << "joint nacelle -> gen_shaft { " << shaft << "; rotate x " << spin << " }\n";
             rotor_parent = "gen_shaft";
             rotor_steps = "rotate x drtr";
         }
-        const std::string axial = on("DrTrDOF") ? "" : " + " + gen_inertia;
         if (flexible_blades()) {
-            out_ << "rigid hub { mass = HubMass; com = (HubCM, 0, 0); inertia = (HubIner" << axial
-                 << ", 0, 0) }\n";
+            out_
+                << "rigid hub { mass = HubMass; com = (HubCM, 0, 0); inertia = (HubIner, 0, 0) }\n";
         } else {
             const RigidProperties& r = *in_.rotor;
             const bool offset = r.cm[1] != 0 || r.cm[2] != 0;
             const bool products = r.inertia[3] != 0 || r.inertia[4] != 0 || r.inertia[5] != 0;
             out_ << "rigid rotor {\n    mass = RotMass\n    com = (RotCMx, "
-                 << (offset ? "RotCMy, RotCMz" : "0, 0") << ")\n    inertia = (RotIxx" << axial
+                 << (offset ? "RotCMy, RotCMz" : "0, 0") << ")\n    inertia = (RotIxx"
                  << ", RotIyy, RotIzz" << (products ? ", RotIxy, RotIyz, RotIxz" : "") << ")\n}\n";
         }
         out_ << "joint " << rotor_parent << " -> " << rotor_name << " { " << rotor_steps << " }\n";
