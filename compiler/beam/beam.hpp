@@ -40,6 +40,11 @@ struct Beam {
     // elements, properties at their centres, midpoint sums. The SID then equals
     // ElastoDyn's lumped blade or tower (docs/beam-preprocessing.md).
     int elements = 0;
+    // With `elements`: true for ElastoDyn's blades, whose shapes are the running
+    // integrals of the (twisted) curvature on the elements (TwistedSF); false for its
+    // tower, whose shapes and slopes are the polynomial's own values (SHP). Without
+    // `elements` the exact integrals make both the same.
+    bool integrated_shapes = true;
 };
 
 } // namespace yamsc::beam

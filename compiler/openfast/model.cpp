@@ -355,7 +355,7 @@ private:
                     modes += (modes.empty() ? "" : ", ") + std::string(m) + " -> q_" + m;
             out_ << "flexible tower {\n    beam " << mbd_string(in_.tower_path)
                  << " elastodyn_tower {\n        length = TowerHt - TowerBsHt\n        modes = ("
-                 << modes << ")\n        stations = " << d_.tower_nodes << "\n    }\n}\n";
+                 << modes << ")\n        elements = " << d_.tower_nodes << "\n    }\n}\n";
             top = "joint tower.tip -> ";
         } else {
             out_ << "rigid tower { mass = TwrMass; com = (0, 0, TwrCMz); inertia = (TwrIner, "
