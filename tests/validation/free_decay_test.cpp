@@ -137,8 +137,10 @@ TEST_CASE("floating 3 DOF (surge, pitch, tower FA1) agrees with OpenFAST; linear
 
 TEST_CASE("land-based 16 DOF (every ElastoDyn DOF, 30 s): DOF channels against OpenFAST") {
     // The full onshore NREL 5-MW: tower 2+2 modes, yaw, generator, drivetrain, three
-    // blades with flap 1, edge 1, flap 2 (issue 13). The generated model is compiled
-    // once (about 90 s); the nonlinear run only.
+    // blades with flap 1, edge 1, flap 2 (issue 13), nonlinear only (the generated
+    // model compiles in about a minute). Bounds: what yamsc achieves today
+    // (docs/validation.md) with a little room; the issue's target is 1 % everywhere,
+    // which every channel but the rotor speed (1.26 %) meets.
     const Case& c = land_16dof_case;
     convert(c);
     const Table sim = simulate(c, false);
@@ -147,20 +149,48 @@ TEST_CASE("land-based 16 DOF (every ElastoDyn DOF, 30 s): DOF channels against O
     const std::string report =
         c.model + " nonlinear\n" + yamsc::driver::format_comparison(cmp, reference_csv(c));
     MESSAGE(report);
-    // What yamsc achieves today (docs/validation.md), with a little room: the issue's
-    // target is 1 % on every channel.
-    const std::map<std::string, double> measured{
-        {"Q_TFA1_[m]", 1},   {"Q_TSS1_[m]", 1},     {"Q_TFA2_[m]", 1},   {"Q_TSS2_[m]", 1},
-        {"NacYaw_[deg]", 1}, {"RotSpeed_[rpm]", 1}, {"Q_DrTr_[rad]", 1}, {"Q_B1F1_[m]", 1},
-        {"Q_B1E1_[m]", 1},   {"Q_B1F2_[m]", 1},     {"Q_B2F1_[m]", 1},   {"Q_B2E1_[m]", 1},
-        {"Q_B2F2_[m]", 1},   {"Q_B3F1_[m]", 1},     {"Q_B3E1_[m]", 1},   {"Q_B3F2_[m]", 1}};
-    for (const std::string& channel : c.channels) {
+    const std::map<std::string, double> bounds{
+        // the DOFs
+        {"Q_TFA1_[m]", 0.0003},
+        {"Q_TSS1_[m]", 0.001},
+        {"Q_TFA2_[m]", 0.009},
+        {"Q_TSS2_[m]", 0.004},
+        {"NacYaw_[deg]", 0.011},
+        {"RotSpeed_[rpm]", 0.014},
+        {"Q_DrTr_[rad]", 0.006},
+        {"Q_B1F1_[m]", 0.005},
+        {"Q_B1E1_[m]", 0.004},
+        {"Q_B1F2_[m]", 0.009},
+        {"Q_B2F1_[m]", 0.006},
+        {"Q_B2E1_[m]", 0.0045},
+        {"Q_B2F2_[m]", 0.009},
+        {"Q_B3F1_[m]", 0.004},
+        {"Q_B3E1_[m]", 0.004},
+        {"Q_B3F2_[m]", 0.009},
+        // ElastoDyn's displacement channels (docs/openfast.md)
+        {"TTDspFA_[m]", 0.0003},
+        {"TTDspSS_[m]", 0.001},
+        {"OoPDefl1_[m]", 0.005},
+        {"IPDefl1_[m]", 0.004},
+        {"OoPDefl2_[m]", 0.0065},
+        {"IPDefl2_[m]", 0.004},
+        {"OoPDefl3_[m]", 0.0045},
+        {"IPDefl3_[m]", 0.0035},
+        {"TipDzc1_[m]", 0.005}};
+    for (const auto& [channel, bound] : bounds) {
         CAPTURE(channel);
         const ChannelScore* s = nullptr;
         for (const ChannelScore& x : cmp.channels)
             if (x.name == channel) s = &x;
         REQUIRE(s);
         CHECK(s->samples == static_cast<std::size_t>(c.tmax / 0.01 + 1.5));
-        CHECK(s->mean_rel_error < measured.at(channel));
+        CHECK(s->mean_rel_error < bound);
+        if (channel != "RotSpeed_[rpm]") CHECK(s->mean_rel_error < 0.01);
     }
+    // ElastoDyn's initial blade deflection: OoPDefl = 2 m on the twisted blade.
+    const int f1 = sim.find("Q_B1F1_[m]"), e1 = sim.find("Q_B1E1_[m]");
+    REQUIRE((f1 > 0 && e1 > 0));
+    CHECK(sim.data[static_cast<std::size_t>(f1)][0] == doctest::Approx(1.9752467222).epsilon(1e-9));
+    CHECK(sim.data[static_cast<std::size_t>(e1)][0] ==
+          doctest::Approx(0.25352369297).epsilon(1e-9));
 }
