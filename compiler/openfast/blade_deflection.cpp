@@ -9,6 +9,41 @@
 
 namespace yamsc::driver {
 
+namespace {
+
+/// A station property, linear in the span fraction (as ElastoDyn interpolates).
+double mass_at(const beam::Beam& b, double s) {
+    const auto& st = b.stations;
+    if (s <= st.front().s) return st.front().mass_per_length;
+    for (std::size_t i = 1; i < st.size(); ++i)
+        if (s <= st[i].s) {
+            const double t = (s - st[i - 1].s) / (st[i].s - st[i - 1].s);
+            return (1 - t) * st[i - 1].mass_per_length + t * st[i].mass_per_length;
+        }
+    return st.back().mass_per_length;
+}
+
+/// See BladeTipShapes::spin_inertia. The SID's nodes 1..N are the element centres.
+std::array<std::array<double, 3>, 3> spin_inertia(const beam::Beam& b, const sid::Sid& sid,
+                                                  double hub_radius, double cone) {
+    std::array<std::array<double, 3>, 3> c{};
+    const double dr = b.length / b.elements, sb = std::sin(cone), cb = std::cos(cone);
+    for (int e = 0; e < b.elements; ++e) {
+        const double r = (e + 0.5) * dr;
+        const double m = mass_at(b, r / b.length) * dr;
+        const sid::Node& n = sid.nodes[static_cast<std::size_t>(e + 1)];
+        for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k)
+                c[static_cast<std::size_t>(j)][static_cast<std::size_t>(k)] +=
+                    m * (n.phi.at0(1, j) * n.phi.at0(1, k) +
+                         sb * sb * n.phi.at0(0, j) * n.phi.at0(0, k) +
+                         cb * cb * (hub_radius + r) * n.phi.at1(2, j, k));
+    }
+    return c;
+}
+
+} // namespace
+
 std::optional<std::vector<BladeTipShapes>> blade_tip_shapes(const OpenFastDeck& deck,
                                                             diag::Diagnostics& diags) {
     std::vector<BladeTipShapes> out;
@@ -31,6 +66,9 @@ std::optional<std::vector<BladeTipShapes>> blade_tip_shapes(const OpenFastDeck& 
             for (int k = 0; k < 3; ++k)
                 t.axial[static_cast<std::size_t>(j)][static_cast<std::size_t>(k)] =
                     tip.phi.at1(2, j, k);
+        const int k = static_cast<int>(out.size()) + 1;
+        t.spin_inertia = spin_inertia(*blade, sid, deck["HubRad"],
+                                      deck["PreCone" + std::to_string(k)] * std::acos(-1.0) / 180);
         out.push_back(t);
     }
     return out;

@@ -19,10 +19,15 @@ struct BladeTipShapes {
     /// d2(u_z)/dq_j dq_k of the tip along the blade (j, k: flap1, edge1, flap2): minus
     /// ElastoDyn's AxRedBld at the TipNode.
     std::array<std::array<double, 3>, 3> axial{};
+    /// Second-order part of the blade's inertia about the shaft axis, per q_j q_k
+    /// (flap1, edge1, flap2), for the cone `PreCone` and the root at `HubRad`:
+    /// sum over ElastoDyn's elements of m [Phi_y Phi_y + sin^2 b Phi_x Phi_x
+    /// - cos^2 b (HubRad + r) AxRedBld]. The SID's inertia is first order in q.
+    std::array<std::array<double, 3>, 3> spin_inertia{};
 };
 
-/// The tip shapes of every blade of the deck, from its blade files discretized as
-/// ElastoDyn does (BldNodes elements). nullopt after reporting errors.
+/// The tip shapes (and the second-order spin inertia) of every blade of the deck, from its blade
+/// files discretized as ElastoDyn does (BldNodes elements). nullopt after reporting errors.
 std::optional<std::vector<BladeTipShapes>> blade_tip_shapes(const OpenFastDeck& deck,
                                                             diag::Diagnostics& diags);
 

@@ -473,6 +473,45 @@ private:
                 if (on(mode[0]))
                     out_ << "genforce " << blade_dof(k, mode[1]) << " = "
                          << blade_dof(k, mode[1], "f_") << "\n";
+        spin_inertia_torque();
+    }
+
+    /// The blades' inertia about the shaft changes to second order with their
+    /// deflection (the flapped blade shortens radially, the edge deflection moves mass
+    /// sideways); ElastoDyn's kinematics hold it, the SID's inertia is first order in q.
+    /// Its missing rate of angular momentum, -d/dt(J2(q) Omega), acts on the hub. The
+    /// blades' equations already carry its counterpart, the centrifugal stiffening.
+    void spin_inertia_torque() {
+        if (!flexible_blades() || in_.blade_tips.size() < static_cast<std::size_t>(d_.blades))
+            return;
+        std::string j2, j2dot;
+        for (int k = 1; k <= d_.blades; ++k) {
+            const auto& c = in_.blade_tips[static_cast<std::size_t>(k - 1)].spin_inertia;
+            for (std::size_t a = 0; a < 3; ++a) {
+                if (!on(blade_modes[a][0])) continue;
+                const std::string qa = blade_dof(k, blade_modes[a][1]);
+                for (std::size_t b = 0; b < 3; ++b) {
+                    if (!on(blade_modes[b][0])) continue;
+                    const std::string qb = blade_dof(k, blade_modes[b][1]);
+                    if (b >= a) j2 += term((a == b ? 1 : 2) * c[a][b], qa + " * " + qb);
+                    j2dot += term(2 * c[a][b], qa + " * " + qb + "'");
+                }
+            }
+        }
+        std::string omega, omega_dot;
+        if (on("GenDOF")) {
+            omega = on("DrTrDOF") ? "(psi' + drtr')" : "psi'";
+            omega_dot = on("DrTrDOF") ? "(psi'' + drtr'')" : "psi''";
+        } else {
+            omega = on("DrTrDOF") ? "(Omega0 + drtr')" : "Omega0";
+            omega_dot = on("DrTrDOF") ? "drtr''" : "";
+        }
+        out_
+            << "# The blades' second-order inertia about the shaft, J2 = sum c q_j q_k (the SID's\n"
+               "# is first order; docs/openfast.md): its rate of angular momentum on the hub.\n";
+        out_ << "torque on hub in hub = (-((" << strip(j2dot) << ") * " << omega;
+        if (!omega_dot.empty()) out_ << " + (" << strip(j2) << ") * " << omega_dot;
+        out_ << "), 0, 0)\n";
     }
 
     void initial_state() {

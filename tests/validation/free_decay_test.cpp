@@ -139,8 +139,8 @@ TEST_CASE("land-based 16 DOF (every ElastoDyn DOF, 30 s): DOF channels against O
     // The full onshore NREL 5-MW: tower 2+2 modes, yaw, generator, drivetrain, three
     // blades with flap 1, edge 1, flap 2 (issue 13), nonlinear only (the generated
     // model compiles in about a minute). Bounds: what yamsc achieves today
-    // (docs/validation.md) with a little room; the issue's target is 1 % everywhere,
-    // which every channel but the rotor speed (1.26 %) meets.
+    // (docs/validation.md) with a little room; the issue's target, 1 % on every
+    // channel, is met (the yaw angle, 0.98 %, is the closest).
     const Case& c = land_16dof_case;
     convert(c);
     const Table sim = simulate(c, false);
@@ -154,12 +154,12 @@ TEST_CASE("land-based 16 DOF (every ElastoDyn DOF, 30 s): DOF channels against O
         {"Q_TFA1_[m]", 0.0003},
         {"Q_TSS1_[m]", 0.001},
         {"Q_TFA2_[m]", 0.009},
-        {"Q_TSS2_[m]", 0.004},
-        {"NacYaw_[deg]", 0.011},
-        {"RotSpeed_[rpm]", 0.014},
-        {"Q_DrTr_[rad]", 0.006},
-        {"Q_B1F1_[m]", 0.005},
-        {"Q_B1E1_[m]", 0.004},
+        {"Q_TSS2_[m]", 0.006},
+        {"NacYaw_[deg]", 0.0099},
+        {"RotSpeed_[rpm]", 0.0065},
+        {"Q_DrTr_[rad]", 0.009},
+        {"Q_B1F1_[m]", 0.0045},
+        {"Q_B1E1_[m]", 0.0042},
         {"Q_B1F2_[m]", 0.009},
         {"Q_B2F1_[m]", 0.006},
         {"Q_B2E1_[m]", 0.0045},
@@ -170,11 +170,11 @@ TEST_CASE("land-based 16 DOF (every ElastoDyn DOF, 30 s): DOF channels against O
         // ElastoDyn's displacement channels (docs/openfast.md)
         {"TTDspFA_[m]", 0.0003},
         {"TTDspSS_[m]", 0.001},
-        {"OoPDefl1_[m]", 0.005},
-        {"IPDefl1_[m]", 0.004},
+        {"OoPDefl1_[m]", 0.0045},
+        {"IPDefl1_[m]", 0.0045},
         {"OoPDefl2_[m]", 0.0065},
-        {"IPDefl2_[m]", 0.004},
-        {"OoPDefl3_[m]", 0.0045},
+        {"IPDefl2_[m]", 0.0045},
+        {"OoPDefl3_[m]", 0.004},
         {"IPDefl3_[m]", 0.0035},
         {"TipDzc1_[m]", 0.005}};
     for (const auto& [channel, bound] : bounds) {
@@ -185,7 +185,7 @@ TEST_CASE("land-based 16 DOF (every ElastoDyn DOF, 30 s): DOF channels against O
         REQUIRE(s);
         CHECK(s->samples == static_cast<std::size_t>(c.tmax / 0.01 + 1.5));
         CHECK(s->mean_rel_error < bound);
-        if (channel != "RotSpeed_[rpm]") CHECK(s->mean_rel_error < 0.01);
+        CHECK(s->mean_rel_error < 0.01); // the target of issue 13
     }
     // ElastoDyn's initial blade deflection: OoPDefl = 2 m on the twisted blade.
     const int f1 = sim.find("Q_B1F1_[m]"), e1 = sim.find("Q_B1E1_[m]");
