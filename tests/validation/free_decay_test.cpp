@@ -194,3 +194,34 @@ TEST_CASE("land-based 16 DOF (every ElastoDyn DOF, 30 s): DOF channels against O
     CHECK(sim.data[static_cast<std::size_t>(e1)][0] ==
           doctest::Approx(0.25352369297).epsilon(1e-9));
 }
+
+TEST_CASE("parked 15 DOF: the linear model has OpenFAST's linearization frequencies") {
+    // OpenFAST v5's linearization of the 16-DOF deck with the rotor parked and the
+    // generator locked (tests/data/reference/linearization/parked_modes.csv), about
+    // the undeflected state; `yamsc lin` about the same point.
+    const Case parked{
+        "linearization/decks/A_parked", "land_parked", 0, {}, "NREL5MW_Onshore_FreeDecay.fst"};
+    convert(parked);
+    yamsc::driver::LinOptions o;
+    o.model = model_path(parked);
+    std::ostringstream out, err;
+    REQUIRE(yamsc::driver::lin(o, out, err) == 0);
+    std::vector<double> f;
+    std::istringstream lines(out.str());
+    for (std::string line; std::getline(lines, line);) {
+        std::istringstream row(line);
+        int mode = 0;
+        double hz = 0;
+        if (row >> mode >> hz) f.push_back(hz);
+    }
+    MESSAGE(out.str());
+    const std::vector<double> openfast{0.001889, 0.313956, 0.324409, 0.620993, 0.666692,
+                                       0.699050, 0.960129, 1.083600, 1.160541, 1.911082,
+                                       2.007350, 2.538394, 2.916144, 2.954968, 3.687862};
+    REQUIRE(f.size() == openfast.size());
+    CHECK(f[0] < 0.002); // free yaw: a near-zero root
+    for (std::size_t i = 1; i < f.size(); ++i) {
+        CAPTURE(i);
+        CHECK(f[i] == doctest::Approx(openfast[i]).epsilon(2e-4)); // measured: <= 1e-4
+    }
+}
