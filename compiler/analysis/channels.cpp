@@ -29,7 +29,8 @@ Table table_of(const runtime::SimulationResult& result) {
 }
 
 const std::vector<OpenFastChannel>& openfast_channels() {
-    // ElastoDyn's DOF channels (OpenFAST's OutListParameters), in its units.
+    // ElastoDyn's DOF and displacement channels (OpenFAST's OutListParameters), in its
+    // units.
     static const std::vector<OpenFastChannel> channels{
         {"PtfmSurge", "m", false},    {"PtfmSway", "m", false},     {"PtfmHeave", "m", false},
         {"PtfmRoll", "deg", false},   {"PtfmPitch", "deg", false},  {"PtfmYaw", "deg", false},
@@ -49,7 +50,10 @@ const std::vector<OpenFastChannel>& openfast_channels() {
         {"QD_B1E1", "m/s", false},    {"QD_B2F1", "m/s", false},    {"QD_B2F2", "m/s", false},
         {"QD_B2E1", "m/s", false},    {"QD_B3F1", "m/s", false},    {"QD_B3F2", "m/s", false},
         {"QD_B3E1", "m/s", false},    {"BldPitch1", "deg", false},  {"BldPitch2", "deg", false},
-        {"BldPitch3", "deg", false}};
+        {"BldPitch3", "deg", false},  {"TTDspFA", "m", false},      {"TTDspSS", "m", false},
+        {"OoPDefl1", "m", false},     {"OoPDefl2", "m", false},     {"OoPDefl3", "m", false},
+        {"IPDefl1", "m", false},      {"IPDefl2", "m", false},      {"IPDefl3", "m", false},
+        {"TipDzc1", "m", false},      {"TipDzc2", "m", false},      {"TipDzc3", "m", false}};
     return channels;
 }
 

@@ -36,6 +36,15 @@ struct Beam {
     std::vector<Station> stations; // sorted by s, covering 0..1
     std::vector<Mode> modes;       // in SID order
     int integration_stations = 50; // points of the integration grid (also the SID nodes)
+    // > 0: ElastoDyn's discretization instead (Grid::elements): this many equal
+    // elements, properties at their centres, midpoint sums. The SID then equals
+    // ElastoDyn's lumped blade or tower (docs/beam-preprocessing.md).
+    int elements = 0;
+    // With `elements`: true for ElastoDyn's blades, whose shapes are the running
+    // integrals of the (twisted) curvature on the elements (TwistedSF); false for its
+    // tower, whose shapes and slopes are the polynomial's own values (SHP). Without
+    // `elements` the exact integrals make both the same.
+    bool integrated_shapes = true;
 };
 
 } // namespace yamsc::beam

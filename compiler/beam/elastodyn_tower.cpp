@@ -17,6 +17,7 @@ std::optional<Beam> read_elastodyn_tower(const std::shared_ptr<const diag::Sourc
     const int errors = diags.error_count();
     Beam beam;
     beam.length = length;
+    beam.integrated_shapes = false; // ElastoDyn's tower: SHP at its elements
     check_ed_length(f, length, diags);
     // Fore-aft bending displaces the tower along x (resisted by EI_y), side-side along y.
     const std::vector<EdModeKeys> known{{"fa1", "TwFAM1Sh", "TwrFADmp(1)", "FAStTunr(1)", 0},

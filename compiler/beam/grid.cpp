@@ -96,6 +96,22 @@ Grid::Grid(double length, int nodes, const std::vector<double>& breaks) {
     weight_.push_back(0);
 }
 
+Grid Grid::elements(double length, int elements) {
+    Grid g;
+    g.midpoint_ = true;
+    const double dr = length / elements;
+    g.z_.push_back(0);
+    g.weight_.push_back(0);
+    for (int j = 0; j < elements; ++j) {
+        g.z_.push_back((j + 0.5) * dr);
+        g.weight_.push_back(dr);
+    }
+    g.z_.push_back(length);
+    g.weight_.push_back(0);
+    for (std::size_t i = 0; i < g.z_.size(); ++i) g.nodes_.push_back(i);
+    return g;
+}
+
 double Grid::integrate(const std::vector<double>& f) const {
     double sum = 0;
     for (std::size_t i = 0; i < z_.size(); ++i) sum += weight_[i] * f[i];
@@ -103,8 +119,15 @@ double Grid::integrate(const std::vector<double>& f) const {
 }
 
 std::vector<double> Grid::running_integral(const std::vector<double>& f) const {
-    const GaussRule& g = rule();
     std::vector<double> out(z_.size(), 0.0);
+    if (midpoint_) {
+        // The root (index 0) and the tip carry no weight: F(root) = 0, and the tip
+        // adds the outer half of the last element, as ElastoDyn's TipNode.
+        for (std::size_t i = 1; i < z_.size(); ++i)
+            out[i] = out[i - 1] + 0.5 * weight_[i - 1] * f[i - 1] + 0.5 * weight_[i] * f[i];
+        return out;
+    }
+    const GaussRule& g = rule();
     for (std::size_t s = 0; s < segment_start_.size(); ++s) {
         const std::size_t a = segment_start_[s], end = a + kP + 1;
         const double h = z_[end] - z_[a];

@@ -17,6 +17,13 @@ public:
     /// extra cuts in [0, length] (the property stations).
     Grid(double length, int nodes, const std::vector<double>& breaks);
 
+    /// ElastoDyn's discretization (its `Coeff`): `elements` equal elements, one point
+    /// at each element centre weighted by the element length (midpoint rule), plus the
+    /// root and the tip with weight 0. Running integrals are ElastoDyn's: each element
+    /// adds half its length times its centre value on either side of its centre
+    /// (`TwistedSF`, `AxRedBld`). Every point is a SID node.
+    static Grid elements(double length, int elements);
+
     /// All points, increasing: each segment's left end, its Gauss points, ..., then L.
     const std::vector<double>& z() const { return z_; }
     std::size_t size() const { return z_.size(); }
@@ -33,6 +40,8 @@ public:
     std::vector<double> integral_to_tip(const std::vector<double>& f) const;
 
 private:
+    Grid() = default;
+    bool midpoint_ = false; // ElastoDyn's element discretization
     std::vector<double> z_;
     std::vector<double> weight_; // quadrature weight of each point (0 at segment ends)
     std::vector<std::size_t> segment_start_;

@@ -13,6 +13,8 @@ std::optional<std::string> check_beam(const Beam& beam) {
     if (!(beam.length > 0) || !std::isfinite(beam.length)) return "the beam length must be > 0";
     if (beam.integration_stations < 2) return "a beam needs at least 2 integration stations";
     if (beam.integration_stations > 100000) return "too many integration stations (at most 100000)";
+    if (beam.elements < 0 || beam.elements > 100000)
+        return "the number of elements must be 1 to 100000 (0: Gauss integration)";
     if (beam.stations.empty()) return "a beam needs at least one station";
     for (std::size_t i = 0; i < beam.stations.size(); ++i) {
         const Station& s = beam.stations[i];
@@ -37,6 +39,30 @@ std::optional<std::string> check_beam(const Beam& beam) {
 
 namespace {
 
+/// ElastoDyn's damping (CBF, CBE, CTFA, CTSS in its `Coeff`): the full matrix
+/// D(j,k) = 2 zeta_k Ke(j,k) / omega_k, omega_k = sqrt(Ke(k,k) / M_k) with the generalized
+/// mass M_k of the untwisted polynomial shape (sum of m phi_k^2 over the elements).
+/// Not symmetric when two modes of one direction couple through Ke (flap 1 and 2).
+void elastodyn_damping(const Beam& beam, const SampledBeam& b, sid::Sid& sid) {
+    const int nq = sid.nq;
+    sid.De = sid::Taylor::zeros(0, nq, nq, nq, 3);
+    std::vector<double> omega(static_cast<std::size_t>(nq));
+    for (std::size_t k = 0; k < omega.size(); ++k) {
+        const std::vector<double>& c = beam.modes[k].coeffs;
+        const double M = integrate_dm(b, [&](std::size_t i) {
+            double phi = 0;
+            for (std::size_t p = 0; p < c.size(); ++p)
+                phi += c[p] * std::pow(b.grid.z()[i] / beam.length, static_cast<double>(p));
+            return phi * phi;
+        });
+        omega[k] = std::sqrt(sid.Ke.at0(static_cast<int>(k), static_cast<int>(k)) / M);
+    }
+    for (int j = 0; j < nq; ++j)
+        for (int k = 0; k < nq; ++k)
+            sid.De.at0(j, k) = 2 * beam.modes[static_cast<std::size_t>(k)].damping_ratio *
+                               sid.Ke.at0(j, k) / omega[static_cast<std::size_t>(k)];
+}
+
 /// Ke per eq. B2, with the curvature split on the twisted principal axes:
 /// EI_y resists curvature along the first axis (x without twist), EI_x along the second.
 /// ElastoDyn's stiffness tuners scale Ke(j,k) by sqrt(t_j t_k).
@@ -59,6 +85,10 @@ void add_stiffness_and_damping(const Beam& beam, const SampledBeam& b, sid::Sid&
                                           beam.modes[static_cast<std::size_t>(k)].stiffness_tuner);
             sid.Ke.at0(j, k) = sid.Ke.at0(k, j) = tune * b.grid.integrate(f);
         }
+    if (beam.elements > 0) {
+        elastodyn_damping(beam, b, sid);
+        return;
+    }
     // Modal damping (paper B4): D_jj = 2 zeta_j sqrt(K_jj M_jj) = 2 zeta_j M_jj omega_j.
     for (int j = 0; j < nq; ++j)
         sid.De.at0(j, j) = 2 * beam.modes[static_cast<std::size_t>(j)].damping_ratio *

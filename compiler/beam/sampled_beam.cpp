@@ -40,13 +40,21 @@ Vec3 principal(int direction, double twist) {
 /// times phi'', and the slope and the displacement are its running integrals from
 /// the clamped root. Without twist this is exactly Phi = e_dir phi (paper B1-B2).
 SampledMode sample_mode(const Mode& mode, double L, const Grid& grid,
-                        const std::vector<double>& twist) {
+                        const std::vector<double>& twist, bool integrated) {
     const std::size_t n = grid.size();
     SampledMode out;
     out.curvature.resize(n);
     for (std::size_t i = 0; i < n; ++i)
         out.curvature[i] =
             polynomial(mode.coeffs, grid.z()[i], L, 2) * principal(mode.direction, twist[i]);
+    if (!integrated) { // the polynomial's own values (ElastoDyn's tower: SHP)
+        for (std::size_t i = 0; i < n; ++i) {
+            const Vec3 axis = principal(mode.direction, twist[i]);
+            out.phi.push_back(polynomial(mode.coeffs, grid.z()[i], L, 0) * axis);
+            out.slope.push_back(polynomial(mode.coeffs, grid.z()[i], L, 1) * axis);
+        }
+        return out;
+    }
     const Vec3 root_axis = principal(mode.direction, twist.front());
     const Vec3 root_value = polynomial(mode.coeffs, 0, L, 0) * root_axis;
     const Vec3 root_slope = polynomial(mode.coeffs, 0, L, 1) * root_axis;
@@ -73,8 +81,15 @@ std::vector<double> station_breaks(const Beam& beam) {
 } // namespace
 
 SampledBeam sample_beam(const Beam& beam) {
-    SampledBeam b{
-        Grid(beam.length, beam.integration_stations, station_breaks(beam)), {}, {}, {}, {}, {}, {}};
+    SampledBeam b{beam.elements > 0
+                      ? Grid::elements(beam.length, beam.elements)
+                      : Grid(beam.length, beam.integration_stations, station_breaks(beam)),
+                  {},
+                  {},
+                  {},
+                  {},
+                  {},
+                  {}};
     for (double z : b.grid.z()) {
         const double s = z / beam.length;
         b.m.push_back(interpolate(beam.stations, s, &Station::mass_per_length));
@@ -84,7 +99,8 @@ SampledBeam sample_beam(const Beam& beam) {
         b.s0.push_back({0, 0, z});
     }
     for (const Mode& mode : beam.modes)
-        b.modes.push_back(sample_mode(mode, beam.length, b.grid, b.twist));
+        b.modes.push_back(sample_mode(mode, beam.length, b.grid, b.twist,
+                                      beam.integrated_shapes || beam.elements == 0));
     return b;
 }
 

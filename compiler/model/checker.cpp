@@ -662,12 +662,21 @@ private:
         }
     }
 
-    // Every DOF must drive exactly one joint step or one mode of a flexible body.
+    // Every DOF must drive a mode of one flexible body, or one step in each joint it
+    // moves: several joints may share a DOF (a gear: the generator turns at
+    // `GBRatio * psi` while the rotor turns at `psi`), one joint may not use it twice.
     void check_dof_usage() {
-        std::vector<std::vector<Loc>> uses(model_.dofs.size());
-        for (const auto& b : model_.bodies) {
+        struct Use {
+            Loc loc;
+            std::size_t body;
+            bool mode;
+        };
+        std::vector<std::vector<Use>> uses(model_.dofs.size());
+        for (std::size_t bi = 0; bi < model_.bodies.size(); ++bi) {
+            const auto& b = model_.bodies[bi];
             if (b.flex)
-                for (int d : b.flex->dofs) uses[static_cast<std::size_t>(d)].push_back(b.loc);
+                for (int d : b.flex->dofs)
+                    uses[static_cast<std::size_t>(d)].push_back({b.loc, bi, true});
             for (const auto& s : b.steps) {
                 if (s.kind == Step::Kind::offset || s.kind == Step::Kind::node) continue;
                 std::vector<const Expr*> names;
@@ -677,7 +686,8 @@ private:
                     auto it = names_.find(n->text);
                     if (it != names_.end() && it->second.kind == NameKind::dof &&
                         in_step.insert(it->second.index).second)
-                        uses[static_cast<std::size_t>(it->second.index)].push_back(n->loc);
+                        uses[static_cast<std::size_t>(it->second.index)].push_back(
+                            {n->loc, bi, false});
                 }
             }
         }
@@ -689,11 +699,22 @@ private:
                              "DOF '" + d.name +
                                  "' moves nothing: use it in a joint step "
                                  "(rotate/translate/free)");
-            } else if (uses[i].size() > 1) {
-                diags_.error(Kind::DofUsage, uses[i][1],
-                             "DOF '" + d.name +
-                                 "' is used by two joint steps; each DOF drives one");
-                diags_.note(uses[i][0], "first used here");
+            } else {
+                for (std::size_t a = 1; a < uses[i].size(); ++a) {
+                    const Use& first = uses[i][a - 1];
+                    const Use& u = uses[i][a];
+                    if (u.body != first.body && !u.mode && !first.mode) continue;
+                    diags_.error(Kind::DofUsage, u.loc,
+                                 u.mode || first.mode
+                                     ? "DOF '" + d.name +
+                                           "' is a mode of a flexible body and drives another "
+                                           "step or mode"
+                                     : "DOF '" + d.name +
+                                           "' is used by two steps of one joint; a joint's DOF "
+                                           "drives one step");
+                    diags_.note(first.loc, "first used here");
+                    break;
+                }
             }
         }
     }

@@ -236,6 +236,7 @@ double interpolate(const std::vector<std::pair<double, double>>& t, double s) {
 std::optional<beam::Beam> FlexibleChecker::beam_of_block(const ast::Beam& block, Flexible& flex) {
     std::optional<double> length;
     int stations = 50;
+    int elements = 0;
     const ast::Property* modes = nullptr;
     for (const auto& p : block.properties) {
         if (p.key == "length" && p.value.kind == ast::Value::Kind::expr) {
@@ -251,6 +252,14 @@ std::optional<beam::Beam> FlexibleChecker::beam_of_block(const ast::Beam& block,
                 return std::nullopt;
             }
             stations = static_cast<int>(*n);
+        } else if (p.key == "elements" && p.value.kind == ast::Value::Kind::expr) {
+            // ElastoDyn's discretization (BldNodes, TwrNodes): docs/beam-preprocessing.md
+            auto n = number(p.value.expr, "the number of elements");
+            if (!n || *n < 1 || *n > 10000 || *n != std::floor(*n)) {
+                if (n) error(Kind::InvalidValue, p.value.loc, "elements must be 1 to 10000");
+                return std::nullopt;
+            }
+            elements = static_cast<int>(*n);
         } else if (p.key == "modes" && p.value.kind == ast::Value::Kind::modes) {
             modes = &p;
         }
@@ -276,10 +285,10 @@ std::optional<beam::Beam> FlexibleChecker::beam_of_block(const ast::Beam& block,
     std::optional<beam::Beam> beam;
     if (block.file) {
         for (const auto& p : block.properties)
-            if (p.key != "length" && p.key != "stations" && p.key != "modes")
+            if (p.key != "length" && p.key != "stations" && p.key != "modes" && p.key != "elements")
                 error(Kind::UnknownProperty, p.loc,
                       "a beam read from a file has no property '" + p.key + "'" +
-                          diag::did_you_mean(p.key, {"length", "stations", "modes"}));
+                          diag::did_you_mean(p.key, {"length", "stations", "modes", "elements"}));
         if (!block.mode_shapes.empty())
             error(Kind::InvalidValue, block.mode_shapes.front().loc,
                   "mode shapes come from the file; define them only in inline beams");
@@ -290,10 +299,12 @@ std::optional<beam::Beam> FlexibleChecker::beam_of_block(const ast::Beam& block,
             return std::nullopt;
         }
         beam->integration_stations = stations;
+        beam->elements = elements;
         flex.description = block.format + " file " + *block.file;
     } else {
         beam = inline_beam(block, *length, stations);
         if (!beam) return std::nullopt;
+        beam->elements = elements;
         flex.description = "inline beam";
     }
     return beam;
@@ -319,11 +330,13 @@ std::optional<beam::Beam> FlexibleChecker::inline_beam(const ast::Beam& block, d
                 ok = false;
             }
             if (v) damping = *v;
-        } else if (p.key != "length" && p.key != "stations" && p.key != "modes") {
+        } else if (p.key != "length" && p.key != "stations" && p.key != "modes" &&
+                   p.key != "elements") {
             error(Kind::UnknownProperty, p.loc,
                   "beams have no property '" + p.key + "'" +
-                      diag::did_you_mean(p.key, {"length", "stations", "modes", "mass_per_length",
-                                                 "EI_x", "EI_y", "twist", "damping_ratio"}));
+                      diag::did_you_mean(p.key, {"length", "stations", "elements", "modes",
+                                                 "mass_per_length", "EI_x", "EI_y", "twist",
+                                                 "damping_ratio"}));
             ok = false;
         }
     }

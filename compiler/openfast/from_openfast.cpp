@@ -97,7 +97,10 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
     const bool blades_rigid = !in.dofs["FlapDOF1"] && !in.dofs["FlapDOF2"] && !in.dofs["EdgeDOF"];
     const bool tower_rigid = !in.dofs["TwFADOF1"] && !in.dofs["TwFADOF2"] && !in.dofs["TwSSDOF1"] &&
                              !in.dofs["TwSSDOF2"];
-    if (blades_rigid) in.rotor = rigid_rotor(*deck, diags);
+    if (blades_rigid)
+        in.rotor = rigid_rotor(*deck, diags);
+    else if (auto tips = blade_tip_shapes(*deck, diags))
+        in.blade_tips = *tips;
     if (tower_rigid) in.tower = rigid_tower(*deck, diags);
     if (diags.has_errors()) {
         err << diags.render();

@@ -60,6 +60,7 @@ public:
         loads();
         initial_state();
         outputs();
+        displacement_outputs();
         return out_.str();
     }
 
@@ -354,7 +355,7 @@ private:
                     modes += (modes.empty() ? "" : ", ") + std::string(m) + " -> q_" + m;
             out_ << "flexible tower {\n    beam " << mbd_string(in_.tower_path)
                  << " elastodyn_tower {\n        length = TowerHt - TowerBsHt\n        modes = ("
-                 << modes << ")\n        stations = " << d_.tower_nodes << "\n    }\n}\n";
+                 << modes << ")\n        elements = " << d_.tower_nodes << "\n    }\n}\n";
             top = "joint tower.tip -> ";
         } else {
             out_ << "rigid tower { mass = TwrMass; com = (0, 0, TwrCMz); inertia = (TwrIner, "
@@ -387,27 +388,34 @@ private:
     void rotor() {
         const std::string shaft = "at (0, 0, Twr2Shft); rotate y -ShftTilt; at (OverHang, 0, 0)";
         const std::string spin = on("GenDOF") ? "psi" : "psi0 + Omega0 * t";
-        const std::string gen_inertia = "GenIner * GBRatio^2";
         std::string rotor_name = flexible_blades() ? "hub" : "rotor";
         std::string rotor_parent = "nacelle", rotor_steps = shaft + "; rotate x " + spin;
+        // ElastoDyn's generator turns at GBRatio times the generator azimuth with the
+        // inertia GenIner about the shaft: its spin energy is that of GenIner GBRatio^2
+        // on the low-speed shaft, its angular momentum (gyroscopic moments on the nacelle
+        // and tower) only GBRatio times GenIner's. A body on the low-speed shaft with
+        // GenIner GBRatio^2 would carry GBRatio times too much (docs/openfast.md).
+        out_ << "# The generator: GenIner about the high-speed shaft, geared to the rotor.\n";
+        out_ << "rigid generator { mass = 0; inertia = (GenIner, 0, 0) }\n";
+        out_ << "joint nacelle -> generator { " << shaft << "; rotate x GBRatio * "
+             << (on("GenDOF") ? spin : "(" + spin + ")") << " }\n";
         if (on("DrTrDOF")) {
-            out_ << "# The generator side of the drivetrain (its inertia seen from the low-speed "
-                    "shaft)\n# and the rotor, twisted by drtr against the drivetrain spring.\n";
-            out_ << "rigid gen_shaft { mass = 0; inertia = (" << gen_inertia << ", 0, 0) }\n";
+            out_ << "# The generator side of the drivetrain (the low-speed shaft at the generator "
+                    "azimuth)\n# and the rotor, twisted by drtr against the drivetrain spring.\n";
+            out_ << "rigid gen_shaft { mass = 0 }\n";
             out_ << "joint nacelle -> gen_shaft { " << shaft << "; rotate x " << spin << " }\n";
             rotor_parent = "gen_shaft";
             rotor_steps = "rotate x drtr";
         }
-        const std::string axial = on("DrTrDOF") ? "" : " + " + gen_inertia;
         if (flexible_blades()) {
-            out_ << "rigid hub { mass = HubMass; com = (HubCM, 0, 0); inertia = (HubIner" << axial
-                 << ", 0, 0) }\n";
+            out_
+                << "rigid hub { mass = HubMass; com = (HubCM, 0, 0); inertia = (HubIner, 0, 0) }\n";
         } else {
             const RigidProperties& r = *in_.rotor;
             const bool offset = r.cm[1] != 0 || r.cm[2] != 0;
             const bool products = r.inertia[3] != 0 || r.inertia[4] != 0 || r.inertia[5] != 0;
             out_ << "rigid rotor {\n    mass = RotMass\n    com = (RotCMx, "
-                 << (offset ? "RotCMy, RotCMz" : "0, 0") << ")\n    inertia = (RotIxx" << axial
+                 << (offset ? "RotCMy, RotCMz" : "0, 0") << ")\n    inertia = (RotIxx"
                  << ", RotIyy, RotIzz" << (products ? ", RotIxy, RotIyz, RotIxz" : "") << ")\n}\n";
         }
         out_ << "joint " << rotor_parent << " -> " << rotor_name << " { " << rotor_steps << " }\n";
@@ -423,7 +431,7 @@ private:
             out_ << "flexible blade" << n << " {\n    beam "
                  << mbd_string(in_.blade_paths[static_cast<std::size_t>(k - 1)])
                  << " elastodyn_blade {\n        length = TipRad - HubRad\n        modes = ("
-                 << modes << ")\n        stations = " << d_.blade_nodes << "\n    }\n}\n";
+                 << modes << ")\n        elements = " << d_.blade_nodes << "\n    }\n}\n";
             std::string steps;
             if (k > 1) steps = "rotate x " + mbd_number(360.0 * (k - 1) / d_.blades) + " deg; ";
             steps += "rotate y PreCone" + n + "; at (0, 0, HubRad)";
@@ -465,6 +473,45 @@ private:
                 if (on(mode[0]))
                     out_ << "genforce " << blade_dof(k, mode[1]) << " = "
                          << blade_dof(k, mode[1], "f_") << "\n";
+        spin_inertia_torque();
+    }
+
+    /// The blades' inertia about the shaft changes to second order with their
+    /// deflection (the flapped blade shortens radially, the edge deflection moves mass
+    /// sideways); ElastoDyn's kinematics hold it, the SID's inertia is first order in q.
+    /// Its missing rate of angular momentum, -d/dt(J2(q) Omega), acts on the hub. The
+    /// blades' equations already carry its counterpart, the centrifugal stiffening.
+    void spin_inertia_torque() {
+        if (!flexible_blades() || in_.blade_tips.size() < static_cast<std::size_t>(d_.blades))
+            return;
+        std::string j2, j2dot;
+        for (int k = 1; k <= d_.blades; ++k) {
+            const auto& c = in_.blade_tips[static_cast<std::size_t>(k - 1)].spin_inertia;
+            for (std::size_t a = 0; a < 3; ++a) {
+                if (!on(blade_modes[a][0])) continue;
+                const std::string qa = blade_dof(k, blade_modes[a][1]);
+                for (std::size_t b = 0; b < 3; ++b) {
+                    if (!on(blade_modes[b][0])) continue;
+                    const std::string qb = blade_dof(k, blade_modes[b][1]);
+                    if (b >= a) j2 += term((a == b ? 1 : 2) * c[a][b], qa + " * " + qb);
+                    j2dot += term(2 * c[a][b], qa + " * " + qb + "'");
+                }
+            }
+        }
+        std::string omega, omega_dot;
+        if (on("GenDOF")) {
+            omega = on("DrTrDOF") ? "(psi' + drtr')" : "psi'";
+            omega_dot = on("DrTrDOF") ? "(psi'' + drtr'')" : "psi''";
+        } else {
+            omega = on("DrTrDOF") ? "(Omega0 + drtr')" : "Omega0";
+            omega_dot = on("DrTrDOF") ? "drtr''" : "";
+        }
+        out_
+            << "# The blades' second-order inertia about the shaft, J2 = sum c q_j q_k (the SID's\n"
+               "# is first order; docs/openfast.md): its rate of angular momentum on the hub.\n";
+        out_ << "torque on hub in hub = (-((" << strip(j2dot) << ") * " << omega;
+        if (!omega_dot.empty()) out_ << " + (" << strip(j2) << ") * " << omega_dot;
+        out_ << "), 0, 0)\n";
     }
 
     void initial_state() {
@@ -498,17 +545,7 @@ private:
                 "RotSpeed = " + mbd_number(v("RotSpeed")) + " rpm (" + d_.where.at("rotspeed") +
                     ")");
         }
-        if (flexible_blades() && (v("OoPDefl") != 0 || v("IPDefl") != 0)) {
-            diags_.warning(diag::Kind::NotSupported, {d_.ed, 0, 0},
-                           "OoPDefl and IPDefl are set as the tip deflections of the first flap "
-                           "and edge modes, without ElastoDyn's correction for pitch and twist");
-            for (int k = 1; k <= d_.blades; ++k) {
-                if (on("FlapDOF1") && v("OoPDefl") != 0)
-                    set(blade_dof(k, "flap1"), mbd_number(v("OoPDefl")), "OoPDefl");
-                if (on("EdgeDOF") && v("IPDefl") != 0)
-                    set(blade_dof(k, "edge1"), mbd_number(v("IPDefl")), "IPDefl");
-            }
-        }
+        if (flexible_blades() && (v("OoPDefl") != 0 || v("IPDefl") != 0)) blade_initial_state(set);
         if (lines.empty()) return;
         out_ << "\n# ---- initial conditions of the deck (`yamsc sim` starts here; --ic "
                 "overrides)\n";
@@ -519,6 +556,29 @@ private:
         if (on("GenDOF") && v("RotSpeed") != 0)
             out_ << "linearize { psi' = " << rpm(v("RotSpeed"))
                  << " }   # `yamsc lin` and `sim --linear` about the rotor speed\n";
+    }
+
+    /// ElastoDyn's InitBlDefl: OoPDefl and IPDefl (coned frame) solved for the flap and
+    /// edge DOFs with the tip values of the twisted shapes (docs/openfast.md).
+    template <class Set> void blade_initial_state(Set& set) {
+        const double deg = std::acos(-1.0) / 180;
+        for (int k = 1; k <= d_.blades; ++k) {
+            const std::size_t i = static_cast<std::size_t>(k - 1);
+            if (i >= in_.blade_tips.size()) break;
+            const BladeInitial b = initial_blade_deflection(
+                in_.blade_tips[i], v("BlPitch" + std::to_string(k)) * deg, v("OoPDefl"),
+                v("IPDefl"), on("FlapDOF1"), on("FlapDOF2"), on("EdgeDOF"));
+            if (!b.warning.empty())
+                diags_.warning(diag::Kind::NotSupported, {d_.ed, 0, 0},
+                               "blade " + std::to_string(k) + ": " + b.warning);
+            const std::string why = "OoPDefl = " + mbd_number(v("OoPDefl")) +
+                                    ", IPDefl = " + mbd_number(v("IPDefl")) +
+                                    " m at the tip, as ElastoDyn's InitBlDefl";
+            if (on("FlapDOF1")) set(blade_dof(k, "flap1"), mbd_number(b.flap1), why);
+            if (on("EdgeDOF")) set(blade_dof(k, "edge1"), mbd_number(b.edge1), why);
+            if (on("FlapDOF2") && !on("FlapDOF1"))
+                set(blade_dof(k, "flap2"), mbd_number(b.flap2), why);
+        }
     }
 
     static std::string lower(std::string s) {
@@ -560,6 +620,84 @@ private:
                 if (on(mode[0]))
                     output("Q_B" + std::to_string(k) + mode[2], blade_dof(k, mode[1]), "m");
     }
+    /// ElastoDyn's displacement channels (OutListParameters), in its signs and units.
+    void displacement_outputs() {
+        if (flexible_tower()) {
+            out_ << "\n# ---- ElastoDyn's tower-top displacements, in the tower-base frame\n";
+            out_ << "# (the nacelle frame starts at the tower top)\n";
+            output("TTDspFA", "position(nacelle).x in tower", "m");
+            output("TTDspSS", "position(nacelle).y in tower", "m");
+        }
+        if (on("TwFADOF1")) output("QD_TFA1", "q_fa1'", "m/s");
+        if (on("TwSSDOF1")) output("QD_TSS1", "-q_ss1'", "m/s");
+        if (on("TwFADOF2")) output("QD_TFA2", "q_fa2'", "m/s");
+        if (on("TwSSDOF2")) output("QD_TSS2", "-q_ss2'", "m/s");
+        if (on("YawDOF")) {
+            output("Q_Yaw", "nac_yaw", "rad");
+            output("QD_Yaw", "nac_yaw'", "rad/s");
+        }
+        if (on("GenDOF")) output("QD_GeAz", "psi'", "rad/s");
+        if (on("DrTrDOF")) output("QD_DrTr", "drtr'", "rad/s");
+        for (int k = 1; k <= d_.blades; ++k)
+            for (const auto& mode : blade_modes)
+                if (on(mode[0]))
+                    output("QD_B" + std::to_string(k) + mode[2], blade_dof(k, mode[1]) + "'",
+                           "m/s");
+        if (!flexible_blades() || in_.blade_tips.size() < static_cast<std::size_t>(d_.blades))
+            return;
+        // A point is fixed in its body's frame, so the tips' deflections are written from
+        // the tip node of each blade's SID (ElastoDyn's TwistedSF and AxRedBld at its
+        // TipNode): in the coned frame (the blade frame before its pitch).
+        out_ << "\n# ---- ElastoDyn's blade-tip deflections in the coned frame: OoPDefl (TipDxc)\n"
+                "# out of plane, IPDefl (TipDyc) in plane, TipDzc along the blade; the tip node's\n"
+                "# shapes (x, y per unit DOF; axial: second order) from the blade's SID\n";
+        for (int k = 1; k <= d_.blades; ++k) {
+            const BladeTipShapes& tip = in_.blade_tips[static_cast<std::size_t>(k - 1)];
+            const std::array<double, 2>* shapes[3] = {&tip.flap1, &tip.edge1, &tip.flap2};
+            std::string dx, dy;
+            for (std::size_t m = 0; m < 3; ++m) {
+                if (!on(blade_modes[m][0])) continue;
+                const std::string q = blade_dof(k, blade_modes[m][1]);
+                dx += term((*shapes[m])[0], q);
+                dy += term((*shapes[m])[1], q);
+            }
+            const std::string n = std::to_string(k);
+            const std::string pitch = "BlPitch" + n;
+            if (v(pitch) == 0) {
+                output("OoPDefl" + n, strip(dx), "m");
+                output("IPDefl" + n, strip(dy), "m");
+            } else {
+                output("OoPDefl" + n,
+                       "cos(" + pitch + ") * (" + strip(dx) + ") + sin(" + pitch + ") * (" +
+                           strip(dy) + ")",
+                       "m");
+                output("IPDefl" + n,
+                       "-sin(" + pitch + ") * (" + strip(dx) + ") + cos(" + pitch + ") * (" +
+                           strip(dy) + ")",
+                       "m");
+            }
+            std::string dz;
+            for (std::size_t a = 0; a < 3; ++a)
+                for (std::size_t b = a; b < 3; ++b) {
+                    if (!on(blade_modes[a][0]) || !on(blade_modes[b][0])) continue;
+                    const double c = (a == b ? 0.5 : 1.0) * tip.axial[a][b];
+                    dz += term(c, blade_dof(k, blade_modes[a][1]) + " * " +
+                                      blade_dof(k, blade_modes[b][1]));
+                }
+            output("TipDzc" + n, strip(dz), "m");
+        }
+    }
+    /// " + c * q" in the model's syntax (empty when c is 0).
+    static std::string term(double c, const std::string& q) {
+        if (c == 0) return "";
+        return (c < 0 ? " - " : " + ") + mbd_number(std::fabs(c)) + " * " + q;
+    }
+    /// A sum of terms without its leading " + " ("0" when empty).
+    static std::string strip(const std::string& sum) {
+        if (sum.empty()) return "0";
+        return sum.compare(0, 3, " - ") == 0 ? "-" + sum.substr(3) : sum.substr(3);
+    }
+
     void output(const std::string& name, const std::string& value, const std::string& unit) {
         out_ << pad("output " + name + " = " + value, 50) << "# [" << unit << "]\n";
     }

@@ -1,6 +1,7 @@
 #pragma once
 // The `.mbd` text of an ElastoDyn turbine (docs/openfast.md): a template model whose
 // bodies, joints and DOFs follow ElastoDyn's flags and whose loads are inputs.
+#include "openfast/blade_deflection.hpp"
 #include "openfast/deck.hpp"
 #include "openfast/rotor.hpp"
 
@@ -19,6 +20,9 @@ struct OpenFastModelInput {
     std::vector<std::string> blade_paths;
     std::optional<RigidProperties> rotor; ///< when the blades are rigid
     std::optional<RigidProperties> tower; ///< when the tower is rigid
+    /// Tip values of the blades' twisted shapes (flexible blades): ElastoDyn's mapping
+    /// of OoPDefl and IPDefl onto the blade DOFs.
+    std::vector<BladeTipShapes> blade_tips;
 };
 
 /// The model text. Warnings about approximated initial conditions go to `diags`.

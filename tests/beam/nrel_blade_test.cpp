@@ -126,3 +126,28 @@ TEST_CASE("NREL 5-MW blade: the integrals do not depend on the number of nodes")
     CHECK(coarse.nodes.back().phi.at1(2, 0, 0) ==
           doctest::Approx(fine.nodes.back().phi.at1(2, 0, 0)).epsilon(1e-10));
 }
+
+TEST_CASE("NREL 5-MW blade on ElastoDyn's 17 elements (elements = BldNodes)") {
+    diag::Diagnostics diags;
+    auto beam = beam::read_elastodyn_blade(beam_test::nrel_file(beam_test::kBladeFile),
+                                           kBladeLength, {"flap1", "edge1", "flap2"}, diags);
+    REQUIRE(beam);
+    beam->elements = 17;
+    const sid::Sid s = beam::make_sid(*beam);
+    // Root, 17 element centres, tip.
+    REQUIRE(s.nodes.size() == 19);
+    CHECK(s.nodes[1].origin.at0(2, 0) == doctest::Approx(kBladeLength / 34));
+    // ElastoDyn's InitBlDefl with these tip shapes gives OpenFAST's initial DOFs for
+    // OoPDefl = 2 m (tests/data/reference/land_16dof_free_decay, first row).
+    const sid::Node& tip = s.nodes.back();
+    const double fx = tip.phi.at0(0, 0), fy = tip.phi.at0(1, 0);
+    const double ex = tip.phi.at0(0, 1), ey = tip.phi.at0(1, 1);
+    const double det = fx * ey - ex * fy;
+    CHECK(2 * ey / det == doctest::Approx(1.9752467222).epsilon(1e-9));
+    CHECK(-2 * fy / det == doctest::Approx(0.25352369297).epsilon(1e-9));
+    // ElastoDyn's damping: D(j,k) = 2 zeta_k K(j,k) / omega_k couples the flap modes
+    // (indices: flap1 0, edge1 1, flap2 2) and is not symmetric.
+    CHECK(s.De.at0(0, 2) != 0);
+    CHECK(s.De.at0(0, 2) != doctest::Approx(s.De.at0(2, 0)));
+    CHECK(std::fabs(s.De.at0(0, 1)) < 1e-12 * s.De.at0(0, 0)); // flap and edge: no Ke coupling
+}

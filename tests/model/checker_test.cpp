@@ -207,3 +207,17 @@ joint ground -> tower
     CHECK(diags.all()[0].message.find("has 3 modes") != std::string::npos);
     CHECK(diags.all()[0].loc.line == 3);
 }
+
+TEST_CASE("one DOF may drive steps of several joints (a gear), not two steps of one joint") {
+    const char* text = "model m\ndof psi\nparam N = 97\n"
+                       "rigid rotor { mass = 1; inertia = (1, 1, 1) }\n"
+                       "rigid generator { mass = 0; inertia = (0.01, 0, 0) }\n"
+                       "joint ground -> rotor { rotate x psi }\n"
+                       "joint ground -> generator { rotate x N * psi }\n";
+    FakeData data;
+    diag::Diagnostics diags;
+    auto m = check_text(text, data, diags);
+    INFO(diags.render());
+    CHECK(m.has_value());
+    CHECK(!diags.has_errors());
+}

@@ -11,6 +11,7 @@
 #include <yamsc/atomic_file.hpp>
 
 #include <fstream>
+#include <map>
 #include <regex>
 
 using namespace validation;
@@ -132,4 +133,95 @@ TEST_CASE("floating 3 DOF (surge, pitch, tower FA1) agrees with OpenFAST; linear
     CHECK(f[0] == doctest::Approx(0.1007).epsilon(0.001));
     CHECK(f[1] == doctest::Approx(0.8000).epsilon(0.001));
     plot(floating_case, nonlinear, linear);
+}
+
+TEST_CASE("land-based 16 DOF (every ElastoDyn DOF, 30 s): DOF channels against OpenFAST") {
+    // The full onshore NREL 5-MW: tower 2+2 modes, yaw, generator, drivetrain, three
+    // blades with flap 1, edge 1, flap 2 (issue 13), nonlinear only (the generated
+    // model compiles in about a minute). Bounds: what yamsc achieves today
+    // (docs/validation.md) with a little room; the issue's target, 1 % on every
+    // channel, is met (the yaw angle, 0.98 %, is the closest).
+    const Case& c = land_16dof_case;
+    convert(c);
+    const Table sim = simulate(c, false);
+    const Table reference = yamsc::driver::read_table(reference_csv(c));
+    const Comparison cmp = yamsc::driver::compare_tables(sim, reference);
+    const std::string report =
+        c.model + " nonlinear\n" + yamsc::driver::format_comparison(cmp, reference_csv(c));
+    MESSAGE(report);
+    const std::map<std::string, double> bounds{
+        // the DOFs
+        {"Q_TFA1_[m]", 0.0003},
+        {"Q_TSS1_[m]", 0.001},
+        {"Q_TFA2_[m]", 0.009},
+        {"Q_TSS2_[m]", 0.006},
+        {"NacYaw_[deg]", 0.0099},
+        {"RotSpeed_[rpm]", 0.0065},
+        {"Q_DrTr_[rad]", 0.009},
+        {"Q_B1F1_[m]", 0.0045},
+        {"Q_B1E1_[m]", 0.0042},
+        {"Q_B1F2_[m]", 0.009},
+        {"Q_B2F1_[m]", 0.006},
+        {"Q_B2E1_[m]", 0.0045},
+        {"Q_B2F2_[m]", 0.009},
+        {"Q_B3F1_[m]", 0.004},
+        {"Q_B3E1_[m]", 0.004},
+        {"Q_B3F2_[m]", 0.009},
+        // ElastoDyn's displacement channels (docs/openfast.md)
+        {"TTDspFA_[m]", 0.0003},
+        {"TTDspSS_[m]", 0.001},
+        {"OoPDefl1_[m]", 0.0045},
+        {"IPDefl1_[m]", 0.0045},
+        {"OoPDefl2_[m]", 0.0065},
+        {"IPDefl2_[m]", 0.0045},
+        {"OoPDefl3_[m]", 0.004},
+        {"IPDefl3_[m]", 0.0035},
+        {"TipDzc1_[m]", 0.005}};
+    for (const auto& [channel, bound] : bounds) {
+        CAPTURE(channel);
+        const ChannelScore* s = nullptr;
+        for (const ChannelScore& x : cmp.channels)
+            if (x.name == channel) s = &x;
+        REQUIRE(s);
+        CHECK(s->samples == static_cast<std::size_t>(c.tmax / 0.01 + 1.5));
+        CHECK(s->mean_rel_error < bound);
+        CHECK(s->mean_rel_error < 0.01); // the target of issue 13
+    }
+    // ElastoDyn's initial blade deflection: OoPDefl = 2 m on the twisted blade.
+    const int f1 = sim.find("Q_B1F1_[m]"), e1 = sim.find("Q_B1E1_[m]");
+    REQUIRE((f1 > 0 && e1 > 0));
+    CHECK(sim.data[static_cast<std::size_t>(f1)][0] == doctest::Approx(1.9752467222).epsilon(1e-9));
+    CHECK(sim.data[static_cast<std::size_t>(e1)][0] ==
+          doctest::Approx(0.25352369297).epsilon(1e-9));
+}
+
+TEST_CASE("parked 15 DOF: the linear model has OpenFAST's linearization frequencies") {
+    // OpenFAST v5's linearization of the 16-DOF deck with the rotor parked and the
+    // generator locked (tests/data/reference/linearization/parked_modes.csv), about
+    // the undeflected state; `yamsc lin` about the same point.
+    const Case parked{
+        "linearization/decks/A_parked", "land_parked", 0, {}, "NREL5MW_Onshore_FreeDecay.fst"};
+    convert(parked);
+    yamsc::driver::LinOptions o;
+    o.model = model_path(parked);
+    std::ostringstream out, err;
+    REQUIRE(yamsc::driver::lin(o, out, err) == 0);
+    std::vector<double> f;
+    std::istringstream lines(out.str());
+    for (std::string line; std::getline(lines, line);) {
+        std::istringstream row(line);
+        int mode = 0;
+        double hz = 0;
+        if (row >> mode >> hz) f.push_back(hz);
+    }
+    MESSAGE(out.str());
+    const std::vector<double> openfast{0.001889, 0.313956, 0.324409, 0.620993, 0.666692,
+                                       0.699050, 0.960129, 1.083600, 1.160541, 1.911082,
+                                       2.007350, 2.538394, 2.916144, 2.954968, 3.687862};
+    REQUIRE(f.size() == openfast.size());
+    CHECK(f[0] < 0.002); // free yaw: a near-zero root
+    for (std::size_t i = 1; i < f.size(); ++i) {
+        CAPTURE(i);
+        CHECK(f[i] == doctest::Approx(openfast[i]).epsilon(2e-4)); // measured: <= 1e-4
+    }
 }

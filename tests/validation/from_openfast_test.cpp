@@ -44,7 +44,7 @@ TEST_CASE("the land deck: its DOFs, initial state, tower-top joint and OpenFAST 
     CHECK(text.find("output Q_TSS1 = -q_ss1") != std::string::npos);
     CHECK(text.find("NRELOffshrBsline5MW_Offshore_ElastoDyn_Tower.dat\" elastodyn_tower") !=
           std::string::npos);
-    CHECK(text.find("stations = 100") != std::string::npos); // TwrNodes
+    CHECK(text.find("elements = 100") != std::string::npos); // TwrNodes, ElastoDyn's elements
     CHECK(param(text, "TowerBsHt") == 20);
     CHECK(param(text, "NacYIner") == 2.60789e6);
     // The .fst run and the ignored entries are named with their lines.
@@ -110,8 +110,16 @@ TEST_CASE("flexible blades, tower modes 2 and the drivetrain: the full 16-DOF on
                     "HubRad) }") != std::string::npos);
     CHECK(text.find("modes = (flap1 -> q_b3_flap1, edge1 -> q_b3_edge1, flap2 -> q_b3_flap2)") !=
           std::string::npos);
-    CHECK(text.find("rigid gen_shaft { mass = 0; inertia = (GenIner * GBRatio^2, 0, 0) }") !=
+    // ElastoDyn's generator: GenIner geared at GBRatio; the low-speed shaft is massless.
+    CHECK(text.find("rigid gen_shaft { mass = 0 }") != std::string::npos);
+    CHECK(text.find("rigid generator { mass = 0; inertia = (GenIner, 0, 0) }") !=
           std::string::npos);
+    CHECK(text.find("rotate x GBRatio * psi }") != std::string::npos);
+    CHECK(text.find("elements = 17") != std::string::npos); // BldNodes
+    // The blades' second-order spin inertia on the hub, and the tip deflections.
+    CHECK(text.find("torque on hub in hub = (-((") != std::string::npos);
+    CHECK(text.find("output OoPDefl1 = ") != std::string::npos);
+    CHECK(text.find("output TTDspSS = position(nacelle).y in tower") != std::string::npos);
     CHECK(param(text, "GenIner") == 534.116);
 }
 

@@ -23,7 +23,8 @@ struct Case {
     std::string folder; // under tests/data/reference
     std::string model;  // the model's name (file work_dir/<model>.mbd)
     double tmax;
-    std::vector<std::string> channels; // DOF channels that must agree
+    std::vector<std::string> channels;     // DOF channels that must agree
+    std::string deck = "Main_Spar_ED.fst"; // in the folder
 };
 
 inline const Case land_case{
@@ -32,6 +33,16 @@ inline const Case floating_case{"floating_3dof_F2T1RNA",
                                 "floating_3dof",
                                 7.0,
                                 {"PtfmSurge_[m]", "PtfmPitch_[deg]", "Q_TFA1_[m]"}};
+
+/// Every ElastoDyn DOF of the onshore NREL 5-MW, 30 s (issue 13).
+inline const Case land_16dof_case{"land_16dof_free_decay",
+                                  "land_16dof",
+                                  30.0,
+                                  {"Q_TFA1_[m]", "Q_TSS1_[m]", "Q_TFA2_[m]", "Q_TSS2_[m]",
+                                   "NacYaw_[deg]", "RotSpeed_[rpm]", "Q_DrTr_[rad]", "Q_B1F1_[m]",
+                                   "Q_B1E1_[m]", "Q_B1F2_[m]", "Q_B2F1_[m]", "Q_B2E1_[m]",
+                                   "Q_B2F2_[m]", "Q_B3F1_[m]", "Q_B3E1_[m]", "Q_B3F2_[m]"},
+                                  "NREL5MW_Onshore_FreeDecay.fst"};
 
 /// A whole file; one that cannot be opened fails the test (a missing deck is not an empty one).
 inline std::string read(const std::string& path) {
@@ -51,7 +62,7 @@ inline std::string reference_csv(const Case& c) {
 inline std::string convert(const Case& c, std::vector<std::pair<std::string, bool>> dofs = {}) {
     ::mkdir(work_dir.c_str(), 0755);
     yamsc::driver::FromOpenFastOptions o;
-    o.deck = reference_dir + "/" + c.folder + "/Main_Spar_ED.fst";
+    o.deck = reference_dir + "/" + c.folder + "/" + c.deck;
     o.output = model_path(c);
     o.dofs = std::move(dofs);
     std::ostringstream out, err;
