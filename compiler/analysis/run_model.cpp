@@ -4,6 +4,7 @@
 #include "analysis/channels.hpp"
 #include "analysis/compare.hpp"
 #include "analysis/loaded_model.hpp"
+#include "analysis/rotor_modes.hpp"
 #include "analysis/svg_plot.hpp"
 #include "analysis/trim_point.hpp"
 #include "driver/bindings.hpp"
@@ -211,6 +212,12 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     std::vector<double> q, qd, u;
     operating_point(*loaded, loaded->params, o.at, o.u, q, qd, u);
     if (o.trim) q = trim_point(v, q, qd, u, o.hold).q;
+    if (o.mbc3) {
+        const RotorModesRequest r = rotor_request(v, q, qd, u, o.azimuth, o.hold, o.azimuths);
+        const std::vector<RotorMode> modes = rotor_modes(v, r);
+        out << (o.json ? rotor_modes_json(v, r, modes) : format_rotor_modes(v, r, modes));
+        return 0;
+    }
     const double t = 0.0;
 
     const runtime::SecondOrderModel lm = runtime::second_order_model(v, q, qd, u, t);

@@ -23,7 +23,7 @@ const char* usage_text = R"(usage:
   yamsc check MODEL.mbd [--json]
   yamsc eval MODEL.mbd [--q v,..] [--qd v,..] [--u name=v,..] [--set name=v,..] [--t T] --json
   yamsc lin MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--json]
-                      [--trim [--hold dof,..]]
+                      [--trim [--hold dof,..]] [--mbc3 [--azimuths N] [--azimuth dof]]
                       [--sweep NAME=FROM:STEP:TO [-o campbell.csv] [--plot campbell.svg]]
   yamsc trim MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--hold dof,..]
                        [--json]
@@ -175,13 +175,22 @@ int run(int argc, char** argv) {
     }
     if (cmd == "lin") {
         Args a(argc, argv, 2,
-               {"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot", "--hold"},
-               {"--json", "--trim"});
+               {"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot", "--hold", "--azimuths",
+                "--azimuth"},
+               {"--json", "--trim", "--mbc3"});
         LinOptions o;
         o.model = a.model();
         o.trim = a.has("--trim");
+        o.mbc3 = a.has("--mbc3");
         o.hold = comma_list(a.get("--hold"));
-        if (!o.trim && !o.hold.empty()) throw UsageError("--hold needs --trim");
+        o.azimuth = a.get("--azimuth");
+        o.azimuths = static_cast<int>(a.number("--azimuths", o.azimuths));
+        if (!o.trim && !o.mbc3 && !o.hold.empty())
+            throw UsageError("--hold needs --trim or --mbc3");
+        if (!o.mbc3 && (a.has("--azimuths") || a.has("--azimuth")))
+            throw UsageError("--azimuths and --azimuth need --mbc3");
+        if (o.azimuths < 1 || o.azimuths > 3600)
+            throw UsageError("--azimuths must be between 1 and 3600");
         if (a.has("--sweep")) o.sweep = parse_sweep(a.get("--sweep"));
         o.output = a.get("-o");
         o.plot = a.get("--plot");

@@ -67,7 +67,10 @@ struct LinOptions {
     std::string model;
     std::vector<Assignment> at, set, u;
     bool trim = false;             // --trim: linearize about the trimmed point
-    std::vector<std::string> hold; // --hold: DOFs trim keeps (besides those spinning)
+    std::vector<std::string> hold; // --hold: DOFs trim keeps / MBC3 leaves out (with a rate: too)
+    bool mbc3 = false;             // --mbc3: azimuth-averaged multi-blade coordinates
+    int azimuths = 36;             // --azimuths: linearizations over a revolution
+    std::string azimuth;           // --azimuth: the DOF that turns the rotor
     std::string sid;               // --sid body=file.sid,..
     bool json = false;
     std::optional<Sweep> sweep; // --sweep NAME=FROM:STEP:TO: a Campbell diagram
