@@ -3,6 +3,7 @@
 #include "data/file_source.hpp"
 #include "driver/files.hpp"
 #include "lower/lower.hpp"
+#include "model/names.hpp"
 #include "parse/parser.hpp"
 #include "passes/passes.hpp"
 #include "passes/taylor.hpp"
@@ -15,6 +16,24 @@
 namespace yamsc::driver {
 
 namespace {
+
+/// Whether an expression reads the accelerations: a reaction load or a DOF's q''.
+bool reads_accelerations(const model::Model& m, const ast::Expr& e) {
+    if (e.kind == ast::Expr::Kind::call && model::is_reaction_function(e.text)) return true;
+    if (e.kind == ast::Expr::Kind::name && e.primes == 2)
+        for (const auto& d : m.dofs)
+            if (d.name == e.text) return true;
+    for (const ast::Expr& a : e.args)
+        if (reads_accelerations(m, a)) return true;
+    return false;
+}
+
+/// Outputs that read q'' need M, which the tangent form does not derive.
+bool outputs_read_accelerations(const model::Model& m) {
+    for (const auto& o : m.outputs)
+        if (reads_accelerations(m, o.value)) return true;
+    return false;
+}
 
 class Stopwatch {
 public:
@@ -89,8 +108,13 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
     if (until == Until::model) return fe;
     say(timed("parsed and checked", clock.seconds()));
     // Only the Jacobian stage can use the tangent form; `approx` needs M itself.
+    const bool accelerations = outputs_read_accelerations(*fe.model);
+    if (until == Until::jacobians && derivatives == Derivatives::tangent && accelerations)
+        throw diag::UserError("--jacobians tangent: outputs that read accelerations (reaction "
+                              "loads, q'') are not supported in the tangent form; use "
+                              "--jacobians unrolled");
     const bool tangent =
-        until == Until::jacobians && fe.model->approximations.empty() &&
+        until == Until::jacobians && fe.model->approximations.empty() && !accelerations &&
         (derivatives == Derivatives::tangent ||
          (derivatives == Derivatives::automatic && fe.model->dofs.size() >= tangent_form_min_dofs));
     fe.equations = symbolic::derive(*fe.model, diags, !tangent);

@@ -1,5 +1,6 @@
 #include "symbolic/derive.hpp"
 
+#include "model/names.hpp"
 #include "symbolic/flexible_body.hpp"
 #include "symbolic/kinematics.hpp"
 
@@ -203,7 +204,72 @@ private:
     }
 
     // ---- outputs ------------------------------------------------------------------------
+    /// Gravity, inertia (with the accelerations q'') and applied loads of every body,
+    /// about its origin in its axes: the loads a free body diagram of the body shows,
+    /// but for those of its joints. Built on first use.
+    const std::vector<Wrench>& body_loads() {
+        if (!body_loads_.empty() || m_.bodies.empty()) return body_loads_;
+        std::vector<ex> qdd;
+        for (const auto& d : sym_.dofs()) qdd.emplace_back(d.qdd);
+        const Vec3 g = to_ginac(m_.gravity, sym_);
+        const std::vector<Wrench> applied = applied_wrenches();
+        for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
+            const model::Body& body = m_.bodies[b];
+            const FrameState& f = frames_[b];
+            const Vec3 g_local = transpose_times(f.R, g);
+            Wrench w;
+            if (body.flex) {
+                auto [force, moment] = flexible_body_wrench(body, f, g_local, sym_, qdd);
+                w = {force, moment};
+            } else {
+                ex mass = to_ginac(body.mass, sym_);
+                Vec3 c = to_ginac(body.com, sym_);
+                Mat3 J = inertia_tensor(body, sym_);
+                Vec3 aG = f.a + cross(f.alpha, c) + cross(f.w, cross(f.w, c));
+                Vec3 alpha = f.alpha;
+                for (const auto& [r, jv] : f.Jv) aG = aG + qdd[static_cast<std::size_t>(r)] * jv;
+                for (const auto& [r, jw] : f.Jw) {
+                    aG = aG + qdd[static_cast<std::size_t>(r)] * cross(jw, c);
+                    alpha = alpha + qdd[static_cast<std::size_t>(r)] * jw;
+                }
+                w.force = mass * g_local - mass * aG;
+                w.moment = cross(c, w.force) - J * alpha - cross(f.w, J * f.w);
+            }
+            w.force = w.force + applied[b].force;
+            w.moment = w.moment + applied[b].moment;
+            body_loads_.push_back(w);
+        }
+        return body_loads_;
+    }
+
+    /// The force and moment (about the body's origin) that the joint of `body`
+    /// transmits to it from its parent, ground axes: by Newton-Euler on the
+    /// subtree the body carries, minus the sum of the loads on its bodies.
+    Wrench reaction(int body) {
+        const std::vector<Wrench>& loads = body_loads();
+        const Vec3& origin = frames_[static_cast<std::size_t>(body)].r;
+        Wrench total;
+        for (std::size_t i = static_cast<std::size_t>(body); i < m_.bodies.size(); ++i) {
+            if (!in_subtree(static_cast<int>(i), body)) continue;
+            const FrameState& f = frames_[i];
+            const Vec3 force = f.R * loads[i].force;
+            total.force = total.force - force;
+            total.moment = total.moment - f.R * loads[i].moment - cross(f.r - origin, force);
+        }
+        return total;
+    }
+
+    bool in_subtree(int i, int root) const {
+        while (i >= 0 && i != root) i = m_.bodies[static_cast<std::size_t>(i)].parent;
+        return i == root;
+    }
+
     Vec3 kinematic(const std::string& fn, const std::string& target, int frame) {
+        if (model::is_reaction_function(fn)) {
+            Wrench w = reaction(m_.body_index(target));
+            const Vec3& g = fn == "reaction_force" ? w.force : w.moment;
+            return frame >= 0 ? transpose_times(frames_[static_cast<std::size_t>(frame)].R, g) : g;
+        }
         Vec3 r, v, w;
         int body = m_.body_index(target);
         if (target == "ground") {
@@ -232,11 +298,18 @@ private:
     }
 
     void outputs() {
+        std::vector<symbol> qdd;
+        for (const auto& d : sym_.dofs()) qdd.push_back(d.qdd);
+        DependsOn uses_qdd(qdd);
         for (const auto& o : m_.outputs) {
             KinematicsHook hook = [&](const std::string& fn, const std::string& target) {
                 return kinematic(fn, target, o.frame);
             };
-            eq_.outputs.push_back({o.name, o.doc, to_ginac(o.value, sym_, hook)});
+            Output y{o.name, o.doc, to_ginac(o.value, sym_, hook), {}};
+            // Reactions and q'' read the accelerations: the linear model needs ∂y/∂q''.
+            if (uses_qdd(y.value))
+                for (const auto& d : sym_.dofs()) y.dqdd.push_back(sym_.diff(y.value, d.qdd));
+            eq_.outputs.push_back(std::move(y));
         }
     }
 
@@ -246,6 +319,7 @@ private:
     bool mass_matrix_;
     std::vector<FrameState> frames_;
     std::vector<exvector> Ma_terms_; // terms of (M a)_r
+    std::vector<Wrench> body_loads_; // body_loads(), once built
     Equations eq_;
 };
 
