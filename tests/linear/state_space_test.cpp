@@ -66,8 +66,8 @@ TEST_CASE("state_space and output_matrices equal finite differences of rhs and o
         {"models/nrel5mw_blade.mbd", "nrel5mw_blade", 2.0, 2, 1e4},
         {"tests/linear/models/pendulum_op.mbd", "pendulum_op", 2.5, 2, 10},
         // Reaction loads read q'' = M^-1 F: C and D chain through dq''/d[x, u].
-        {"tests/linear/models/reactions_double_pendulum.mbd", "reactions_double_pendulum", 2.5,
-         2, 5},
+        {"tests/linear/models/reactions_double_pendulum.mbd", "reactions_double_pendulum", 2.5, 2,
+         5},
         {"tests/linear/models/reactions_tower.mbd", "reactions_tower", 0.3, 0.5, 1e5, 1e-5},
     };
     for (const Case& c : cases) {
