@@ -107,12 +107,9 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
     if (checked) checked(*fe.model);
     if (until == Until::model) return fe;
     say(timed("parsed and checked", clock.seconds()));
-    // Only the Jacobian stage can use the tangent form; `approx` needs M itself.
+    // Only the Jacobian stage can use the tangent form; `approx` and outputs that
+    // read q'' (reaction loads) need M itself.
     const bool accelerations = outputs_read_accelerations(*fe.model);
-    if (until == Until::jacobians && derivatives == Derivatives::tangent && accelerations)
-        throw diag::UserError("--jacobians tangent: outputs that read accelerations (reaction "
-                              "loads, q'') are not supported in the tangent form; use "
-                              "--jacobians unrolled");
     const bool tangent =
         until == Until::jacobians && fe.model->approximations.empty() && !accelerations &&
         (derivatives == Derivatives::tangent ||
