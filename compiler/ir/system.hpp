@@ -40,7 +40,7 @@ struct Output {
     // ∂value/∂q''_s (one per DOF), empty when the output does not read q''. The
     // generated `outputs` solves M q'' = F for it; output_matrices adds
     // ∂y/∂q'' dq''/d[x, u] to C and D.
-    std::vector<NodeId> dqdd;
+    std::vector<NodeId> dqdd = {};
 };
 
 /// The model's `linearize` block: q0, q0', u0 as functions of the parameters

@@ -45,7 +45,7 @@ struct Output {
     std::string name;
     std::string doc;
     GiNaC::ex value; // function of t, q, q', u, p and, for reaction loads, q''
-    Row dqdd;        // ∂value/∂q''_s, one per DOF; empty when value does not read q''
+    Row dqdd = {};   // ∂value/∂q''_s, one per DOF; empty when value does not read q''
 };
 
 struct Equations {
