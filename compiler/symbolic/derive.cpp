@@ -3,21 +3,13 @@
 #include "model/names.hpp"
 #include "symbolic/flexible_body.hpp"
 #include "symbolic/kinematics.hpp"
+#include "symbolic/reactions.hpp"
 
 namespace yamsc::symbolic {
 
 using namespace GiNaC;
 
 namespace {
-
-/// Inertia tensor about the COM, body axes, from (Ixx, Iyy, Izz, Ixy, Iyz, Ixz).
-Mat3 inertia_tensor(const model::Body& b, const Symbols& s) {
-    std::array<ex, 6> I;
-    for (std::size_t i = 0; i < 6; ++i) I[i] = to_ginac(b.inertia[i], s);
-    Mat3 J;
-    J.m = {{{I[0], I[3], I[5]}, {I[3], I[1], I[4]}, {I[5], I[4], I[2]}}};
-    return J;
-}
 
 /// Components in `frame`'s axes of a vector whose components are in `from`'s axes
 /// (-1 is ground).
@@ -26,11 +18,6 @@ Vec3 change_axes(const Vec3& v, int from, int to, const std::vector<FrameState>&
     Vec3 g = from < 0 ? v : frames[static_cast<std::size_t>(from)].R * v;
     return to < 0 ? g : transpose_times(frames[static_cast<std::size_t>(to)].R, g);
 }
-
-/// Resultant force and moment about the body origin, body axes.
-struct Wrench {
-    Vec3 force, moment;
-};
 
 class Kane {
 public:
@@ -204,69 +191,10 @@ private:
     }
 
     // ---- outputs ------------------------------------------------------------------------
-    /// Gravity, inertia (with the accelerations q'') and applied loads of every body,
-    /// about its origin in its axes: the loads a free body diagram of the body shows,
-    /// but for those of its joints. Built on first use.
-    const std::vector<Wrench>& body_loads() {
-        if (!body_loads_.empty() || m_.bodies.empty()) return body_loads_;
-        std::vector<ex> qdd;
-        for (const auto& d : sym_.dofs()) qdd.emplace_back(d.qdd);
-        const Vec3 g = to_ginac(m_.gravity, sym_);
-        const std::vector<Wrench> applied = applied_wrenches();
-        for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
-            const model::Body& body = m_.bodies[b];
-            const FrameState& f = frames_[b];
-            const Vec3 g_local = transpose_times(f.R, g);
-            Wrench w;
-            if (body.flex) {
-                auto [force, moment] = flexible_body_wrench(body, f, g_local, sym_, qdd);
-                w = {force, moment};
-            } else {
-                ex mass = to_ginac(body.mass, sym_);
-                Vec3 c = to_ginac(body.com, sym_);
-                Mat3 J = inertia_tensor(body, sym_);
-                Vec3 aG = f.a + cross(f.alpha, c) + cross(f.w, cross(f.w, c));
-                Vec3 alpha = f.alpha;
-                for (const auto& [r, jv] : f.Jv) aG = aG + qdd[static_cast<std::size_t>(r)] * jv;
-                for (const auto& [r, jw] : f.Jw) {
-                    aG = aG + qdd[static_cast<std::size_t>(r)] * cross(jw, c);
-                    alpha = alpha + qdd[static_cast<std::size_t>(r)] * jw;
-                }
-                w.force = mass * g_local - mass * aG;
-                w.moment = cross(c, w.force) - J * alpha - cross(f.w, J * f.w);
-            }
-            w.force = w.force + applied[b].force;
-            w.moment = w.moment + applied[b].moment;
-            body_loads_.push_back(w);
-        }
-        return body_loads_;
-    }
-
-    /// The force and moment (about the body's origin) that the joint of `body`
-    /// transmits to it from its parent, ground axes: by Newton-Euler on the
-    /// subtree the body carries, minus the sum of the loads on its bodies.
-    Wrench reaction(int body) {
-        const std::vector<Wrench>& loads = body_loads();
-        const Vec3& origin = frames_[static_cast<std::size_t>(body)].r;
-        Wrench total;
-        for (std::size_t i = static_cast<std::size_t>(body); i < m_.bodies.size(); ++i) {
-            if (!in_subtree(static_cast<int>(i), body)) continue;
-            const FrameState& f = frames_[i];
-            const Vec3 force = f.R * loads[i].force;
-            total.force = total.force - force;
-            total.moment = total.moment - f.R * loads[i].moment - cross(f.r - origin, force);
-        }
-        return total;
-    }
-
-    bool in_subtree(int i, int root) const {
-        while (i >= 0 && i != root) i = m_.bodies[static_cast<std::size_t>(i)].parent;
-        return i == root;
-    }
-
     Vec3 kinematic(const std::string& fn, const std::string& target, int frame) {
         if (model::is_reaction_function(fn)) {
-            Wrench w = reaction(m_.body_index(target));
+            if (!reactions_) reactions_.emplace(m_, frames_, sym_, applied_wrenches());
+            const Wrench& w = reactions_->of(m_.body_index(target));
             const Vec3& g = fn == "reaction_force" ? w.force : w.moment;
             return frame >= 0 ? transpose_times(frames_[static_cast<std::size_t>(frame)].R, g) : g;
         }
@@ -318,8 +246,8 @@ private:
     Symbols sym_;
     bool mass_matrix_;
     std::vector<FrameState> frames_;
-    std::vector<exvector> Ma_terms_; // terms of (M a)_r
-    std::vector<Wrench> body_loads_; // body_loads(), once built
+    std::vector<exvector> Ma_terms_;     // terms of (M a)_r
+    std::optional<Reactions> reactions_; // built when an output asks for one
     Equations eq_;
 };
 
