@@ -38,8 +38,9 @@ const std::vector<std::string>& language_keywords() {
 }
 
 const std::vector<std::string>& predefined_names() {
-    static const std::vector<std::string> words{"ground",   "t",        "pi",
-                                                "position", "velocity", "angular_velocity"};
+    static const std::vector<std::string> words{
+        "ground",         "t", "pi", "position", "velocity", "angular_velocity", "reaction_force",
+        "reaction_moment"};
     return words;
 }
 

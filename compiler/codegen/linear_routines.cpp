@@ -87,6 +87,45 @@ Routine output_matrices_routine(const Graph& g, const ir::System& s, const Optio
     return std::move(b).finish(options);
 }
 
+// Outputs that read q'' (reaction loads): y(q, q', u, q'') with q'' = M^-1 F, so
+// C = ∂y/∂x + ∂y/∂q'' X_x and D = ∂y/∂u + ∂y/∂q'' X_u, where
+// X = M0^-1 [dF_dq - dMa_dq, dF_dqd | dF_du] are the lower rows of [A | B]. X is
+// solved in place in a local; its entries are read through the seed symbols
+// (seed k = X[k], row-major nq x (2nq + nu)), which the unrolled form leaves free.
+Routine output_matrices_with_accelerations(Graph& g, const ir::System& s, const LinearSources& in,
+                                           const Options& options) {
+    const int nq = s.nq(), nu = s.nu(), nx = 2 * nq, w = nx + nu;
+    SymbolSource source = SymbolSource::operating_point();
+    source.qdd = source.a; // y and its partials at q''0
+    source.seed = "X";
+    RoutineBuilder b(g, api_signature("output_matrices"), bind(source));
+    factor_and_solve_accelerations(b, in, nq, true);
+    b.local("X", nq * w);
+    for (int i = 0; i < nq; ++i) {
+        for (int j = 0; j < nq; ++j)
+            b.assign("X", i * w + j, g.add({{in.dF_dq[i][j], 1.0}, {in.dMa_dq[i][j], -1.0}}, 0));
+        for (int j = 0; j < nq; ++j) b.assign("X", i * w + nq + j, in.dF_dqd[i][j]);
+        for (int j = 0; j < nu; ++j) b.assign("X", i * w + nx + j, in.dF_du[i][j]);
+    }
+    b.solve("M", nq, "X", 0, w);
+    auto chained = [&](std::size_t i, NodeId partial, int column) {
+        const std::vector<NodeId>& dy = s.outputs[i].dqdd;
+        std::vector<ir::Operand> terms{{partial, 1.0}};
+        for (int r = 0; r < static_cast<int>(dy.size()); ++r) {
+            const NodeId x = g.symbol({SymbolKind::seed, r * w + column});
+            terms.push_back({g.mul({{dy[static_cast<std::size_t>(r)], 1.0}, {x, 1.0}}, 1.0), 1.0});
+        }
+        return g.add(std::move(terms), 0.0);
+    };
+    for (std::size_t i = 0; i < s.C.size(); ++i)
+        for (int j = 0; j < nx; ++j)
+            b.assign("C", static_cast<int>(i) * nx + j, chained(i, s.C[i][j], j));
+    for (std::size_t i = 0; i < s.D.size(); ++i)
+        for (int j = 0; j < nu; ++j)
+            b.assign("D", static_cast<int>(i) * nu + j, chained(i, s.D[i][j], nx + j));
+    return std::move(b).finish(options);
+}
+
 } // namespace
 
 void add_linear_routines(Graph& graph, const ir::System& s, const LinearSources& in,
@@ -96,7 +135,9 @@ void add_linear_routines(Graph& graph, const ir::System& s, const LinearSources&
     const bool accelerations = uses_accelerations(graph, in.dMa_dq);
     routines.push_back(linear_routine(graph, in, nq, nu, accelerations, options));
     routines.push_back(state_space_routine(graph, in, nq, nu, accelerations, options));
-    routines.push_back(output_matrices_routine(graph, s, options));
+    routines.push_back(s.outputs_read_accelerations()
+                           ? output_matrices_with_accelerations(graph, s, in, options)
+                           : output_matrices_routine(graph, s, options));
 }
 
 void add_operating_point(Module& module, const ir::System& s) {

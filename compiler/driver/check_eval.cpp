@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <ostream>
+#include <utility>
+#include <vector>
 
 namespace yamsc::driver {
 
@@ -100,6 +102,34 @@ int check(const CheckOptions& o, std::ostream& out, std::ostream& err) {
     return 0;
 }
 
+namespace {
+
+/// x = A^-1 b by Gaussian elimination with partial pivoting (M is small and SPD).
+std::vector<double> solve(std::vector<std::vector<double>> A, std::vector<double> b) {
+    const std::size_t n = b.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        std::size_t pivot = k;
+        for (std::size_t r = k + 1; r < n; ++r)
+            if (std::abs(A[r][k]) > std::abs(A[pivot][k])) pivot = r;
+        std::swap(A[k], A[pivot]);
+        std::swap(b[k], b[pivot]);
+        for (std::size_t r = k + 1; r < n; ++r) {
+            const double f = A[r][k] / A[k][k];
+            for (std::size_t c = k; c < n; ++c) A[r][c] -= f * A[k][c];
+            b[r] -= f * b[k];
+        }
+    }
+    std::vector<double> x(n);
+    for (std::size_t k = n; k-- > 0;) {
+        double v = b[k];
+        for (std::size_t c = k + 1; c < n; ++c) v -= A[k][c] * x[c];
+        x[k] = v / A[k][k];
+    }
+    return x;
+}
+
+} // namespace
+
 int eval(const EvalOptions& o, std::ostream& out, std::ostream& err) {
     diag::Diagnostics diags;
     FrontEnd fe = run_front_end(o.model, Until::system, diags);
@@ -125,37 +155,42 @@ int eval(const EvalOptions& o, std::ostream& out, std::ostream& err) {
     std::vector<double> q = o.q.empty() ? std::vector<double>(nq, 0.0) : sized(o.q, nq, "--q");
     std::vector<double> qd = o.qd.empty() ? std::vector<double>(nq, 0.0) : sized(o.qd, nq, "--qd");
 
-    // M, F and the outputs in one evaluation of the graph (the M, F of `approx`
-    // models approximated, as the generated code computes them).
+    // M and F, then the outputs with q'' = M^-1 F (reaction loads read it); the M,
+    // F of `approx` models approximated, as the generated code computes them.
+    std::vector<double> qdd(nq, std::nan(""));
+    auto value_of = [&](ir::SymbolRef s) -> double {
+        const auto i = static_cast<std::size_t>(s.index);
+        switch (s.kind) {
+        case ir::SymbolKind::time:
+            return o.t;
+        case ir::SymbolKind::q:
+            return q[i];
+        case ir::SymbolKind::qd:
+            return qd[i];
+        case ir::SymbolKind::qdd:
+            return qdd[i];
+        case ir::SymbolKind::input:
+            return u[i];
+        case ir::SymbolKind::param:
+            return p[i];
+        default: // `a`: in the graph (M a), never read by M, F or y
+            return std::nan("");
+        }
+    };
     std::vector<ir::NodeId> roots;
     for (const ir::Row& row : sys.M) roots.insert(roots.end(), row.begin(), row.end());
     roots.insert(roots.end(), sys.F.begin(), sys.F.end());
-    for (const ir::Output& y : sys.outputs) roots.push_back(y.value);
-    const std::vector<double> values =
-        ir::evaluate(sys.graph, roots, [&](ir::SymbolRef s) -> double {
-            const auto i = static_cast<std::size_t>(s.index);
-            switch (s.kind) {
-            case ir::SymbolKind::time:
-                return o.t;
-            case ir::SymbolKind::q:
-                return q[i];
-            case ir::SymbolKind::qd:
-                return qd[i];
-            case ir::SymbolKind::input:
-                return u[i];
-            case ir::SymbolKind::param:
-                return p[i];
-            default: // q'' and `a`: in the graph (M a), never read by M, F or y
-                return std::nan("");
-            }
-        });
+    const std::vector<double> values = ir::evaluate(sys.graph, roots, value_of);
     std::vector<std::vector<double>> M(nq, std::vector<double>(nq));
-    std::vector<double> F(nq), y;
+    std::vector<double> F(nq);
     std::size_t next = 0;
     for (std::size_t r = 0; r < nq; ++r)
         for (std::size_t c = 0; c < nq; ++c) M[r][c] = values[next++];
     for (std::size_t r = 0; r < nq; ++r) F[r] = values[next++];
-    while (next < values.size()) y.push_back(values[next++]);
+    if (sys.outputs_read_accelerations()) qdd = solve(M, F);
+    std::vector<ir::NodeId> output_roots;
+    for (const ir::Output& output : sys.outputs) output_roots.push_back(output.value);
+    const std::vector<double> y = ir::evaluate(sys.graph, output_roots, value_of);
     std::vector<std::string> onames;
     for (const auto& output : sys.outputs) onames.push_back(output.name);
     out << "{\"nq\":" << nq << ",\"dofs\":" << json::strings(dofs) << ",\"M\":" << json::matrix(M)

@@ -165,8 +165,9 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
     err << diags.render();
     if (diags.has_errors()) return 1;
     if (o.jacobians == Derivatives::tangent && fe.system && !fe.system->tangent_form)
-        throw UsageError("--jacobians tangent does not apply to a model with `approx` (which "
-                         "works on M itself)");
+        throw UsageError("--jacobians tangent does not apply to a model with `approx` or with "
+                         "outputs that read accelerations (reaction loads, q''): both work on M "
+                         "itself");
     if (o.dump == Dump::ast) {
         out << ast::dump(*fe.ast);
         return 0;

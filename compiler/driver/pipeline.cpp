@@ -4,6 +4,7 @@
 #include "diag/errors.hpp"
 #include "driver/files.hpp"
 #include "lower/lower.hpp"
+#include "model/names.hpp"
 #include "parse/parser.hpp"
 #include "passes/passes.hpp"
 #include "passes/taylor.hpp"
@@ -16,6 +17,24 @@
 namespace yamsc::driver {
 
 namespace {
+
+/// Whether an expression reads the accelerations: a reaction load or a DOF's q''.
+bool reads_accelerations(const model::Model& m, const ast::Expr& e) {
+    if (e.kind == ast::Expr::Kind::call && model::is_reaction_function(e.text)) return true;
+    if (e.kind == ast::Expr::Kind::name && e.primes == 2)
+        for (const auto& d : m.dofs)
+            if (d.name == e.text) return true;
+    for (const ast::Expr& a : e.args)
+        if (reads_accelerations(m, a)) return true;
+    return false;
+}
+
+/// Outputs that read q'' need M, which the tangent form does not derive.
+bool outputs_read_accelerations(const model::Model& m) {
+    for (const auto& o : m.outputs)
+        if (reads_accelerations(m, o.value)) return true;
+    return false;
+}
 
 class Stopwatch {
 public:
@@ -109,9 +128,11 @@ void continue_front_end(FrontEnd& fe, const std::string& path, Until until,
         if (progress) progress(s);
     };
     Stopwatch clock;
-    // Only the Jacobian stage can use the tangent form; `approx` needs M itself.
+    // Only the Jacobian stage can use the tangent form; `approx` and outputs that
+    // read q'' (reaction loads) need M itself.
+    const bool accelerations = outputs_read_accelerations(*fe.model);
     const bool tangent =
-        until == Until::jacobians && fe.model->approximations.empty() &&
+        until == Until::jacobians && fe.model->approximations.empty() && !accelerations &&
         (derivatives == Derivatives::tangent ||
          (derivatives == Derivatives::automatic && fe.model->dofs.size() >= tangent_form_min_dofs));
     fe.equations = symbolic::derive(*fe.model, diags, !tangent);
@@ -136,7 +157,6 @@ void continue_front_end(FrontEnd& fe, const std::string& path, Until until,
         passes::output_jacobians(*fe.system);
         say(timed("derived the Jacobians", clock.seconds()));
     }
-    return;
 }
 
 } // namespace yamsc::driver

@@ -36,7 +36,11 @@ struct Parameter {
 struct Output {
     std::string name;
     std::string doc;
-    NodeId value = 0; // function of t, q, q', u, p
+    NodeId value = 0; // function of t, q, q', u, p and, for reaction loads, q''
+    // ∂value/∂q''_s (one per DOF), empty when the output does not read q''. The
+    // generated `outputs` solves M q'' = F for it; output_matrices adds
+    // ∂y/∂q'' dq''/d[x, u] to C and D.
+    std::vector<NodeId> dqdd = {};
 };
 
 /// The model's `linearize` block: q0, q0', u0 as functions of the parameters
@@ -101,6 +105,12 @@ struct System {
     int nu() const { return static_cast<int>(inputs.size()); }
     int np() const { return static_cast<int>(params.size()); }
     int ny() const { return static_cast<int>(outputs.size()); }
+    /// Whether an output reads q'' (reaction loads): its code solves M q'' = F.
+    bool outputs_read_accelerations() const {
+        for (const Output& y : outputs)
+            if (!y.dqdd.empty()) return true;
+        return false;
+    }
 };
 
 } // namespace yamsc::ir

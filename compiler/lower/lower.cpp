@@ -41,7 +41,8 @@ ir::System lower_with(const symbolic::Equations& eq, const symbolic::OperatingPo
     s.F = import_row(importer, eq.F);
     s.Ma = import_row(importer, eq.Ma);
     for (const symbolic::Output& y : eq.outputs)
-        s.outputs.push_back({y.name, y.doc, importer.import(y.value)});
+        s.outputs.push_back(
+            {y.name, y.doc, importer.import(y.value), import_row(importer, y.dqdd)});
     if (point != nullptr) {
         s.point.q = import_row(importer, point->q);
         s.point.qd = import_row(importer, point->qd);

@@ -651,7 +651,7 @@ private:
                              "output '" + o.id.name + "' is already declared");
             ExprContext ctx{"output '" + o.id.name + "'"};
             ctx.dofs = true;
-            ctx.dof_primes = 1;
+            ctx.dof_primes = 2; // q'': the accelerations M^-1 F, solved in `outputs`
             ctx.inputs = true;
             ctx.time = true;
             ctx.kinematics = true;

@@ -132,7 +132,12 @@ Shape ExprChecker::check_call(const Expr& e, const ExprContext& ctx) {
             return Shape::invalid;
         }
         const Expr& target = e.args[0];
-        if (target.text == "ground") return Shape::vector;
+        if (target.text == "ground") {
+            if (!is_reaction_function(e.text)) return Shape::vector;
+            diags_.error(Kind::WrongKind, target.loc,
+                         e.text + "() takes a body; ground has no joint");
+            return Shape::invalid;
+        }
         auto it = names_.find(target.text);
         if (it == names_.end()) {
             std::vector<std::string> candidates;
@@ -150,18 +155,35 @@ Shape ExprChecker::check_call(const Expr& e, const ExprContext& ctx) {
                              kind_word(it->second.kind));
             return Shape::invalid;
         }
-        if (e.text == "angular_velocity" && it->second.kind == NameKind::point) {
+        if ((e.text == "angular_velocity" || is_reaction_function(e.text)) &&
+            it->second.kind == NameKind::point) {
             diags_.error(Kind::WrongKind, target.loc,
-                         "angular_velocity() takes a body; '" + target.text + "' is a point");
+                         e.text + "() takes a body; '" + target.text + "' is a point" +
+                             (is_reaction_function(e.text)
+                                  ? " (loads through a section are not supported yet)"
+                                  : ""));
             return Shape::invalid;
         }
         return Shape::vector;
     }
     int arity = function_arity(e.text);
     if (arity < 0) {
-        std::vector<std::string> known = {
-            "sin",  "cos", "tan", "asin", "acos",     "atan",     "atan2",
-            "sqrt", "exp", "log", "abs",  "position", "velocity", "angular_velocity"};
+        std::vector<std::string> known = {"sin",
+                                          "cos",
+                                          "tan",
+                                          "asin",
+                                          "acos",
+                                          "atan",
+                                          "atan2",
+                                          "sqrt",
+                                          "exp",
+                                          "log",
+                                          "abs",
+                                          "position",
+                                          "velocity",
+                                          "angular_velocity",
+                                          "reaction_force",
+                                          "reaction_moment"};
         diags_.error(Kind::UnknownName, e.loc,
                      "unknown function '" + e.text + "'" + diag::did_you_mean(e.text, known));
         return Shape::invalid;

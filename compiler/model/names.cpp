@@ -184,7 +184,12 @@ int function_arity(std::string_view name) {
 }
 
 bool is_kinematic_function(std::string_view name) {
-    return name == "position" || name == "velocity" || name == "angular_velocity";
+    return name == "position" || name == "velocity" || name == "angular_velocity" ||
+           is_reaction_function(name);
+}
+
+bool is_reaction_function(std::string_view name) {
+    return name == "reaction_force" || name == "reaction_moment";
 }
 
 } // namespace yamsc::model

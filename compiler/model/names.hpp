@@ -16,6 +16,9 @@ int function_arity(std::string_view name); // -1 if not a function
 
 /// Kinematic vector functions, allowed in outputs only: position, velocity, angular_velocity.
 bool is_kinematic_function(std::string_view name);
+/// The loads a body's joint transmits, allowed in outputs only: reaction_force,
+/// reaction_moment (also kinematic functions: vectors of one body).
+bool is_reaction_function(std::string_view name);
 
 struct NameInfo {
     NameKind kind;

@@ -64,8 +64,8 @@ const std::vector<std::string>& numeric_entries() {
 
 /// Numeric entries the model uses when present (defaults otherwise).
 const std::vector<std::string>& optional_numeric_entries() {
-    static const std::vector<std::string> names{"Gravity",    "AzimB1Up",   "GBoxEff",
-                                                "PtfmXYIner", "PtfmYZIner", "PtfmXZIner"};
+    static const std::vector<std::string> names{"Gravity",    "AzimB1Up",   "GBoxEff", "PtfmXYIner",
+                                                "PtfmYZIner", "PtfmXZIner", "ShftGagL"};
     return names;
 }
 
@@ -78,12 +78,14 @@ const std::map<std::string, Use>& elastodyn_keys() {
             k[canonical(n)] = Use::optional_number;
         for (const char* n : {"BldFile1", "BldFile2", "BldFile3", "TwrFile"})
             k[canonical(n)] = Use::file;
-        for (const char* n :
-             {"Echo",          "Method",       "DT",         "ShftGagL",        "NcIMUxn",
-              "NcIMUyn",       "NcIMUzn",      "SumPrint",   "OutFile",         "TabDelim",
-              "OutFmt",        "TStart",       "DecFact",    "NTwGages",        "TwrGagNd",
-              "NBlGages",      "BldGagNd",     "OutList",    "BldNd_BladesOut", "BldNd_BlOutNd",
-              "OutList_Nodal", "BldNd_Blades", "BldNd_Nodes"})
+        for (const char* n : {"Echo",          "Method",        "DT",
+                              "NcIMUxn",       "NcIMUyn",       "NcIMUzn",
+                              "SumPrint",      "OutFile",       "TabDelim",
+                              "OutFmt",        "TStart",        "DecFact",
+                              "NTwGages",      "TwrGagNd",      "NBlGages",
+                              "BldGagNd",      "OutList",       "BldNd_BladesOut",
+                              "BldNd_BlOutNd", "OutList_Nodal", "BldNd_Blades",
+                              "BldNd_Nodes"})
             k[canonical(n)] = Use::ignored;
         for (const char* n : {"TeetDefl", "UndSling", "Delta3", "TeetMod", "TeetDmpP", "TeetDmp",
                               "TeetCDmp", "TeetSStP", "TeetHStP", "TeetSSSp", "TeetHSSp"})

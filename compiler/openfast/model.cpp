@@ -61,6 +61,7 @@ public:
         initial_state();
         outputs();
         displacement_outputs();
+        load_outputs();
         return out_.str();
     }
 
@@ -182,6 +183,8 @@ private:
         if (v("YawBrMass") != 0) param("YawBrMass", v("YawBrMass"), "yaw bearing mass [kg]");
         param("GenIner", v("GenIner"), "generator inertia about the high-speed shaft [kg m^2]");
         param("GBRatio", v("GBRatio"), "gearbox ratio");
+        param("ShftGagL", v("ShftGagL"),
+              "shaft strain gages from the rotor apex, > 0 for upwind rotors [m]");
         if (on("DrTrDOF")) {
             param("DTTorSpr", v("DTTorSpr"), "drivetrain torsional stiffness [N m/rad]");
             param("DTTorDmp", v("DTTorDmp"), "drivetrain torsional damping [N m s/rad]");
@@ -696,6 +699,85 @@ private:
     static std::string strip(const std::string& sum) {
         if (sum.empty()) return "0";
         return sum.compare(0, 3, " - ") == 0 ? "-" + sum.substr(3) : sum.substr(3);
+    }
+    /// ElastoDyn's load channels from the reactions of the joints (docs/language.md):
+    /// ElastoDyn reports the load the part beyond a cut puts on it, the opposite of
+    /// reaction_force/reaction_moment (the load on the child), in kN and kN m.
+    /// Distributed loads entered as `genforce` on modes (f_fa1, f_flap1, ...) are not
+    /// in them; thrust and torques are (docs/openfast.md).
+    void load_outputs() {
+        out_ << "\n# ---- OpenFAST load channels (ElastoDyn's names, signs and units: the load\n"
+                "# beyond the cut on the cut, -reaction; genforce loads on modes not included)\n";
+        // Tower base (point T(0)), tower-base axes.
+        for (const char* c : {"x", "y", "z"})
+            output(std::string("TwrBsM") + c + "t",
+                   std::string("-reaction_moment(tower).") + c + " / 1000 in tower", "kN m");
+        // Yaw bearing (point O), axes of the tower top before the yaw.
+        const std::string above = "nacelle";
+        if (v("YawBrMass") != 0) {
+            output("YawBrMxp", "-reaction_moment(" + above + ").x / 1000 in yaw_bearing", "kN m");
+            output("YawBrMyp", "-reaction_moment(" + above + ").y / 1000 in yaw_bearing", "kN m");
+        } else {
+            const std::string yaw = on("YawDOF")       ? "nac_yaw"
+                                    : v("NacYaw") != 0 ? mbd_number(v("NacYaw")) + " deg"
+                                                       : "";
+            const std::string mx = "reaction_moment(" + above + ").x",
+                              my = "reaction_moment(" + above + ").y";
+            if (yaw.empty()) {
+                output("YawBrMxp", "-" + mx + " / 1000 in nacelle", "kN m");
+                output("YawBrMyp", "-" + my + " / 1000 in nacelle", "kN m");
+            } else {
+                // The nacelle's axes turned back by the yaw angle.
+                output("YawBrMxp",
+                       "-(" + mx + " * cos(" + yaw + ") - " + my + " * sin(" + yaw +
+                           ")) / 1000 in nacelle",
+                       "kN m");
+                output("YawBrMyp",
+                       "-(" + mx + " * sin(" + yaw + ") + " + my + " * cos(" + yaw +
+                           ")) / 1000 in nacelle",
+                       "kN m");
+            }
+        }
+        // Blade 1 root (point S(0)): b = the blade's pitched axes, c = before the pitch.
+        if (flexible_blades()) {
+            const std::string m = "reaction_moment(blade1)";
+            if (v("BlPitch1") != 0) {
+                output("RootMxc1",
+                       "-(" + m + ".x * cos(BlPitch1) + " + m +
+                           ".y * sin(BlPitch1)) / 1000 in blade1",
+                       "kN m");
+                output("RootMyc1",
+                       "-(" + m + ".y * cos(BlPitch1) - " + m +
+                           ".x * sin(BlPitch1)) / 1000 in blade1",
+                       "kN m");
+            } else {
+                output("RootMxc1", "-" + m + ".x / 1000 in blade1", "kN m");
+                output("RootMyc1", "-" + m + ".y / 1000 in blade1", "kN m");
+            }
+            output("RootMzc1", "-" + m + ".z / 1000 in blade1", "kN m");
+            output("RootMxb1", "-" + m + ".x / 1000 in blade1", "kN m");
+            output("RootMyb1", "-" + m + ".y / 1000 in blade1", "kN m");
+        }
+        // Low-speed shaft at the rotor apex (point P), shaft axes turning with the rotor.
+        // Without the drivetrain DOF the generator torque acts on the rotor and the
+        // rotor's body carries the generator's inertia: the shaft then carries the
+        // generator torque and the generator's inertial torque.
+        const std::string rotor = flexible_blades() ? "hub" : "rotor";
+        const std::string mom = "reaction_moment(" + rotor + ")",
+                          frc = "reaction_force(" + rotor + ")";
+        std::string generator;
+        if (!on("DrTrDOF"))
+            generator = on("GenDOF")
+                            ? " + (GBRatio * gen_torque + GenIner * GBRatio^2 * psi'') / 1000"
+                            : " + GBRatio * gen_torque / 1000";
+        const std::string torque = "-" + mom + ".x / 1000" + generator + " in " + rotor;
+        output("LSShftMxa", torque, "kN m");
+        output("LSSGagMya", "-(" + mom + ".y + ShftGagL * " + frc + ".z) / 1000 in " + rotor,
+               "kN m");
+        output("LSSGagMza", "-(" + mom + ".z - ShftGagL * " + frc + ".y) / 1000 in " + rotor,
+               "kN m");
+        output("RotThrust", "-" + frc + ".x / 1000 in " + rotor, "kN");
+        output("RotTorq", torque, "kN m");
     }
 
     void output(const std::string& name, const std::string& value, const std::string& unit) {

@@ -16,6 +16,8 @@ void derive_tangent(ir::System& s) {
     const std::size_t nq = s.dofs.size(), nu = s.inputs.size();
     if (s.Ma.size() != nq || s.F.size() != nq)
         throw diag::InternalError("the tangent form needs M a assembled by derive()");
+    if (s.outputs_read_accelerations())
+        throw diag::InternalError("the tangent form has no M to solve the outputs' q'' with");
     // Seed k for variable k: q (0..nq-1), q' (nq..2nq-1), u (2nq..); none for p.
     std::vector<NodeId> seeds(static_cast<std::size_t>(g.variables().count()), g.number(0.0));
     for (std::size_t k = 0; k < 2 * nq + nu; ++k)

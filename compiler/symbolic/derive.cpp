@@ -1,22 +1,15 @@
 #include "symbolic/derive.hpp"
 
+#include "model/names.hpp"
 #include "symbolic/flexible_body.hpp"
 #include "symbolic/kinematics.hpp"
+#include "symbolic/reactions.hpp"
 
 namespace yamsc::symbolic {
 
 using namespace GiNaC;
 
 namespace {
-
-/// Inertia tensor about the COM, body axes, from (Ixx, Iyy, Izz, Ixy, Iyz, Ixz).
-Mat3 inertia_tensor(const model::Body& b, const Symbols& s) {
-    std::array<ex, 6> I;
-    for (std::size_t i = 0; i < 6; ++i) I[i] = to_ginac(b.inertia[i], s);
-    Mat3 J;
-    J.m = {{{I[0], I[3], I[5]}, {I[3], I[1], I[4]}, {I[5], I[4], I[2]}}};
-    return J;
-}
 
 /// Components in `frame`'s axes of a vector whose components are in `from`'s axes
 /// (-1 is ground).
@@ -25,11 +18,6 @@ Vec3 change_axes(const Vec3& v, int from, int to, const std::vector<FrameState>&
     Vec3 g = from < 0 ? v : frames[static_cast<std::size_t>(from)].R * v;
     return to < 0 ? g : transpose_times(frames[static_cast<std::size_t>(to)].R, g);
 }
-
-/// Resultant force and moment about the body origin, body axes.
-struct Wrench {
-    Vec3 force, moment;
-};
 
 class Kane {
 public:
@@ -204,6 +192,12 @@ private:
 
     // ---- outputs ------------------------------------------------------------------------
     Vec3 kinematic(const std::string& fn, const std::string& target, int frame) {
+        if (model::is_reaction_function(fn)) {
+            if (!reactions_) reactions_.emplace(m_, frames_, sym_, applied_wrenches());
+            const Wrench& w = reactions_->of(m_.body_index(target));
+            const Vec3& g = fn == "reaction_force" ? w.force : w.moment;
+            return frame >= 0 ? transpose_times(frames_[static_cast<std::size_t>(frame)].R, g) : g;
+        }
         Vec3 r, v, w;
         int body = m_.body_index(target);
         if (target == "ground") {
@@ -232,11 +226,18 @@ private:
     }
 
     void outputs() {
+        std::vector<symbol> qdd;
+        for (const auto& d : sym_.dofs()) qdd.push_back(d.qdd);
+        DependsOn uses_qdd(qdd);
         for (const auto& o : m_.outputs) {
             KinematicsHook hook = [&](const std::string& fn, const std::string& target) {
                 return kinematic(fn, target, o.frame);
             };
-            eq_.outputs.push_back({o.name, o.doc, to_ginac(o.value, sym_, hook)});
+            Output y{o.name, o.doc, to_ginac(o.value, sym_, hook), {}};
+            // Reactions and q'' read the accelerations: the linear model needs ∂y/∂q''.
+            if (uses_qdd(y.value))
+                for (const auto& d : sym_.dofs()) y.dqdd.push_back(sym_.diff(y.value, d.qdd));
+            eq_.outputs.push_back(std::move(y));
         }
     }
 
@@ -245,7 +246,8 @@ private:
     Symbols sym_;
     bool mass_matrix_;
     std::vector<FrameState> frames_;
-    std::vector<exvector> Ma_terms_; // terms of (M a)_r
+    std::vector<exvector> Ma_terms_;     // terms of (M a)_r
+    std::optional<Reactions> reactions_; // built when an output asks for one
     Equations eq_;
 };
 

@@ -44,7 +44,8 @@ struct Parameter {
 struct Output {
     std::string name;
     std::string doc;
-    GiNaC::ex value; // function of t, q, q', u, p
+    GiNaC::ex value; // function of t, q, q', u, p and, for reaction loads, q''
+    Row dqdd = {};   // ∂value/∂q''_s, one per DOF; empty when value does not read q''
 };
 
 struct Equations {

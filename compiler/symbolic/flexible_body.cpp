@@ -70,38 +70,48 @@ struct Rows {
     std::vector<ex> e;
 };
 
-} // namespace
+/// Everything the body adds, at the current q: the momentum rows of the
+/// coordinates that move it and its forces without q''.
+struct Terms {
+    std::set<int> coords;
+    std::map<int, int> mode_of;
+    std::map<int, Rows> rows;
+    Vec3 fx, ft;
+    std::vector<ex> fe;
+    FrameState frame;
+    Vec3 jv(int r) const {
+        auto it = frame.Jv.find(r);
+        return it == frame.Jv.end() ? Vec3{} : it->second;
+    }
+    Vec3 jw(int r) const {
+        auto it = frame.Jw.find(r);
+        return it == frame.Jw.end() ? Vec3{} : it->second;
+    }
+};
 
-void add_flexible_body(const model::Body& body, const FrameState& f, const Vec3& g,
-                       const Symbols& symbols, Matrix& M, std::vector<exvector>& F, MaTerms Ma) {
+Terms flexible_terms(const model::Body& body, const FrameState& f, const Vec3& g,
+                     const Symbols& symbols) {
     ElasticTerms el(body, symbols);
     const sid::Sid& s = el.sid();
     const int nq = el.nq();
     const auto un = static_cast<std::size_t>(nq);
     Blocks b = evaluate(el);
+    Terms out;
+    out.frame = f;
 
     // Coordinates that move this body: its frame's and its own modes.
-    std::set<int> coords;
+    std::set<int>& coords = out.coords;
     for (const auto& [r, v] : f.Jv) coords.insert(r);
     for (const auto& [r, v] : f.Jw) coords.insert(r);
-    std::map<int, int> mode_of;
+    std::map<int, int>& mode_of = out.mode_of;
     for (int k = 0; k < nq; ++k) {
         coords.insert(el.dof(k));
         mode_of[el.dof(k)] = k;
     }
-    auto jv = [&](int r) {
-        auto it = f.Jv.find(r);
-        return it == f.Jv.end() ? Vec3{} : it->second;
-    };
-    auto jw = [&](int r) {
-        auto it = f.Jw.find(r);
-        return it == f.Jw.end() ? Vec3{} : it->second;
-    };
 
-    // Mass matrix: M_rs = [Jv_r, Jω_r, Je_r]ᵀ M_body [Jv_s, Jω_s, Je_s] (eq. 18, A2-A7).
-    std::map<int, Rows> rows;
+    // Momentum rows: M_body [Jv_s, Jω_s, Je_s] (eq. 18, A2-A7).
     for (int r : coords) {
-        Vec3 v = jv(r), w = jw(r);
+        Vec3 v = out.jv(r), w = out.jw(r);
         Rows row;
         row.x = b.mass * v + cross(w, b.md); // Mxx v + Mxθ ω, Mxθ = -m d~
         row.theta = cross(b.md, v) + b.J * w;
@@ -122,35 +132,7 @@ void add_flexible_body(const model::Body& body, const FrameState& f, const Vec3&
             row.theta = row.theta + cr;
             for (std::size_t k = 0; k < un; ++k) row.e[k] = row.e[k] + b.Me[k][m];
         }
-        rows.emplace(r, std::move(row));
-    }
-    for (auto it_r = rows.begin(); it_r != rows.end(); ++it_r) {
-        int r = it_r->first;
-        Vec3 v = jv(r), w = jw(r);
-        auto mode = mode_of.find(r);
-        for (auto it_s = it_r; it_s != rows.end(); ++it_s) {
-            const Rows& col = it_s->second;
-            exvector terms{dot(v, col.x), dot(w, col.theta)};
-            if (mode != mode_of.end())
-                terms.push_back(col.e[static_cast<std::size_t>(mode->second)]);
-            M[static_cast<std::size_t>(r)][static_cast<std::size_t>(it_s->first)] += sum(terms);
-        }
-    }
-
-    // M a: the momentum rows weighted by the accelerations a_s, projected like M.
-    Rows A;
-    A.e.assign(un, ex(0));
-    for (const auto& [s_, row] : rows) {
-        const ex& as = Ma.a[static_cast<std::size_t>(s_)];
-        A.x = A.x + as * row.x;
-        A.theta = A.theta + as * row.theta;
-        for (std::size_t k = 0; k < un; ++k) A.e[k] = A.e[k] + as * row.e[k];
-    }
-    for (int r : coords) {
-        exvector t{dot(jv(r), A.x), dot(jw(r), A.theta)};
-        auto mode = mode_of.find(r);
-        if (mode != mode_of.end()) t.push_back(A.e[static_cast<std::size_t>(mode->second)]);
-        Ma.terms[static_cast<std::size_t>(r)].push_back(sum(t));
+        out.rows.emplace(r, std::move(row));
     }
 
     // Forces without q'': inertial (eq. 12-14 with A8-A10), gravity (A17-A19),
@@ -189,9 +171,9 @@ void add_flexible_body(const model::Body& body, const FrameState& f, const Vec3&
     Vec3 k_wt = cross(w, b.J * w) + gr * w;
     const std::array<ex, 6> omega2{w[0] * w[0], w[1] * w[1], w[2] * w[2],
                                    w[0] * w[1], w[1] * w[2], w[0] * w[2]}; // eq. A15
-    Vec3 fx = b.mass * (g - f.a) - cross(f.alpha, b.md) - k_wx;
-    Vec3 ft = cross(b.md, g - f.a) - b.J * f.alpha - k_wt;
-    std::vector<ex> fe(un);
+    out.fx = b.mass * (g - f.a) - cross(f.alpha, b.md) - k_wx;
+    out.ft = cross(b.md, g - f.a) - b.J * f.alpha - k_wt;
+    out.fe.resize(un);
     for (int k = 0; k < nq; ++k) {
         auto uk = static_cast<std::size_t>(k);
         exvector t{dot(b.Ct[uk], g - f.a), -dot(b.Cr[uk], f.alpha), -dot(ge_rows[uk], w),
@@ -205,14 +187,71 @@ void add_flexible_body(const model::Body& body, const FrameState& f, const Vec3&
             if (!b.Ke[uk][ul].is_zero()) t.push_back(-b.Ke[uk][ul] * el.q(l));
             if (!b.De[uk][ul].is_zero()) t.push_back(-b.De[uk][ul] * el.qd(l));
         }
-        fe[uk] = sum(t);
+        out.fe[uk] = sum(t);
     }
-    for (int r : coords) {
-        exvector t{dot(jv(r), fx), dot(jw(r), ft)};
+    return out;
+}
+
+/// The momentum rows weighted by the accelerations a_s.
+Rows weighted_rows(const Terms& terms, const std::vector<ex>& a, std::size_t n_modes) {
+    Rows A;
+    A.e.assign(n_modes, ex(0));
+    for (const auto& [s_, row] : terms.rows) {
+        const ex& as = a[static_cast<std::size_t>(s_)];
+        A.x = A.x + as * row.x;
+        A.theta = A.theta + as * row.theta;
+        for (std::size_t k = 0; k < n_modes; ++k) A.e[k] = A.e[k] + as * row.e[k];
+    }
+    return A;
+}
+
+} // namespace
+
+void add_flexible_body(const model::Body& body, const FrameState& f, const Vec3& g,
+                       const Symbols& symbols, Matrix& M, std::vector<exvector>& F, MaTerms Ma) {
+    const Terms terms = flexible_terms(body, f, g, symbols);
+    const std::size_t un = terms.fe.size();
+    const auto& mode_of = terms.mode_of;
+
+    // Mass matrix: M_rs = [Jv_r, Jω_r, Je_r]ᵀ M_body [Jv_s, Jω_s, Je_s] (eq. 18, A2-A7).
+    for (auto it_r = terms.rows.begin(); it_r != terms.rows.end(); ++it_r) {
+        int r = it_r->first;
+        Vec3 v = terms.jv(r), w = terms.jw(r);
         auto mode = mode_of.find(r);
-        if (mode != mode_of.end()) t.push_back(fe[static_cast<std::size_t>(mode->second)]);
+        for (auto it_s = it_r; it_s != terms.rows.end(); ++it_s) {
+            const Rows& col = it_s->second;
+            exvector t{dot(v, col.x), dot(w, col.theta)};
+            if (mode != mode_of.end()) t.push_back(col.e[static_cast<std::size_t>(mode->second)]);
+            M[static_cast<std::size_t>(r)][static_cast<std::size_t>(it_s->first)] += sum(t);
+        }
+    }
+
+    // M a: the momentum rows weighted by the accelerations a_s, projected like M.
+    std::vector<ex> a(Ma.a.begin(), Ma.a.end());
+    const Rows A = weighted_rows(terms, a, un);
+    for (int r : terms.coords) {
+        exvector t{dot(terms.jv(r), A.x), dot(terms.jw(r), A.theta)};
+        auto mode = mode_of.find(r);
+        if (mode != mode_of.end()) t.push_back(A.e[static_cast<std::size_t>(mode->second)]);
+        Ma.terms[static_cast<std::size_t>(r)].push_back(sum(t));
+    }
+
+    for (int r : terms.coords) {
+        exvector t{dot(terms.jv(r), terms.fx), dot(terms.jw(r), terms.ft)};
+        auto mode = mode_of.find(r);
+        if (mode != mode_of.end()) t.push_back(terms.fe[static_cast<std::size_t>(mode->second)]);
         F[static_cast<std::size_t>(r)].push_back(sum(t));
     }
+}
+
+std::pair<Vec3, Vec3> flexible_body_wrench(const model::Body& body, const FrameState& f,
+                                           const Vec3& g, const Symbols& symbols,
+                                           const std::vector<ex>& qdd) {
+    const Terms terms = flexible_terms(body, f, g, symbols);
+    // The momentum rate of the whole body is its momentum rows times q'' plus the
+    // q''-free part already in f_x, f_θ (with gravity): eq. A1's first two rows.
+    const Rows A = weighted_rows(terms, qdd, terms.fe.size());
+    return {terms.fx - A.x, terms.ft - A.theta};
 }
 
 } // namespace yamsc::symbolic

@@ -4,6 +4,9 @@
 // velocity terms k_ω, gravity (A17-A19) and the elastic forces k_e (A16).
 #include "symbolic/kinematics.hpp"
 
+#include <utility>
+#include <vector>
+
 namespace yamsc::symbolic {
 
 /// Where the body's part of M a goes: the terms of (M a)_r for accelerations a.
@@ -17,5 +20,12 @@ struct MaTerms {
 void add_flexible_body(const model::Body& body, const FrameState& f, const Vec3& g,
                        const Symbols& symbols, Matrix& M, std::vector<GiNaC::exvector>& F,
                        MaTerms Ma);
+
+/// The body's gravity and inertia loads (the negative of its momentum rate) as a
+/// force and a moment about its origin, body axes, with the accelerations `qdd`
+/// (one per DOF): what its Kane's terms project, before the projection.
+std::pair<Vec3, Vec3> flexible_body_wrench(const model::Body& body, const FrameState& f,
+                                           const Vec3& g, const Symbols& symbols,
+                                           const std::vector<GiNaC::ex>& qdd);
 
 } // namespace yamsc::symbolic

@@ -198,4 +198,14 @@ TEST_CASE("the tangent form is chosen from 25 DOFs on, and explained when asked 
     CHECK(run(yamsc + " " + dir + "/approx.mbd -o " + dir + "/a.cpp --jacobians tangent 2> " +
               err) == 2);
     CHECK(read_file(err).find("does not apply to a model with `approx`") != std::string::npos);
+    // Reaction loads read q'' = M^-1 F: no tangent form either.
+    std::ofstream(dir + "/reaction.mbd") << "model reaction_pendulum\n"
+                                            "dof theta\n"
+                                            "gravity (0, 0, -9.81)\n"
+                                            "rigid bob { mass = 1; com = (0, 0, -1) }\n"
+                                            "joint ground -> bob { rotate y theta }\n"
+                                            "output Fz = reaction_force(bob).z\n";
+    CHECK(run(yamsc + " " + dir + "/reaction.mbd -o " + dir + "/r.cpp --jacobians tangent 2> " +
+              err) == 2);
+    CHECK(read_file(err).find("outputs that read accelerations") != std::string::npos);
 }

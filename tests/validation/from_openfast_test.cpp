@@ -50,6 +50,10 @@ TEST_CASE("the land deck: its DOFs, initial state, tower-top joint and OpenFAST 
     // The .fst run and the ignored entries are named with their lines.
     CHECK(text.find("TMax = 4 s, DT = 0.01 s") != std::string::npos);
     CHECK(text.find("Spar_ED_ForED.dat: Echo:4, Method:5, DT:6") != std::string::npos);
+    // The rigid rotor carries the generator's inertia and torque: the shaft's share.
+    CHECK(text.find("output LSShftMxa = -reaction_moment(rotor).x / 1000 + (GBRatio * "
+                    "gen_torque + GenIner * GBRatio^2 * psi'') / 1000 in rotor") !=
+          std::string::npos);
 }
 
 TEST_CASE("the rigid rotor is lumped as ElastoDyn lumps it (independent numbers)") {
@@ -121,6 +125,16 @@ TEST_CASE("flexible blades, tower modes 2 and the drivetrain: the full 16-DOF on
     CHECK(text.find("output OoPDefl1 = ") != std::string::npos);
     CHECK(text.find("output TTDspSS = position(nacelle).y in tower") != std::string::npos);
     CHECK(param(text, "GenIner") == 534.116);
+    CHECK(param(text, "ShftGagL") == 1.912);
+    // ElastoDyn's load channels: minus the joints' reactions, in kN and kN m.
+    for (const char* line :
+         {"output TwrBsMyt = -reaction_moment(tower).y / 1000 in tower",
+          "output RootMyb1 = -reaction_moment(blade1).y / 1000 in blade1",
+          "output LSShftMxa = -reaction_moment(hub).x / 1000 in hub",
+          "output LSSGagMya = -(reaction_moment(hub).y + ShftGagL * reaction_force(hub).z) / "
+          "1000 in hub",
+          "output RotThrust = -reaction_force(hub).x / 1000 in hub"})
+        CHECK_MESSAGE(text.find(line) != std::string::npos, line);
 }
 
 TEST_CASE("unknown and unsupported entries are warnings at their line, never dropped") {

@@ -1,0 +1,44 @@
+#pragma once
+// Reaction loads (docs/theory.md, docs/language.md): the force and moment a
+// body's joint transmits to it from its parent, by Newton-Euler over the bodies
+// it carries, with the accelerations q'' as symbols (the generated `outputs`
+// solves them from M q'' = F).
+#include "symbolic/kinematics.hpp"
+
+#include <map>
+#include <vector>
+
+namespace yamsc::symbolic {
+
+/// Resultant force and moment about a body's origin.
+struct Wrench {
+    Vec3 force, moment;
+};
+
+/// Inertia tensor about the COM, body axes, from (Ixx, Iyy, Izz, Ixy, Iyz, Ixz).
+Mat3 inertia_tensor(const model::Body& b, const Symbols& s);
+
+class Reactions {
+public:
+    /// `applied`: each body's applied forces and torques about its origin, body axes.
+    Reactions(const model::Model& m, const std::vector<FrameState>& frames, const Symbols& symbols,
+              std::vector<Wrench> applied);
+
+    /// What the joint of `body` transmits to it, ground axes, about its origin;
+    /// built once per body.
+    const Wrench& of(int body);
+
+private:
+    /// Gravity, inertia and applied loads of one body about its origin, its axes.
+    Wrench load(std::size_t b) const;
+    bool carried_by(int i, int root) const;
+
+    const model::Model& m_;
+    const std::vector<FrameState>& frames_;
+    const Symbols& symbols_;
+    std::vector<GiNaC::ex> qdd_;
+    std::vector<Wrench> loads_; // per body: load(b)
+    std::map<int, Wrench> done_;
+};
+
+} // namespace yamsc::symbolic
