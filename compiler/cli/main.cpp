@@ -23,7 +23,7 @@ const char* usage_text = R"(usage:
   yamsc check MODEL.mbd [--json]
   yamsc eval MODEL.mbd [--q v,..] [--qd v,..] [--u name=v,..] [--set name=v,..] [--t T] --json
   yamsc lin MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--json]
-                      [--trim [--hold dof,..]]
+                      [--trim [--hold dof,..]] [--aero Cp_Ct_Cq.txt] [--wind V]
                       [--sweep NAME=FROM:STEP:TO [-o campbell.csv] [--plot campbell.svg]]
   yamsc trim MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--hold dof,..]
                        [--json]
@@ -31,6 +31,7 @@ const char* usage_text = R"(usage:
                       [--method rk4|cvode] [--rtol R] [--atol A] [-o out.csv] [-v]
                       [--channels all|openfast] [--compare ref.csv] [--plot out.svg]
                       [--plot-channels a,b,..] [--linear [--at name=v,..]]
+                      [--aero Cp_Ct_Cq.txt] [--wind V|step:V0:V1:t=T|wind.csv]
   yamsc from-openfast ELASTODYN.dat|DECK.fst [--dofs NAME=on|off,..] -o model.mbd
   yamsc sid --elastodyn-tower FILE | --elastodyn-blade FILE --length L [--modes fa1,ss1,..]
             [--stations N] [-o body.sid]
@@ -175,7 +176,8 @@ int run(int argc, char** argv) {
     }
     if (cmd == "lin") {
         Args a(argc, argv, 2,
-               {"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot", "--hold"},
+               {"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot", "--hold", "--aero",
+                "--wind"},
                {"--json", "--trim"});
         LinOptions o;
         o.model = a.model();
@@ -192,7 +194,10 @@ int run(int argc, char** argv) {
         o.set = a.assignments("--set");
         o.sid = a.get("--sid");
         o.json = a.has("--json");
+        o.aero = a.get("--aero");
+        o.wind = a.get("--wind");
         if (o.sweep && o.json) throw UsageError("--sweep writes CSV, not --json");
+        if (o.sweep && !o.aero.empty()) throw UsageError("--sweep does not take --aero");
         return lin(o, std::cout, std::cerr);
     }
     if (cmd == "trim") {
@@ -224,7 +229,8 @@ int run(int argc, char** argv) {
     if (cmd == "sim") {
         Args a(argc, argv, 2,
                {"--tmax", "--dt", "--ic", "--u", "--set", "--sid", "--method", "-o", "--rtol",
-                "--atol", "--channels", "--compare", "--plot", "--plot-channels", "--at"},
+                "--atol", "--channels", "--compare", "--plot", "--plot-channels", "--at", "--aero",
+                "--wind"},
                {"-v", "--linear"});
         SimOptions o;
         o.model = a.model();
@@ -250,6 +256,10 @@ int run(int argc, char** argv) {
         o.linear = a.has("--linear");
         o.at = a.assignments("--at");
         if (!o.at.empty() && !o.linear) throw UsageError("--at needs --linear");
+        o.aero = a.get("--aero");
+        o.wind = a.get("--wind");
+        if (o.linear && !o.aero.empty())
+            throw UsageError("--linear does not take --aero (use yamsc lin --aero)");
         return sim(o, std::cout, std::cerr);
     }
     if (cmd == "from-openfast") {

@@ -73,6 +73,8 @@ struct LinOptions {
     std::optional<Sweep> sweep; // --sweep NAME=FROM:STEP:TO: a Campbell diagram
     std::string output;         // -o: its CSV (default: stdout)
     std::string plot;           // --plot: its SVG
+    std::string aero;           // --aero TABLE: the quasi-steady rotor block (Cp/Ct/Cq table)
+    std::string wind;           // --wind SPEC: V_wind at the operating point (its value at t = 0)
 };
 
 struct TrimOptions {
@@ -98,6 +100,8 @@ struct SimOptions {
     std::vector<std::string> plot_channels; // --plot-channels; empty: compared or all
     bool linear = false;                    // integrate the linear model about --at / linearize
     std::vector<Assignment> at;             // --at: the operating point of --linear
+    std::string aero; // --aero TABLE: the quasi-steady rotor block (Cp/Ct/Cq table)
+    std::string wind; // --wind SPEC: V_wind steady, step:V0:V1:t=T or a CSV (time, speed)
 };
 
 struct FromOpenFastOptions {
