@@ -3,6 +3,7 @@
 #include "analysis/campbell.hpp"
 #include "analysis/channels.hpp"
 #include "analysis/compare.hpp"
+#include "analysis/controller_loop.hpp"
 #include "analysis/loaded_model.hpp"
 #include "analysis/rotor_aero_setup.hpp"
 #include "analysis/svg_plot.hpp"
@@ -175,7 +176,9 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
         }
         return true;
     };
-    runtime::SimulationResult result = runtime::simulate(v, s, progress);
+    runtime::SimulationResult result =
+        o.controller.empty() ? runtime::simulate(v, s, progress)
+                             : simulate_with_controller(v, s, o.controller, o.controller_input);
     const bool openfast = o.channels == Channels::openfast;
     const Table table = openfast ? openfast_table(result, 1 + v.nx()) : table_of(result);
     if (!o.output.empty()) {

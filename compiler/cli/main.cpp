@@ -32,6 +32,7 @@ const char* usage_text = R"(usage:
                       [--channels all|openfast] [--compare ref.csv] [--plot out.svg]
                       [--plot-channels a,b,..] [--linear [--at name=v,..]]
                       [--aero Cp_Ct_Cq.txt] [--wind V|step:V0:V1:t=T|wind.csv]
+                      [--controller libdiscon.so [--controller-input DISCON.IN]]
   yamsc from-openfast ELASTODYN.dat|DECK.fst [--dofs NAME=on|off,..] -o model.mbd
   yamsc sid --elastodyn-tower FILE | --elastodyn-blade FILE --length L [--modes fa1,ss1,..]
             [--stations N] [-o body.sid]
@@ -230,7 +231,7 @@ int run(int argc, char** argv) {
         Args a(argc, argv, 2,
                {"--tmax", "--dt", "--ic", "--u", "--set", "--sid", "--method", "-o", "--rtol",
                 "--atol", "--channels", "--compare", "--plot", "--plot-channels", "--at", "--aero",
-                "--wind"},
+                "--wind", "--controller", "--controller-input"},
                {"-v", "--linear"});
         SimOptions o;
         o.model = a.model();
@@ -260,6 +261,12 @@ int run(int argc, char** argv) {
         o.wind = a.get("--wind");
         if (o.linear && !o.aero.empty())
             throw UsageError("--linear does not take --aero (use yamsc lin --aero)");
+        o.controller = a.get("--controller");
+        o.controller_input = a.get("--controller-input");
+        if (o.controller.empty() && !o.controller_input.empty())
+            throw UsageError("--controller-input needs --controller");
+        if (!o.controller.empty() && (o.linear || o.method == SimMethod::cvode))
+            throw UsageError("--controller runs with RK4 on the nonlinear model");
         return sim(o, std::cout, std::cerr);
     }
     if (cmd == "from-openfast") {

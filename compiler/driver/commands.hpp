@@ -100,8 +100,10 @@ struct SimOptions {
     std::vector<std::string> plot_channels; // --plot-channels; empty: compared or all
     bool linear = false;                    // integrate the linear model about --at / linearize
     std::vector<Assignment> at;             // --at: the operating point of --linear
-    std::string aero; // --aero TABLE: the quasi-steady rotor block (Cp/Ct/Cq table)
-    std::string wind; // --wind SPEC: V_wind steady, step:V0:V1:t=T or a CSV (time, speed)
+    std::string aero;       // --aero TABLE: the quasi-steady rotor block (Cp/Ct/Cq table)
+    std::string wind;       // --wind SPEC: V_wind steady, step:V0:V1:t=T or a CSV (time, speed)
+    std::string controller; // --controller LIB: a DISCON library in the loop
+    std::string controller_input; // --controller-input FILE: its accINFILE
 };
 
 struct FromOpenFastOptions {
