@@ -4,6 +4,7 @@
 // damping from `lin --aero`. Differences and their causes: docs/validation.md.
 #include "driver/values.hpp"
 #include "validation_support.hpp"
+#include "yamsc/discon.hpp"
 
 #include <cmath>
 
@@ -36,7 +37,7 @@ double tail_mean(const Table& t, const std::string& column, double seconds) {
 }
 
 Table run(const std::string& name, const std::string& wind, const std::string& set,
-          const std::string& u, double tmax) {
+          const std::string& u, double tmax, const std::string& controller = "") {
     ::mkdir(work_dir.c_str(), 0755);
     yamsc::driver::SimOptions o;
     o.model = model;
@@ -46,6 +47,7 @@ Table run(const std::string& name, const std::string& wind, const std::string& s
     o.dt = 0.02;
     if (!set.empty()) o.set = yamsc::driver::parse_assignments(set, "--set");
     if (!u.empty()) o.u = yamsc::driver::parse_assignments(u, "--u");
+    o.controller = controller;
     o.output = work_dir + "/" + name + ".csv";
     std::ostringstream out, err;
     REQUIRE_MESSAGE(yamsc::driver::sim(o, out, err) == 0, err.str());
@@ -136,4 +138,58 @@ TEST_CASE("the tower's fore-aft mode gets its aerodynamic damping at 16 m/s") {
     // dT/dV_rel / (2 m w) for a modal mass of about 4e5 kg: a few per cent
     CHECK(with_aero > 0.03);
     CHECK(with_aero < 0.08);
+}
+
+TEST_CASE("the NREL 5-MW baseline controller in the loop (sim --controller)") {
+    // 16 m/s, region 3: the PI pitch loop holds rated speed, the torque loop 5 MW
+    Table t = run("baseline_16mps", "16", "", "pitch=11.5deg,gen_torque=43094", 150,
+                  YAMSC_BASELINE_DISCON);
+    double rpm = tail_mean(t, "RotSpeed", 50), pitch = tail_mean(t, "BldPitch1", 50);
+    double thrust = tail_mean(t, "aero_thrust", 50), fa = tail_mean(t, "TTDspFA", 50);
+    MESSAGE("baseline, 16 m/s: " << rpm << " rpm, " << tail_mean(t, "GenPwr", 50) << " kW, pitch "
+                                 << pitch << " deg, thrust " << thrust / 1e3 << " kN, TTDspFA "
+                                 << fa << " m");
+    // OpenFAST + ROSCO: 12.10 rpm, 5000 kW, pitch 11.53 deg, 484 kN, TTDspFA 0.203 m
+    CHECK(rpm == doctest::Approx(12.10).epsilon(0.005));
+    CHECK(tail_mean(t, "GenPwr", 50) == doctest::Approx(5000).epsilon(0.005));
+    CHECK(pitch == doctest::Approx(11.53).epsilon(0.06)); // the table needs 0.4 deg more
+    CHECK((thrust + rotor_weight_along_shaft) / 1e3 == doctest::Approx(484).epsilon(0.03));
+    CHECK(fa == doctest::Approx(0.203).epsilon(0.05));
+    // 8 m/s, region 2: k w^2 with the report's k
+    t = run("baseline_8mps", "8", "", "", 150, YAMSC_BASELINE_DISCON);
+    rpm = tail_mean(t, "RotSpeed", 50);
+    MESSAGE("baseline, 8 m/s: " << rpm << " rpm, " << tail_mean(t, "GenPwr", 50) << " kW");
+    CHECK(rpm == doctest::Approx(8.99).epsilon(0.02));
+    CHECK(tail_mean(t, "GenPwr", 50) == doctest::Approx(1660).epsilon(0.05));
+    CHECK(tail_mean(t, "BldPitch1", 50) == 0.0);
+}
+
+TEST_CASE("the baseline controller's torque regions and pitch loop (DISCON called directly)") {
+    // Jonkman 2009, ch. 7: region 2 K w^2 with K = 2.332287 N m s^2, region 3
+    // constant power 5296610 W, region 1 1/2 the line from cut-in (70.16 rad/s).
+    auto settle = [](double gen_speed, double pitch, double seconds) {
+        yamsc::runtime::DisconController c(YAMSC_BASELINE_DISCON, "");
+        yamsc::runtime::ControllerMeasurements m;
+        yamsc::runtime::ControllerDemands d{pitch, 0};
+        m.step = 0.01;
+        for (int k = 0; k * m.step <= seconds; ++k) {
+            m.time = k * m.step;
+            m.gen_speed = gen_speed;
+            m.pitch = d.pitch;
+            m.gen_torque = d.gen_torque;
+            d = c.call(m);
+        }
+        return d;
+    };
+    CHECK(settle(100.0, 0, 10).gen_torque == doctest::Approx(2.332287 * 100 * 100).epsilon(1e-5));
+    CHECK(settle(125.0, 0.1, 10).gen_torque == doctest::Approx(5296610.0 / 125).epsilon(1e-5));
+    const double slope15 = 2.332287 * 91.21091 * 91.21091 / (91.21091 - 70.16224);
+    CHECK(settle(80.0, 0, 10).gen_torque ==
+          doctest::Approx(slope15 * (80 - 70.16224)).epsilon(1e-5));
+    CHECK(settle(60.0, 0, 10).gen_torque == doctest::Approx(0).scale(1e-3));
+    // above rated speed the pitch rises at most 8 deg/s; below it stays at 0
+    const double up = settle(130.0, 0, 1).pitch;
+    CHECK(up > 0.05);
+    CHECK(up <= 0.1396263 * 1.01 + 1e-6);
+    CHECK(settle(110.0, 0, 2).pitch == 0.0);
 }
