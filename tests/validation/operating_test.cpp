@@ -2,6 +2,8 @@
 // (`sim --aero --wind`), against OpenFAST + AeroDyn's BEM in steady operation
 // (tests/data/reference/operating/README.md), and the tower's aerodynamic
 // damping from `lin --aero`. Differences and their causes: docs/validation.md.
+#include "analysis/loaded_model.hpp"
+#include "analysis/rotor_aero_setup.hpp"
 #include "driver/values.hpp"
 #include "validation_support.hpp"
 #include "yamsc/discon.hpp"
@@ -192,4 +194,60 @@ TEST_CASE("the baseline controller's torque regions and pitch loop (DISCON calle
     CHECK(up > 0.05);
     CHECK(up <= 0.1396263 * 1.01 + 1e-6);
     CHECK(settle(110.0, 0, 2).pitch == 0.0);
+}
+
+TEST_CASE("the operating model closed by the rotor block: Jacobians equal finite differences") {
+    std::ostringstream err;
+    auto l = yamsc::driver::load(
+        model, {}, "", false, err, {},
+        {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"});
+    REQUIRE_MESSAGE(l, err.str());
+    const yamsc::runtime::ModelView v = yamsc::driver::close_rotor_aero(*l, table);
+    const int nq = v.nq, nu = v.nu;
+    std::vector<double> q{0.2, -0.02, 1.0, 0.003}, qd{0.05, 0.01, 1.27, 0.001};
+    REQUIRE(nq == 4);
+    std::vector<double> u(static_cast<std::size_t>(nu), 0.0);
+    for (int i = 0; i < nu; ++i) {
+        if (v.input_names[i] == "V_wind") u[i] = 16;
+        if (v.input_names[i] == "pitch") u[i] = 0.2;
+        if (v.input_names[i] == "gen_torque") u[i] = 43094;
+    }
+    std::vector<double> dq(nq * nq), dqd(nq * nq), du(nq * nu);
+    v.jacobians(0, q.data(), qd.data(), u.data(), dq.data(), dqd.data(), du.data());
+    auto F = [&](const std::vector<double>& a, const std::vector<double>& b,
+                 const std::vector<double>& c) {
+        std::vector<double> f(nq);
+        v.forcing(0, a.data(), b.data(), c.data(), f.data());
+        return f;
+    };
+    double worst = 0, largest = 0;
+    auto compare = [&](const double* J, int cols, int j, const std::vector<double>& fp,
+                       const std::vector<double>& fm, double h) {
+        for (int r = 0; r < nq; ++r) {
+            const double fd = (fp[r] - fm[r]) / (2 * h);
+            const double e = std::fabs(J[r * cols + j] - fd) / (1e3 + std::fabs(fd));
+            worst = std::max(worst, e);
+            largest = std::max(largest, std::fabs(fd));
+        }
+    };
+    // F is about 4e6 N m (the torques): steps of 1e-5 keep the differences'
+    // rounding (eps |F| / h) near 1e-4
+    for (int j = 0; j < nq; ++j) {
+        const double h = 1e-5;
+        auto a = q, b = q;
+        a[j] += h, b[j] -= h;
+        compare(dq.data(), nq, j, F(a, qd, u), F(b, qd, u), h);
+        a = qd, b = qd;
+        a[j] += h, b[j] -= h;
+        compare(dqd.data(), nq, j, F(q, a, u), F(q, b, u), h);
+    }
+    for (int j = 0; j < nu; ++j) {
+        const double h = v.input_names[j] == "pitch" ? 1e-6 : 1e-3;
+        auto a = u, b = u;
+        a[j] += h, b[j] -= h;
+        compare(du.data(), nu, j, F(q, qd, a), F(q, qd, b), h);
+    }
+    MESSAGE("largest entry " << largest << ", worst relative difference " << worst);
+    CHECK(largest > 1e5);
+    CHECK(worst < 1e-6);
 }
