@@ -86,8 +86,9 @@ struct Closed {
 
 RotorLoads rotor_loads(const RotorAero& aero, double v_rel, double omega, double pitch_rad) {
     if (!(v_rel > 0))
-        throw std::invalid_argument("rotor aerodynamics: the relative wind at the hub is " +
-                                    std::to_string(v_rel) + " m/s (must be positive)");
+        throw std::invalid_argument(
+            "rotor aerodynamics: the relative wind at the hub is " + std::to_string(v_rel) +
+            " m/s: it must be positive (is the wind input set, e.g. yamsc --wind?)");
     RotorLoads l;
     const double R = aero.radius;
     l.v_rel = v_rel;
