@@ -34,6 +34,7 @@ const char* usage_text = R"(usage:
                       [--aero Cp_Ct_Cq.txt] [--wind V|step:V0:V1:t=T|wind.csv]
                       [--controller libdiscon.so [--controller-input DISCON.IN]]
   yamsc from-openfast ELASTODYN.dat|DECK.fst [--dofs NAME=on|off,..] -o model.mbd
+  yamsc rotor-table Cp_Ct_Cq.txt -o rotor_table.c [--prefix NAME]
   yamsc sid --elastodyn-tower FILE | --elastodyn-blade FILE --length L [--modes fa1,ss1,..]
             [--stations N] [-o body.sid]
   yamsc --version | --help
@@ -212,6 +213,15 @@ int run(int argc, char** argv) {
         o.hold = comma_list(a.get("--hold"));
         o.json = a.has("--json");
         return trim(o, std::cout, std::cerr);
+    }
+    if (cmd == "rotor-table") {
+        Args a(argc, argv, 2, {"-o", "--prefix"}, {});
+        RotorTableOptions o;
+        o.table = a.model();
+        o.output = a.get("-o");
+        if (o.output.empty()) throw UsageError("rotor-table needs -o rotor_table.c");
+        if (a.has("--prefix")) o.prefix = a.get("--prefix");
+        return rotor_table(o, std::cout, std::cerr);
     }
     if (cmd == "sid") {
         Args a(

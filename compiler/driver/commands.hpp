@@ -120,6 +120,12 @@ struct SidOptions {
     std::string output;             // -o; empty or "-": stdout
 };
 
+struct RotorTableOptions {
+    std::string table;                  // a Cp/Ct/Cq table in ROSCO's format
+    std::string output;                 // -o rotor_table.c
+    std::string prefix = "rotor_table"; // --prefix: of every name in the file
+};
+
 int compile(const CompileOptions& o, std::ostream& out, std::ostream& err);
 int check(const CheckOptions& o, std::ostream& out, std::ostream& err);
 int eval(const EvalOptions& o, std::ostream& out, std::ostream& err);
@@ -128,5 +134,6 @@ int trim(const TrimOptions& o, std::ostream& out, std::ostream& err);
 int sim(const SimOptions& o, std::ostream& out, std::ostream& err);
 int sid(const SidOptions& o, std::ostream& out, std::ostream& err);
 int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream& err);
+int rotor_table(const RotorTableOptions& o, std::ostream& out, std::ostream& err);
 
 } // namespace yamsc::driver
