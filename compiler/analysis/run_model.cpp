@@ -3,7 +3,9 @@
 #include "analysis/campbell.hpp"
 #include "analysis/channels.hpp"
 #include "analysis/compare.hpp"
+#include "analysis/controller_loop.hpp"
 #include "analysis/loaded_model.hpp"
+#include "analysis/rotor_aero_setup.hpp"
 #include "analysis/rotor_modes.hpp"
 #include "analysis/svg_plot.hpp"
 #include "analysis/trim_point.hpp"
@@ -147,12 +149,15 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     // and --linear linearizes with M and the Jacobians of F.
     std::vector<std::string> routines{"rhs", "outputs"};
     if (o.method == SimMethod::cvode) routines.push_back("rhs_jacobian");
-    if (o.linear) routines.insert(routines.end(), {"mass_matrix", "jacobians"});
+    if (o.linear || (!o.aero.empty() && o.method == SimMethod::cvode))
+        routines.insert(routines.end(), {"mass_matrix", "jacobians"});
     auto loaded = load(o.model, o.set, o.sid, o.verbose, err, outputs, routines);
     if (!loaded) return 1;
     std::vector<double> q, qd;
     initial_state(*loaded, o.ic, q, qd);
-    const runtime::ModelView v = o.linear ? linear_model(*loaded, o, out) : loaded->view;
+    const runtime::ModelView v = o.linear         ? linear_model(*loaded, o, out)
+                                 : o.aero.empty() ? loaded->view
+                                                  : close_rotor_aero(*loaded, o.aero);
     runtime::SimulationOptions s;
     s.t_end = o.tmax;
     s.dt = o.dt;
@@ -162,6 +167,7 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     s.x0 = q;
     s.x0.insert(s.x0.end(), qd.begin(), qd.end());
     s.u = inputs_of(v, o.u);
+    if (!o.wind.empty()) s.u_of_t = wind_inputs(v, s.u, o.wind);
     int last_percent = -1;
     auto progress = [&](double t, double t_end) {
         int percent = static_cast<int>(100.0 * t / t_end);
@@ -171,7 +177,9 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
         }
         return true;
     };
-    runtime::SimulationResult result = runtime::simulate(v, s, progress);
+    runtime::SimulationResult result =
+        o.controller.empty() ? runtime::simulate(v, s, progress)
+                             : simulate_with_controller(v, s, o.controller, o.controller_input);
     const bool openfast = o.channels == Channels::openfast;
     const Table table = openfast ? openfast_table(result, 1 + v.nx()) : table_of(result);
     if (!o.output.empty()) {
@@ -204,13 +212,16 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     inputs.push_back({"the model", o.model});
     check_outputs(inputs, outputs);
     // The second-order model (M, F and its Jacobians) and, for the modes, A.
-    auto loaded = load(o.model, o.set, o.sid, false, err, outputs, linear_model_routines());
+    std::vector<std::string> routines = linear_model_routines();
+    if (!o.aero.empty()) routines.push_back("outputs");
+    auto loaded = load(o.model, o.set, o.sid, false, err, outputs, routines);
     if (!loaded) return 1;
     if (o.sweep) return campbell(*loaded, o, out);
-    const runtime::ModelView& v = loaded->view;
+    const runtime::ModelView v = o.aero.empty() ? loaded->view : close_rotor_aero(*loaded, o.aero);
     const int nq = v.nq, nu = v.nu;
     std::vector<double> q, qd, u;
     operating_point(*loaded, loaded->params, o.at, o.u, q, qd, u);
+    if (!o.wind.empty()) set_wind_at_start(v, u, o.wind);
     if (o.trim) q = trim_point(v, q, qd, u, o.hold).q;
     if (o.mbc3) {
         const RotorModesRequest r = rotor_request(v, q, qd, u, o.azimuth, o.hold, o.azimuths);

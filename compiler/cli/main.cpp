@@ -24,6 +24,7 @@ const char* usage_text = R"(usage:
   yamsc eval MODEL.mbd [--q v,..] [--qd v,..] [--u name=v,..] [--set name=v,..] [--t T] --json
   yamsc lin MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--json]
                       [--trim [--hold dof,..]] [--mbc3 [--azimuths N] [--azimuth dof]]
+                      [--aero Cp_Ct_Cq.txt] [--wind V]
                       [--sweep NAME=FROM:STEP:TO [-o campbell.csv] [--plot campbell.svg]]
   yamsc trim MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--hold dof,..]
                        [--json]
@@ -31,7 +32,10 @@ const char* usage_text = R"(usage:
                       [--method rk4|cvode] [--rtol R] [--atol A] [-o out.csv] [-v]
                       [--channels all|openfast] [--compare ref.csv] [--plot out.svg]
                       [--plot-channels a,b,..] [--linear [--at name=v,..]]
+                      [--aero Cp_Ct_Cq.txt] [--wind V|step:V0:V1:t=T|wind.csv]
+                      [--controller libdiscon.so [--controller-input DISCON.IN]]
   yamsc from-openfast ELASTODYN.dat|DECK.fst [--dofs NAME=on|off,..] -o model.mbd
+  yamsc rotor-table Cp_Ct_Cq.txt -o rotor_table.c [--prefix NAME]
   yamsc sid --elastodyn-tower FILE | --elastodyn-blade FILE --length L [--modes fa1,ss1,..]
             [--stations N] [-o body.sid]
   yamsc --version | --help
@@ -176,7 +180,7 @@ int run(int argc, char** argv) {
     if (cmd == "lin") {
         Args a(argc, argv, 2,
                {"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot", "--hold", "--azimuths",
-                "--azimuth"},
+                "--azimuth", "--aero", "--wind"},
                {"--json", "--trim", "--mbc3"});
         LinOptions o;
         o.model = a.model();
@@ -201,7 +205,10 @@ int run(int argc, char** argv) {
         o.set = a.assignments("--set");
         o.sid = a.get("--sid");
         o.json = a.has("--json");
+        o.aero = a.get("--aero");
+        o.wind = a.get("--wind");
         if (o.sweep && o.json) throw UsageError("--sweep writes CSV, not --json");
+        if (o.sweep && !o.aero.empty()) throw UsageError("--sweep does not take --aero");
         return lin(o, std::cout, std::cerr);
     }
     if (cmd == "trim") {
@@ -215,6 +222,15 @@ int run(int argc, char** argv) {
         o.hold = comma_list(a.get("--hold"));
         o.json = a.has("--json");
         return trim(o, std::cout, std::cerr);
+    }
+    if (cmd == "rotor-table") {
+        Args a(argc, argv, 2, {"-o", "--prefix"}, {});
+        RotorTableOptions o;
+        o.table = a.model();
+        o.output = a.get("-o");
+        if (o.output.empty()) throw UsageError("rotor-table needs -o rotor_table.c");
+        if (a.has("--prefix")) o.prefix = a.get("--prefix");
+        return rotor_table(o, std::cout, std::cerr);
     }
     if (cmd == "sid") {
         Args a(
@@ -233,7 +249,8 @@ int run(int argc, char** argv) {
     if (cmd == "sim") {
         Args a(argc, argv, 2,
                {"--tmax", "--dt", "--ic", "--u", "--set", "--sid", "--method", "-o", "--rtol",
-                "--atol", "--channels", "--compare", "--plot", "--plot-channels", "--at"},
+                "--atol", "--channels", "--compare", "--plot", "--plot-channels", "--at", "--aero",
+                "--wind", "--controller", "--controller-input"},
                {"-v", "--linear"});
         SimOptions o;
         o.model = a.model();
@@ -259,6 +276,16 @@ int run(int argc, char** argv) {
         o.linear = a.has("--linear");
         o.at = a.assignments("--at");
         if (!o.at.empty() && !o.linear) throw UsageError("--at needs --linear");
+        o.aero = a.get("--aero");
+        o.wind = a.get("--wind");
+        if (o.linear && !o.aero.empty())
+            throw UsageError("--linear does not take --aero (use yamsc lin --aero)");
+        o.controller = a.get("--controller");
+        o.controller_input = a.get("--controller-input");
+        if (o.controller.empty() && !o.controller_input.empty())
+            throw UsageError("--controller-input needs --controller");
+        if (!o.controller.empty() && (o.linear || o.method == SimMethod::cvode))
+            throw UsageError("--controller runs with RK4 on the nonlinear model");
         return sim(o, std::cout, std::cerr);
     }
     if (cmd == "from-openfast") {

@@ -76,6 +76,8 @@ struct LinOptions {
     std::optional<Sweep> sweep; // --sweep NAME=FROM:STEP:TO: a Campbell diagram
     std::string output;         // -o: its CSV (default: stdout)
     std::string plot;           // --plot: its SVG
+    std::string aero;           // --aero TABLE: the quasi-steady rotor block (Cp/Ct/Cq table)
+    std::string wind;           // --wind SPEC: V_wind at the operating point (its value at t = 0)
 };
 
 struct TrimOptions {
@@ -101,6 +103,10 @@ struct SimOptions {
     std::vector<std::string> plot_channels; // --plot-channels; empty: compared or all
     bool linear = false;                    // integrate the linear model about --at / linearize
     std::vector<Assignment> at;             // --at: the operating point of --linear
+    std::string aero;       // --aero TABLE: the quasi-steady rotor block (Cp/Ct/Cq table)
+    std::string wind;       // --wind SPEC: V_wind steady, step:V0:V1:t=T or a CSV (time, speed)
+    std::string controller; // --controller LIB: a DISCON library in the loop
+    std::string controller_input; // --controller-input FILE: its accINFILE
 };
 
 struct FromOpenFastOptions {
@@ -117,6 +123,12 @@ struct SidOptions {
     std::string output;             // -o; empty or "-": stdout
 };
 
+struct RotorTableOptions {
+    std::string table;                  // a Cp/Ct/Cq table in ROSCO's format
+    std::string output;                 // -o rotor_table.c
+    std::string prefix = "rotor_table"; // --prefix: of every name in the file
+};
+
 int compile(const CompileOptions& o, std::ostream& out, std::ostream& err);
 int check(const CheckOptions& o, std::ostream& out, std::ostream& err);
 int eval(const EvalOptions& o, std::ostream& out, std::ostream& err);
@@ -125,5 +137,6 @@ int trim(const TrimOptions& o, std::ostream& out, std::ostream& err);
 int sim(const SimOptions& o, std::ostream& out, std::ostream& err);
 int sid(const SidOptions& o, std::ostream& out, std::ostream& err);
 int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream& err);
+int rotor_table(const RotorTableOptions& o, std::ostream& out, std::ostream& err);
 
 } // namespace yamsc::driver

@@ -1,0 +1,113 @@
+#include "analysis/controller_loop.hpp"
+
+#include "diag/errors.hpp"
+
+#include <yamsc/discon.hpp>
+#include <yamsc/integration.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace yamsc::driver {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+int find(const std::vector<std::string>& names, const std::string& name, bool required,
+         const char* what) {
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name) return static_cast<int>(i);
+    if (required)
+        throw diag::UserError(std::string("--controller: the model has no ") + what + " '" + name +
+                              "'");
+    return -1;
+}
+
+} // namespace
+
+runtime::SimulationResult simulate_with_controller(const runtime::ModelView& v,
+                                                   const runtime::SimulationOptions& options,
+                                                   const std::string& library,
+                                                   const std::string& input_file) {
+    const int pitch = find(v.input_names, "pitch", true, "input");
+    const int torque = find(v.input_names, "gen_torque", true, "input");
+    const int wind = find(v.input_names, "V_wind", false, "input");
+    const int rotor_speed = find(v.output_names, "rotor_speed", true, "output");
+    const int gen_speed = find(v.output_names, "GenSpeed", true, "output");
+    const int azimuth = find(v.output_names, "Azimuth", false, "output");
+    const int power = find(v.output_names, "GenPwr", false, "output");
+
+    std::unique_ptr<runtime::DisconController> controller;
+    try {
+        controller = std::make_unique<runtime::DisconController>(library, input_file);
+    } catch (const std::runtime_error& e) {
+        throw diag::UserError(e.what());
+    }
+    const runtime::InputFunction base =
+        options.u_of_t ? options.u_of_t : runtime::constant_input(options.u);
+    const auto nq = static_cast<std::size_t>(v.nq);
+    const runtime::TimeGrid grid(options.t_start, options.t_end, options.dt);
+    std::vector<double> x = options.x0, u(static_cast<std::size_t>(v.nu)),
+                        y(static_cast<std::size_t>(v.ny));
+    runtime::ControllerDemands demand;
+    {
+        base(options.t_start, u.data());
+        demand.pitch = u[static_cast<std::size_t>(pitch)];
+        demand.gen_torque = u[static_cast<std::size_t>(torque)];
+    }
+    runtime::SimulationResult result;
+    for (std::size_t k = 0; k + 1 < grid.size(); ++k) {
+        const double t = grid[k];
+        // measurements at t, with the demands in force
+        base(t, u.data());
+        u[static_cast<std::size_t>(pitch)] = demand.pitch;
+        u[static_cast<std::size_t>(torque)] = demand.gen_torque;
+        v.outputs(t, x.data(), x.data() + nq, u.data(), y.data());
+        runtime::ControllerMeasurements m;
+        m.time = t;
+        m.step = grid.step();
+        m.pitch = demand.pitch;
+        m.gen_speed = y[static_cast<std::size_t>(gen_speed)] * pi / 30;
+        m.rotor_speed = y[static_cast<std::size_t>(rotor_speed)];
+        m.gen_torque = demand.gen_torque;
+        m.mech_power = m.gen_torque * m.gen_speed;
+        m.power = power >= 0 ? y[static_cast<std::size_t>(power)] * 1e3 : m.mech_power;
+        m.wind = wind >= 0 ? u[static_cast<std::size_t>(wind)] : 0.0;
+        m.azimuth =
+            azimuth >= 0 ? std::fmod(y[static_cast<std::size_t>(azimuth)], 360.0) * pi / 180 : 0.0;
+        try {
+            demand = controller->call(m);
+        } catch (const std::runtime_error& e) {
+            throw diag::UserError(e.what());
+        }
+        // one step with the demands held
+        runtime::SimulationOptions step = options;
+        step.t_start = t;
+        step.t_end = grid[k + 1];
+        step.dt = grid[k + 1] - t;
+        step.x0 = x;
+        const runtime::ControllerDemands held = demand;
+        step.u_of_t = [&base, held, pitch, torque](double time, double* out) {
+            base(time, out);
+            out[pitch] = held.pitch;
+            out[torque] = held.gen_torque;
+        };
+        runtime::SimulationResult r = runtime::simulate(v, step);
+        const std::size_t first = k == 0 ? 0 : 1; // the start row is the previous end
+        if (k == 0) {
+            result.columns = r.columns;
+            result.nx = r.nx;
+            result.ny = r.ny;
+        }
+        for (std::size_t row = first; row < r.rows(); ++row) {
+            result.time.push_back(r.time[row]);
+            result.states.insert(result.states.end(), r.state_row(row), r.state_row(row) + r.nx);
+            result.outputs.insert(result.outputs.end(), r.output_row(row),
+                                  r.output_row(row) + r.ny);
+        }
+        x.assign(r.state_row(r.rows() - 1), r.state_row(r.rows() - 1) + r.nx);
+    }
+    return result;
+}
+
+} // namespace yamsc::driver

@@ -1,0 +1,169 @@
+// `yamsc rotor-table TABLE -o rotor_table.c [--prefix NAME]`: the rotor block's
+// table and its C1 interpolation as one self-contained C99 file (static
+// arrays, libm only), for code that embeds the generated model (controllers,
+// observers) and fills its thrust and aero_torque inputs itself. The same
+// numbers as the runtime's interpolate() (runtime/src/performance_table.cpp),
+// checked by tests/embedded.
+#include "driver/commands.hpp"
+#include "driver/outputs.hpp"
+
+#include "diag/errors.hpp"
+
+#include <yamsc/atomic_file.hpp>
+#include <yamsc/performance_table.hpp>
+
+#include <cctype>
+#include <charconv>
+#include <sstream>
+
+namespace yamsc::driver {
+namespace {
+
+/// The shortest text that reads back as the same double (a C literal).
+std::string literal(double value) {
+    char buffer[64];
+    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    std::string text = error == std::errc() ? std::string(buffer, end) : "0";
+    if (text.find_first_of(".e") == std::string::npos) text += ".0";
+    return text;
+}
+
+std::string array(const std::string& name, const std::vector<double>& v) {
+    std::ostringstream s;
+    s << "static const double " << name << "[" << v.size() << "] = {";
+    for (std::size_t i = 0; i < v.size(); ++i)
+        s << (i % 6 == 0 ? "\n    " : " ") << literal(v[i]) << (i + 1 < v.size() ? "," : "");
+    s << "\n};\n";
+    return s.str();
+}
+
+bool identifier(const std::string& s) {
+    if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
+    for (char c : s)
+        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+    return true;
+}
+
+} // namespace
+
+std::string rotor_table_c(const runtime::PerformanceTable& t, const std::string& prefix,
+                          const std::string& source_name) {
+    const std::string p = prefix + "_";
+    std::ostringstream s;
+    s << "/* Rotor performance table (" << source_name
+      << ") and its C1 interpolation, written by yamsc rotor-table.\n"
+         " * "
+      << p
+      << "coefficient(which, tsr, pitch_deg, &d_tsr, &d_pitch): which = 0 Cp, 1 Ct,\n"
+         " * 2 Cq; the value and its partial derivatives per unit TSR and per degree.\n"
+         " * Tensor product of cubic Hermite interpolants, node slopes of the parabola\n"
+         " * through each node and its neighbours, continued linearly outside the table:\n"
+         " * exact at the nodes, continuous first derivatives. Thrust and torque:\n"
+         " * T = 0.5 rho pi R^2 V^2 Ct, Q = 0.5 rho pi R^3 V^2 Cq (docs/cli.md). */\n"
+         "#include <stddef.h>\n\n";
+    const std::size_t nt = t.tsr.size(), np = t.pitch_deg.size();
+    s << "#define " << p << "NTSR " << nt << "\n#define " << p << "NPITCH " << np << "\n\n";
+    s << array(p + "tsr", t.tsr) << array(p + "pitch", t.pitch_deg) << array(p + "cp", t.cp)
+      << array(p + "ct", t.ct) << array(p + "cq", t.cq);
+    s << R"(
+/* w[j]: weight of node j in f(x) (order 0) or f'(x) (order 1). */
+static void PFX_add_slope(const double* xs, size_t n, size_t i, double scale, double* w) {
+    size_t a = i == 0 ? 0 : (i == n - 1 ? n - 3 : i - 1);
+    double x0, x1, x2, xi;
+    x0 = xs[a];
+    x1 = xs[a + 1];
+    x2 = xs[a + 2];
+    xi = xs[i];
+    w[a] += scale * ((xi - x1) + (xi - x2)) / ((x0 - x1) * (x0 - x2));
+    w[a + 1] += scale * ((xi - x0) + (xi - x2)) / ((x1 - x0) * (x1 - x2));
+    w[a + 2] += scale * ((xi - x0) + (xi - x1)) / ((x2 - x0) * (x2 - x1));
+}
+
+static void PFX_weights(const double* xs, size_t n, double x, int order, double* w) {
+    size_t i, e;
+    double h, s, h00, h10, h01, h11;
+    for (i = 0; i < n; ++i) w[i] = 0.0;
+    if (x <= xs[0] || x >= xs[n - 1]) {
+        e = x <= xs[0] ? 0 : n - 1;
+        if (order == 0) {
+            w[e] += 1.0;
+            PFX_add_slope(xs, n, e, x - xs[e], w);
+        } else {
+            PFX_add_slope(xs, n, e, 1.0, w);
+        }
+        return;
+    }
+    i = 0;
+    while (xs[i + 1] < x) ++i;
+    h = xs[i + 1] - xs[i];
+    s = (x - xs[i]) / h;
+    if (order == 0) {
+        h00 = 2 * s * s * s - 3 * s * s + 1;
+        h10 = (s * s * s - 2 * s * s + s) * h;
+        h01 = -2 * s * s * s + 3 * s * s;
+        h11 = (s * s * s - s * s) * h;
+    } else {
+        h00 = (6 * s * s - 6 * s) / h;
+        h10 = 3 * s * s - 4 * s + 1;
+        h01 = (-6 * s * s + 6 * s) / h;
+        h11 = 3 * s * s - 2 * s;
+    }
+    w[i] += h00;
+    w[i + 1] += h01;
+    PFX_add_slope(xs, n, i, h10, w);
+    PFX_add_slope(xs, n, i + 1, h11, w);
+}
+
+double PFX_coefficient(int which, double tsr, double pitch_deg, double* d_tsr, double* d_pitch);
+
+double PFX_coefficient(int which, double tsr, double pitch_deg, double* d_tsr, double* d_pitch) {
+    const double* v = which == 0 ? PFX_cp : (which == 1 ? PFX_ct : PFX_cq);
+    double wt0[PFX_NTSR], wt1[PFX_NTSR], wp0[PFX_NPITCH], wp1[PFX_NPITCH];
+    double value = 0.0, dt = 0.0, dp = 0.0, v0, v1;
+    size_t r, k;
+    PFX_weights(PFX_tsr, PFX_NTSR, tsr, 0, wt0);
+    PFX_weights(PFX_tsr, PFX_NTSR, tsr, 1, wt1);
+    PFX_weights(PFX_pitch, PFX_NPITCH, pitch_deg, 0, wp0);
+    PFX_weights(PFX_pitch, PFX_NPITCH, pitch_deg, 1, wp1);
+    for (r = 0; r < PFX_NTSR; ++r) {
+        if (wt0[r] == 0.0 && wt1[r] == 0.0) continue;
+        v0 = 0.0;
+        v1 = 0.0;
+        for (k = 0; k < PFX_NPITCH; ++k) {
+            v0 += wp0[k] * v[r * PFX_NPITCH + k];
+            v1 += wp1[k] * v[r * PFX_NPITCH + k];
+        }
+        value += wt0[r] * v0;
+        dt += wt1[r] * v0;
+        dp += wt0[r] * v1;
+    }
+    if (d_tsr) *d_tsr = dt;
+    if (d_pitch) *d_pitch = dp;
+    return value;
+}
+)";
+    std::string text = s.str();
+    for (std::size_t at = text.find("PFX_"); at != std::string::npos; at = text.find("PFX_", at))
+        text.replace(at, 4, p);
+    return text;
+}
+
+int rotor_table(const RotorTableOptions& o, std::ostream& out, std::ostream&) {
+    if (!identifier(o.prefix)) throw diag::UsageError("--prefix must be a C identifier");
+    check_outputs({{"the table", o.table}}, {{"-o", o.output}});
+    runtime::PerformanceTable t;
+    try {
+        t = runtime::read_performance_table(o.table);
+    } catch (const std::runtime_error& e) {
+        throw diag::UserError(e.what());
+    }
+    if (t.tsr.size() < 3 || t.pitch_deg.size() < 3)
+        throw diag::UserError(o.table + ": rotor-table needs 3 or more TSRs and pitch angles");
+    const std::string name = o.table.substr(o.table.find_last_of('/') + 1);
+    runtime::write_file_atomically(o.output, rotor_table_c(t, o.prefix, name));
+    out << "wrote " << o.output << " (" << t.tsr.size() << " TSRs x " << t.pitch_deg.size()
+        << " pitch angles)\n";
+    return 0;
+}
+
+} // namespace yamsc::driver

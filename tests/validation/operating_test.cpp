@@ -1,0 +1,253 @@
+// The NREL 5-MW on land in steady wind with the quasi-steady rotor block
+// (`sim --aero --wind`), against OpenFAST + AeroDyn's BEM in steady operation
+// (tests/data/reference/operating/README.md), and the tower's aerodynamic
+// damping from `lin --aero`. Differences and their causes: docs/validation.md.
+#include "analysis/loaded_model.hpp"
+#include "analysis/rotor_aero_setup.hpp"
+#include "driver/values.hpp"
+#include "validation_support.hpp"
+#include "yamsc/discon.hpp"
+
+#include <cmath>
+
+using namespace validation;
+using yamsc::driver::Table;
+
+namespace {
+
+const std::string models = std::string(YAMSC_SOURCE_DIR) + "/models";
+const std::string model = models + "/nrel5mw_land_operating.mbd";
+const std::string table = models + "/data/Cp_Ct_Cq.NREL5MW.txt";
+constexpr double pi = 3.14159265358979323846;
+// ElastoDyn's RotThrust carries the rotor's weight along the tilted shaft:
+// RotMass g sin(5 deg).
+const double rotor_weight_along_shaft = 109389.84241805092 * 9.80665 * std::sin(5 * pi / 180);
+
+/// The mean of a column over the last `seconds` of the run.
+double tail_mean(const Table& t, const std::string& column, double seconds) {
+    const int j = t.find(column);
+    REQUIRE_MESSAGE(j >= 0, "no column " << column);
+    const std::vector<double>& time = t.data.front();
+    double sum = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < time.size(); ++i)
+        if (time[i] >= time.back() - seconds) {
+            sum += t.data[static_cast<std::size_t>(j)][i];
+            ++n;
+        }
+    return sum / n;
+}
+
+Table run(const std::string& name, const std::string& wind, const std::string& set,
+          const std::string& u, double tmax, const std::string& controller = "") {
+    ::mkdir(work_dir.c_str(), 0755);
+    yamsc::driver::SimOptions o;
+    o.model = model;
+    o.aero = table;
+    o.wind = wind;
+    o.tmax = tmax;
+    o.dt = 0.02;
+    if (!set.empty()) o.set = yamsc::driver::parse_assignments(set, "--set");
+    if (!u.empty()) o.u = yamsc::driver::parse_assignments(u, "--u");
+    o.controller = controller;
+    o.output = work_dir + "/" + name + ".csv";
+    std::ostringstream out, err;
+    REQUIRE_MESSAGE(yamsc::driver::sim(o, out, err) == 0, err.str());
+    return yamsc::driver::read_table(o.output);
+}
+
+/// The damping ratio of the mode `lin` names by `dof` (its text table).
+double damping_of(const std::string& lin_text, const std::string& dof) {
+    std::istringstream in(lin_text);
+    std::string line;
+    while (std::getline(in, line)) {
+        std::istringstream s(line);
+        int mode = 0;
+        double f = 0, zeta = 0;
+        std::string name;
+        if (s >> mode >> f >> zeta >> name && name == dof) return zeta;
+    }
+    FAIL("no mode of " << dof << " in:\n" << lin_text);
+    return 0;
+}
+
+std::string lin(bool aero) {
+    yamsc::driver::LinOptions o;
+    o.model = model;
+    o.trim = true;
+    o.at = yamsc::driver::parse_assignments("psi'=1.267109", "--at"); // 12.1 rpm
+    o.u = yamsc::driver::parse_assignments("gen_torque=43094,pitch=11.535deg", "--u");
+    if (aero) {
+        o.aero = table;
+        o.wind = "16";
+    }
+    std::ostringstream out, err;
+    REQUIRE_MESSAGE(yamsc::driver::lin(o, out, err) == 0, err.str());
+    return out.str();
+}
+
+} // namespace
+
+TEST_CASE("8 m/s, region 2 (k w^2 generator law, pitch 0): OpenFAST's steady operation") {
+    const Table t = run("operating_8mps", "8", "VS_Rgn2K=2.31055", "", 150);
+    const double rpm = tail_mean(t, "RotSpeed", 50);
+    const double power = tail_mean(t, "GenPwr", 50);
+    const double thrust = tail_mean(t, "aero_thrust", 50);
+    const double fa = tail_mean(t, "TTDspFA", 50);
+    MESSAGE("8 m/s: " << rpm << " rpm, " << power << " kW, aero thrust " << thrust / 1e3
+                      << " kN, TTDspFA " << fa << " m");
+    // OpenFAST: 8.99 rpm, 1660 kW, RotThrust 456 kN, TTDspFA 0.187 m
+    CHECK(rpm == doctest::Approx(8.99).epsilon(0.02));
+    CHECK(power == doctest::Approx(1660).epsilon(0.05));
+    CHECK((thrust + rotor_weight_along_shaft) / 1e3 == doctest::Approx(456).epsilon(0.05));
+    CHECK(fa == doctest::Approx(0.187).epsilon(0.08));
+    CHECK(tail_mean(t, "aero_tsr", 50) == doctest::Approx(7.5).epsilon(0.01)); // k's design TSR
+}
+
+TEST_CASE("16 m/s, region 3 at OpenFAST's pitch and torque") {
+    const Table t = run("operating_16mps", "16", "", "gen_torque=43094,pitch=11.535deg", 150);
+    const double rpm = tail_mean(t, "RotSpeed", 50);
+    const double thrust = tail_mean(t, "aero_thrust", 50);
+    MESSAGE("16 m/s: " << rpm << " rpm, " << tail_mean(t, "GenPwr", 50) << " kW, aero thrust "
+                       << thrust / 1e3 << " kN, TTDspFA " << tail_mean(t, "TTDspFA", 50) << " m");
+    // OpenFAST (ROSCO holding 12.1 rpm): 12.10 rpm, RotThrust 484 kN. The table's
+    // Cq at this pitch is a little higher than the BEM's: the rotor settles faster.
+    CHECK(rpm == doctest::Approx(12.10).epsilon(0.05));
+    CHECK((thrust + rotor_weight_along_shaft) / 1e3 == doctest::Approx(484).epsilon(0.05));
+}
+
+TEST_CASE("--wind step: the relative wind follows the step") {
+    const Table t = run("operating_step", "step:8:14:t=5", "VS_Rgn2K=2.31055", "", 8);
+    const int j = t.find("aero_v_rel");
+    REQUIRE(j >= 0);
+    const auto& v = t.data[static_cast<std::size_t>(j)];
+    const auto& time = t.data.front();
+    // the hub's own motion moves V_rel by a few cm/s
+    double before = 0, after = 0;
+    for (std::size_t i = 0; i < time.size(); ++i) {
+        if (time[i] < 4.9) before = std::max(before, std::fabs(v[i] - 8));
+        if (time[i] > 5.1) after = std::max(after, std::fabs(v[i] - 14));
+    }
+    CHECK(before < 0.05);
+    CHECK(after < 0.3);
+}
+
+TEST_CASE("the tower's fore-aft mode gets its aerodynamic damping at 16 m/s") {
+    const double structural = damping_of(lin(false), "q_fa1");
+    const double with_aero = damping_of(lin(true), "q_fa1");
+    MESSAGE("tower FA1 damping ratio: " << structural << " in vacuum, " << with_aero << " in wind");
+    CHECK(structural < 0.01);
+    // dT/dV_rel / (2 m w) for a modal mass of about 4e5 kg: a few per cent
+    CHECK(with_aero > 0.03);
+    CHECK(with_aero < 0.08);
+}
+
+TEST_CASE("the NREL 5-MW baseline controller in the loop (sim --controller)") {
+    // 16 m/s, region 3: the PI pitch loop holds rated speed, the torque loop 5 MW
+    Table t = run("baseline_16mps", "16", "", "pitch=11.5deg,gen_torque=43094", 150,
+                  YAMSC_BASELINE_DISCON);
+    double rpm = tail_mean(t, "RotSpeed", 50), pitch = tail_mean(t, "BldPitch1", 50);
+    double thrust = tail_mean(t, "aero_thrust", 50), fa = tail_mean(t, "TTDspFA", 50);
+    MESSAGE("baseline, 16 m/s: " << rpm << " rpm, " << tail_mean(t, "GenPwr", 50) << " kW, pitch "
+                                 << pitch << " deg, thrust " << thrust / 1e3 << " kN, TTDspFA "
+                                 << fa << " m");
+    // OpenFAST + ROSCO: 12.10 rpm, 5000 kW, pitch 11.53 deg, 484 kN, TTDspFA 0.203 m
+    CHECK(rpm == doctest::Approx(12.10).epsilon(0.005));
+    CHECK(tail_mean(t, "GenPwr", 50) == doctest::Approx(5000).epsilon(0.005));
+    CHECK(pitch == doctest::Approx(11.53).epsilon(0.06)); // the table needs 0.4 deg more
+    CHECK((thrust + rotor_weight_along_shaft) / 1e3 == doctest::Approx(484).epsilon(0.03));
+    CHECK(fa == doctest::Approx(0.203).epsilon(0.05));
+    // 8 m/s, region 2: k w^2 with the report's k
+    t = run("baseline_8mps", "8", "", "", 150, YAMSC_BASELINE_DISCON);
+    rpm = tail_mean(t, "RotSpeed", 50);
+    MESSAGE("baseline, 8 m/s: " << rpm << " rpm, " << tail_mean(t, "GenPwr", 50) << " kW");
+    CHECK(rpm == doctest::Approx(8.99).epsilon(0.02));
+    CHECK(tail_mean(t, "GenPwr", 50) == doctest::Approx(1660).epsilon(0.05));
+    CHECK(tail_mean(t, "BldPitch1", 50) == 0.0);
+}
+
+TEST_CASE("the baseline controller's torque regions and pitch loop (DISCON called directly)") {
+    // Jonkman 2009, ch. 7: region 2 K w^2 with K = 2.332287 N m s^2, region 3
+    // constant power 5296610 W, region 1 1/2 the line from cut-in (70.16 rad/s).
+    auto settle = [](double gen_speed, double pitch, double seconds) {
+        yamsc::runtime::DisconController c(YAMSC_BASELINE_DISCON, "");
+        yamsc::runtime::ControllerMeasurements m;
+        yamsc::runtime::ControllerDemands d{pitch, 0};
+        m.step = 0.01;
+        for (int k = 0; k * m.step <= seconds; ++k) {
+            m.time = k * m.step;
+            m.gen_speed = gen_speed;
+            m.pitch = d.pitch;
+            m.gen_torque = d.gen_torque;
+            d = c.call(m);
+        }
+        return d;
+    };
+    CHECK(settle(100.0, 0, 10).gen_torque == doctest::Approx(2.332287 * 100 * 100).epsilon(1e-5));
+    CHECK(settle(125.0, 0.1, 10).gen_torque == doctest::Approx(5296610.0 / 125).epsilon(1e-5));
+    const double slope15 = 2.332287 * 91.21091 * 91.21091 / (91.21091 - 70.16224);
+    CHECK(settle(80.0, 0, 10).gen_torque ==
+          doctest::Approx(slope15 * (80 - 70.16224)).epsilon(1e-5));
+    CHECK(settle(60.0, 0, 10).gen_torque == doctest::Approx(0).scale(1e-3));
+    // above rated speed the pitch rises at most 8 deg/s; below it stays at 0
+    const double up = settle(130.0, 0, 1).pitch;
+    CHECK(up > 0.05);
+    CHECK(up <= 0.1396263 * 1.01 + 1e-6);
+    CHECK(settle(110.0, 0, 2).pitch == 0.0);
+}
+
+TEST_CASE("the operating model closed by the rotor block: Jacobians equal finite differences") {
+    std::ostringstream err;
+    auto l = yamsc::driver::load(
+        model, {}, "", false, err, {},
+        {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"});
+    REQUIRE_MESSAGE(l, err.str());
+    const yamsc::runtime::ModelView v = yamsc::driver::close_rotor_aero(*l, table);
+    const int nq = v.nq, nu = v.nu;
+    std::vector<double> q{0.2, -0.02, 1.0, 0.003}, qd{0.05, 0.01, 1.27, 0.001};
+    REQUIRE(nq == 4);
+    std::vector<double> u(static_cast<std::size_t>(nu), 0.0);
+    for (int i = 0; i < nu; ++i) {
+        if (v.input_names[i] == "V_wind") u[i] = 16;
+        if (v.input_names[i] == "pitch") u[i] = 0.2;
+        if (v.input_names[i] == "gen_torque") u[i] = 43094;
+    }
+    std::vector<double> dq(nq * nq), dqd(nq * nq), du(nq * nu);
+    v.jacobians(0, q.data(), qd.data(), u.data(), dq.data(), dqd.data(), du.data());
+    auto F = [&](const std::vector<double>& a, const std::vector<double>& b,
+                 const std::vector<double>& c) {
+        std::vector<double> f(nq);
+        v.forcing(0, a.data(), b.data(), c.data(), f.data());
+        return f;
+    };
+    double worst = 0, largest = 0;
+    auto compare = [&](const double* J, int cols, int j, const std::vector<double>& fp,
+                       const std::vector<double>& fm, double h) {
+        for (int r = 0; r < nq; ++r) {
+            const double fd = (fp[r] - fm[r]) / (2 * h);
+            const double e = std::fabs(J[r * cols + j] - fd) / (1e3 + std::fabs(fd));
+            worst = std::max(worst, e);
+            largest = std::max(largest, std::fabs(fd));
+        }
+    };
+    // F is about 4e6 N m (the torques): steps of 1e-5 keep the differences'
+    // rounding (eps |F| / h) near 1e-4
+    for (int j = 0; j < nq; ++j) {
+        const double h = 1e-5;
+        auto a = q, b = q;
+        a[j] += h, b[j] -= h;
+        compare(dq.data(), nq, j, F(a, qd, u), F(b, qd, u), h);
+        a = qd, b = qd;
+        a[j] += h, b[j] -= h;
+        compare(dqd.data(), nq, j, F(q, a, u), F(q, b, u), h);
+    }
+    for (int j = 0; j < nu; ++j) {
+        const double h = v.input_names[j] == "pitch" ? 1e-6 : 1e-3;
+        auto a = u, b = u;
+        a[j] += h, b[j] -= h;
+        compare(du.data(), nu, j, F(q, qd, a), F(q, qd, b), h);
+    }
+    MESSAGE("largest entry " << largest << ", worst relative difference " << worst);
+    CHECK(largest > 1e5);
+    CHECK(worst < 1e-6);
+}
