@@ -16,5 +16,13 @@ echo "== simulating 30 s of free decay from a 1 m tower-top displacement, rotor 
 build/compiler/yamsc sim "$model" --tmax 30 --dt 0.01 --ic "q=1,psi'=1.2671" \
   --method cvode -o out/nrel5mw_land_2dof.csv --plot out/nrel5mw_land_2dof.svg \
   --plot-channels tt_fa,rotor_speed
+operating=models/nrel5mw_land_operating.mbd
+echo "== a wind step from 8 to 14 m/s under the NREL 5-MW baseline controller ($operating,"
+echo "   rotor loads from ROSCO's Cp/Ct/Cq table)"
+build/compiler/yamsc sim "$operating" --aero models/data/Cp_Ct_Cq.NREL5MW.txt \
+  --wind step:8:14:t=30 --controller build/controllers/libnrel5mw_baseline_discon.so \
+  --u pitch=0,gen_torque=19000 --tmax 90 --dt 0.01 -o out/operating_step.csv \
+  --plot out/operating_step.svg --plot-channels aero_v_rel,RotSpeed,BldPitch1,GenPwr,TTDspFA
 echo "== results written to out/: the generated model (nrel5mw_land_2dof.cpp/.hpp),"
-echo "   the time series (out/nrel5mw_land_2dof.csv) and its plot: $(pwd)/out/nrel5mw_land_2dof.svg"
+echo "   the time series (out/nrel5mw_land_2dof.csv) and its plot: $(pwd)/out/nrel5mw_land_2dof.svg,"
+echo "   the wind step (out/operating_step.csv) and its plot: $(pwd)/out/operating_step.svg"

@@ -177,15 +177,33 @@ TEST_CASE("land-based 16 DOF (every ElastoDyn DOF, 30 s): DOF channels against O
         {"OoPDefl3_[m]", 0.004},
         {"IPDefl3_[m]", 0.0035},
         {"TipDzc1_[m]", 0.005}};
-    for (const auto& [channel, bound] : bounds) {
-        CAPTURE(channel);
+    // ElastoDyn's load channels from the joints' reactions (measured 0.03-0.81 %);
+    // the target of issue 13 for these is 2 %.
+    const std::map<std::string, double> load_bounds{
+        {"TwrBsMxt_[kN-m]", 0.0015}, {"TwrBsMyt_[kN-m]", 0.0005}, {"TwrBsMzt_[kN-m]", 0.0025},
+        {"YawBrMxp_[kN-m]", 0.008},  {"YawBrMyp_[kN-m]", 0.008},  {"RootMxc1_[kN-m]", 0.004},
+        {"RootMyc1_[kN-m]", 0.004},  {"RootMzc1_[kN-m]", 0.009},  {"LSShftMxa_[kN-m]", 0.01},
+        {"LSSGagMya_[kN-m]", 0.006}, {"LSSGagMza_[kN-m]", 0.006}, {"RotThrust_[kN]", 0.0015},
+        {"RotTorq_[kN-m]", 0.01}};
+    auto score = [&](const std::string& channel) {
         const ChannelScore* s = nullptr;
         for (const ChannelScore& x : cmp.channels)
             if (x.name == channel) s = &x;
         REQUIRE(s);
         CHECK(s->samples == static_cast<std::size_t>(c.tmax / 0.01 + 1.5));
-        CHECK(s->mean_rel_error < bound);
-        CHECK(s->mean_rel_error < 0.01); // the target of issue 13
+        return s->mean_rel_error;
+    };
+    for (const auto& [channel, bound] : bounds) {
+        CAPTURE(channel);
+        const double error = score(channel);
+        CHECK(error < bound);
+        CHECK(error < 0.01); // the target of issue 13
+    }
+    for (const auto& [channel, bound] : load_bounds) {
+        CAPTURE(channel);
+        const double error = score(channel);
+        CHECK(error < bound);
+        CHECK(error < 0.02); // the target of issue 13 for loads
     }
     // ElastoDyn's initial blade deflection: OoPDefl = 2 m on the twisted blade.
     const int f1 = sim.find("Q_B1F1_[m]"), e1 = sim.find("Q_B1E1_[m]");
