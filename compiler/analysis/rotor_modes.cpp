@@ -147,6 +147,8 @@ std::vector<RotorMode> rotor_modes(const runtime::ModelView& view, const RotorMo
                   [&](std::size_t a, std::size_t b) { return energy[a] > energy[b]; });
         auto label_of = [&](const Group& g) {
             if (g.family < 0) return g.name;
+            // A rotor at rest has standing cyclic modes (degenerate pairs): no whirl.
+            if (omega == 0.0) return g.name;
             const runtime::BladeFamily& f = families[static_cast<std::size_t>(g.family)];
             const runtime::Whirl w = runtime::whirl_of(m.shape[static_cast<std::size_t>(f[1])],
                                                        m.shape[static_cast<std::size_t>(f[2])]);

@@ -6,6 +6,7 @@
 #include "analysis/controller_loop.hpp"
 #include "analysis/loaded_model.hpp"
 #include "analysis/rotor_aero_setup.hpp"
+#include "analysis/rotor_campbell.hpp"
 #include "analysis/rotor_modes.hpp"
 #include "analysis/svg_plot.hpp"
 #include "analysis/trim_point.hpp"
@@ -49,6 +50,7 @@ double max_abs(const std::vector<double>& v) {
 /// `lin --sweep NAME=FROM:STEP:TO`: the modes at the operating point for each
 /// value of a parameter (the point follows the parameter when it uses it).
 int campbell(const Loaded& l, const LinOptions& o, std::ostream& out) {
+    if (o.mbc3) return rotor_campbell(l, o, out);
     const Sweep& sweep = *o.sweep;
     const int index = l.library->param_index(sweep.name);
     if (index < 0)

@@ -82,10 +82,25 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
 }
 
 std::string svg_plot(const std::vector<PlotPanel>& panels, const PlotOptions& options) {
-    // Title, then one legend row for the curves (the panels share their labels).
-    const double left = 90, right = 20, top = options.title.empty() ? 45 : 70, gap = 30,
-                 bottom = 45;
+    // Title, then the legend of the curves (the panels share their labels), in as
+    // many rows as its entries need.
+    const double left = 90, right = options.label_curve_ends ? 150 : 20, gap = 30, bottom = 45;
     const double w = options.width, plot_w = w - left - right, panel_h = options.panel_height;
+    auto legend_width = [](const PlotSeries& s) {
+        return 34 + 7.0 * static_cast<double>(s.label.size()) + 30;
+    };
+    int legend_rows = 1;
+    if (!panels.empty()) {
+        double lx = left;
+        for (const PlotSeries& s : panels.front().series) {
+            if (lx > left && lx + legend_width(s) - 30 > w - 20) {
+                ++legend_rows;
+                lx = left;
+            }
+            lx += legend_width(s);
+        }
+    }
+    const double top = (options.title.empty() ? 45 : 70) + 18.0 * (legend_rows - 1);
     const double h = top + static_cast<double>(panels.size()) * (panel_h + gap) - gap + bottom;
     Range time;
     for (const PlotPanel& p : panels)
@@ -106,17 +121,21 @@ std::string svg_plot(const std::vector<PlotPanel>& panels, const PlotOptions& op
             << "font-size=\"15\">" << xml_escape(options.title) << "</text>\n";
     if (!panels.empty()) {
         double lx = left;
-        const double ly = top - 14;
+        double ly = top - 14 - 18.0 * (legend_rows - 1);
         std::size_t solid = 0;
         for (const PlotSeries& s : panels.front().series) {
             const char* colour = s.dashed ? reference_colour : colours[solid++ % 5];
+            if (lx > left && lx + legend_width(s) - 30 > w - 20) {
+                ly += 18;
+                lx = left;
+            }
             out << "<line x1=\"" << num(lx) << "\" y1=\"" << num(ly - 4) << "\" x2=\""
                 << num(lx + 28) << "\" y2=\"" << num(ly - 4) << "\" stroke=\"" << colour
                 << "\" stroke-width=\"2\"" << (s.dashed ? " stroke-dasharray=\"6 4\"" : "")
                 << "/>\n";
             out << "<text x=\"" << num(lx + 34) << "\" y=\"" << num(ly) << "\">"
                 << xml_escape(s.label) << "</text>\n";
-            lx += 34 + 7.0 * static_cast<double>(s.label.size()) + 30;
+            lx += legend_width(s);
         }
     }
     for (std::size_t k = 0; k < panels.size(); ++k) {
@@ -152,7 +171,7 @@ std::string svg_plot(const std::vector<PlotPanel>& panels, const PlotOptions& op
                 out << "<text x=\"" << num(x_of(t)) << "\" y=\"" << num(y0 + panel_h + 16)
                     << "\" text-anchor=\"middle\">" << tick_label(t, t_step) << "</text>\n";
             out << "<text x=\"" << num(left + plot_w / 2) << "\" y=\"" << num(y0 + panel_h + 36)
-                << "\" text-anchor=\"middle\">Time [s]</text>\n";
+                << "\" text-anchor=\"middle\">" << xml_escape(options.x_label) << "</text>\n";
         }
         // Curves, clipped to the panel.
         out << "<clipPath id=\"clip" << k << "\"><rect x=\"" << num(left) << "\" y=\"" << num(y0)
@@ -170,14 +189,21 @@ std::string svg_plot(const std::vector<PlotPanel>& panels, const PlotOptions& op
                     << "\"/>\n";
                 points.clear();
             };
+            std::size_t last = s.t.size();
             for (std::size_t i = 0; i < s.t.size() && i < s.y.size(); ++i) {
                 if (!std::isfinite(s.t[i]) || !std::isfinite(s.y[i])) {
                     flush();
                     continue;
                 }
                 points += (points.empty() ? "" : " ") + num(x_of(s.t[i])) + "," + num(y_of(s.y[i]));
+                last = i;
             }
             flush();
+            const bool inside = last < s.t.size() && s.y[last] >= yr.lo && s.y[last] <= yr.hi;
+            if (options.label_curve_ends && k == 0 && inside)
+                out << "<text x=\"" << num(x_of(s.t[last]) + 4) << "\" y=\""
+                    << num(y_of(s.y[last]) + 3) << "\" font-size=\"10\" fill=\"" << colour << "\">"
+                    << xml_escape(s.label) << "</text>\n";
         }
         out << "</g>\n";
     }

@@ -23,6 +23,10 @@ struct PlotOptions {
     std::string title;
     int width = 900;        ///< px
     int panel_height = 200; ///< px per panel
+    std::string x_label = "Time [s]";
+    /// Also write each curve's label at its last point in the first panel (many
+    /// curves, few colours: a Campbell diagram); the right margin widens for them.
+    bool label_curve_ends = false;
 };
 
 /// The SVG document. Non-finite values break a curve.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <vector>
 
 using namespace validation;
@@ -102,4 +103,47 @@ TEST_CASE("MBC3 modes of the spinning 16-DOF turbine equal OpenFAST's (6 and 12.
     check_case(12.1, {"nac_yaw"}, "rotating_12.1_yawlocked.csv");
     check_case(6.0, {}, "rotating_6.csv");
     check_case(6.0, {"nac_yaw"}, "rotating_6_yawlocked.csv");
+}
+
+TEST_CASE("the Campbell diagram over rotor speed: MBC3 modes at each speed, CSV and SVG") {
+    convert(land_16dof_case);
+    yamsc::driver::LinOptions o;
+    o.model = model_path(land_16dof_case);
+    o.mbc3 = true;
+    o.hold = {"nac_yaw"};
+    // 6 and 12.1 rpm.
+    o.sweep = yamsc::driver::parse_sweep("psi'=0.6283185307:0.6387905:1.26711");
+    o.output = work_dir + "/campbell_16dof.csv";
+    o.plot = work_dir + "/campbell_16dof.svg";
+    std::ostringstream out, err;
+    REQUIRE_MESSAGE(yamsc::driver::lin(o, out, err) == 0, err.str());
+    std::istringstream csv(read(o.output));
+    std::string line;
+    std::getline(csv, line);
+    CHECK(line == "psi',mode,label,freq_hz,damping_ratio,share");
+    std::map<double, std::vector<double>> by_speed;
+    while (std::getline(csv, line)) {
+        std::istringstream row(line);
+        std::string speed, mode, label, freq;
+        std::getline(row, speed, ',');
+        std::getline(row, mode, ',');
+        std::getline(row, label, ',');
+        std::getline(row, freq, ',');
+        by_speed[std::stod(speed)].push_back(std::stod(freq));
+    }
+    REQUIRE(by_speed.size() == 2);
+    // Each speed's modes are those of OpenFAST's linearization at that speed.
+    const std::vector<std::string> references{"rotating_6_yawlocked.csv",
+                                              "rotating_12.1_yawlocked.csv"};
+    std::size_t k = 0;
+    for (const auto& [speed, freqs] : by_speed) {
+        CAPTURE(speed);
+        const std::vector<ModeRow> theirs = oscillating(reference_modes(references[k++]));
+        REQUIRE(freqs.size() == theirs.size());
+        for (std::size_t i = 0; i < freqs.size(); ++i)
+            CHECK(freqs[i] == doctest::Approx(theirs[i].freq_hz).epsilon(3e-3));
+    }
+    const std::string svg = read(o.plot);
+    for (const char* text : {">1P<", ">3P<", ">6P<", "q_flap1 BW", "psi' [rad/s]"})
+        CHECK(svg.find(text) != std::string::npos);
 }

@@ -1,0 +1,35 @@
+#pragma once
+// The Campbell diagram of a spinning turbine: its MBC3 modes (rotor_modes.hpp)
+// along a swept rotor speed or parameter, `yamsc lin --mbc3 --sweep
+// "psi'=0.2:0.1:1.4"`, as a CSV table (one row per mode and value, with its
+// label) and an SVG plot with a curve per label and the 1P, 3P and 6P lines.
+#include "analysis/loaded_model.hpp"
+#include "analysis/rotor_modes.hpp"
+
+#include <iosfwd>
+
+#include <string>
+#include <vector>
+
+namespace yamsc::driver {
+
+struct RotorCampbellRow {
+    double value = 0;
+    std::vector<RotorMode> modes;
+};
+
+/// Header `NAME,mode,label,freq_hz,damping_ratio,share`.
+std::string rotor_campbell_csv(const std::string& name, const std::vector<RotorCampbellRow>& rows);
+
+/// Frequency and damping ratio against the swept value, a curve per label (in
+/// order of first appearance); with `rotor_speed` (the sweep is the rotor's
+/// rate in rad/s) the lines 1P, 3P and 6P too. Rigid-body modes are left out.
+std::string rotor_campbell_svg(const std::string& title, const std::string& name,
+                               const std::vector<RotorCampbellRow>& rows, bool rotor_speed);
+
+/// `lin --mbc3 --sweep NAME=FROM:STEP:TO`: NAME is a DOF's rate (`psi'`, the
+/// rotor speed in rad/s, which is then the azimuth DOF) or a parameter. Writes
+/// the CSV (stdout or -o) and the SVG (--plot).
+int rotor_campbell(const Loaded& l, const LinOptions& o, std::ostream& out);
+
+} // namespace yamsc::driver
