@@ -14,25 +14,25 @@
 #endif
 
 /* Constants of the report (table 7-1 and DISCON.f90 of the baseline). */
-static const double CornerFreq = 1.570796; /* generator speed filter corner [rad/s] (0.25 Hz) */
-static const double PC_DT = 0.00125;       /* pitch controller step [s] */
-static const double PC_KI = 0.008068634;   /* integral gain at zero pitch [s] */
-static const double PC_KK = 0.1099965;     /* pitch where the gains have halved [rad] */
-static const double PC_KP = 0.01882681;    /* proportional gain at zero pitch [s] */
-static const double PC_MaxPit = 1.570796;  /* [rad] */
-static const double PC_MaxRat = 0.1396263; /* pitch rate limit [rad/s] (8 deg/s) */
-static const double PC_MinPit = 0.0;       /* [rad] */
-static const double PC_RefSpd = 122.9096;  /* rated generator speed [rad/s] (1173.7 rpm) */
-static const double VS_CtInSp = 70.16224;  /* cut-in generator speed [rad/s] (670 rpm) */
-static const double VS_DT = 0.00125;       /* torque controller step [s] */
-static const double VS_MaxRat = 15000.0;   /* torque rate limit [N m/s] */
-static const double VS_MaxTq = 47402.91;   /* [N m] */
-static const double VS_Rgn2K = 2.332287;   /* region-2 constant [N m/(rad/s)^2] */
-static const double VS_Rgn2Sp = 91.21091;  /* start of region 2 [rad/s] */
+static const double CornerFreq = 1.570796;  /* generator speed filter corner [rad/s] (0.25 Hz) */
+static const double PC_DT = 0.00125;        /* pitch controller step [s] */
+static const double PC_KI = 0.008068634;    /* integral gain at zero pitch [s] */
+static const double PC_KK = 0.1099965;      /* pitch where the gains have halved [rad] */
+static const double PC_KP = 0.01882681;     /* proportional gain at zero pitch [s] */
+static const double PC_MaxPit = 1.570796;   /* [rad] */
+static const double PC_MaxRat = 0.1396263;  /* pitch rate limit [rad/s] (8 deg/s) */
+static const double PC_MinPit = 0.0;        /* [rad] */
+static const double PC_RefSpd = 122.9096;   /* rated generator speed [rad/s] (1173.7 rpm) */
+static const double VS_CtInSp = 70.16224;   /* cut-in generator speed [rad/s] (670 rpm) */
+static const double VS_DT = 0.00125;        /* torque controller step [s] */
+static const double VS_MaxRat = 15000.0;    /* torque rate limit [N m/s] */
+static const double VS_MaxTq = 47402.91;    /* [N m] */
+static const double VS_Rgn2K = 2.332287;    /* region-2 constant [N m/(rad/s)^2] */
+static const double VS_Rgn2Sp = 91.21091;   /* start of region 2 [rad/s] */
 static const double VS_Rgn3MP = 0.01745329; /* pitch above which region 3 holds [rad] (1 deg) */
-static const double VS_RtGnSp = 121.6805;  /* generator speed at rated torque [rad/s] */
-static const double VS_RtPwr = 5296610.0;  /* rated mechanical power [W] (5 MW / 94.4 %) */
-static const double VS_SlPc = 10.0;        /* region 2 1/2 synchronous slip [%] */
+static const double VS_RtGnSp = 121.6805;   /* generator speed at rated torque [rad/s] */
+static const double VS_RtPwr = 5296610.0;   /* rated mechanical power [W] (5 MW / 94.4 %) */
+static const double VS_SlPc = 10.0;         /* region 2 1/2 synchronous slip [%] */
 
 static double GenSpeedF, IntSpdErr, LastGenTrq, LastTime, LastTimePC, LastTimeVS, PitCom;
 
@@ -118,9 +118,9 @@ void DISCON(float* avrSWAP, int* aviFAIL, const char* accINFILE, char* avcOUTNAM
         LastTimePC = Time;
     }
     LastTime = Time;
-    avrSWAP[34] = 1.0f;  /* generator contactor: main */
-    avrSWAP[35] = 0.0f;  /* shaft brake off */
-    avrSWAP[40] = 0.0f;  /* yaw actuator torque */
+    avrSWAP[34] = 1.0f;          /* generator contactor: main */
+    avrSWAP[35] = 0.0f;          /* shaft brake off */
+    avrSWAP[40] = 0.0f;          /* yaw actuator torque */
     avrSWAP[41] = (float)PitCom; /* individual pitch demands */
     avrSWAP[42] = (float)PitCom;
     avrSWAP[43] = (float)PitCom;
