@@ -9,6 +9,8 @@
 
 #include "diag/errors.hpp"
 
+#include "embedded_hermite.hpp"
+
 #include <yamsc/atomic_file.hpp>
 #include <yamsc/performance_table.hpp>
 
@@ -66,54 +68,8 @@ std::string rotor_table_c(const runtime::PerformanceTable& t, const std::string&
     s << array(p + "tsr", t.tsr) << array(p + "pitch", t.pitch_deg) << array(p + "cp", t.cp)
       << array(p + "ct", t.ct) << array(p + "cq", t.cq);
     s << R"(
-/* w[j]: weight of node j in f(x) (order 0) or f'(x) (order 1). */
-static void PFX_add_slope(const double* xs, size_t n, size_t i, double scale, double* w) {
-    size_t a = i == 0 ? 0 : (i == n - 1 ? n - 3 : i - 1);
-    double x0, x1, x2, xi;
-    x0 = xs[a];
-    x1 = xs[a + 1];
-    x2 = xs[a + 2];
-    xi = xs[i];
-    w[a] += scale * ((xi - x1) + (xi - x2)) / ((x0 - x1) * (x0 - x2));
-    w[a + 1] += scale * ((xi - x0) + (xi - x2)) / ((x1 - x0) * (x1 - x2));
-    w[a + 2] += scale * ((xi - x0) + (xi - x1)) / ((x2 - x0) * (x2 - x1));
-}
-
-static void PFX_weights(const double* xs, size_t n, double x, int order, double* w) {
-    size_t i, e;
-    double h, s, h00, h10, h01, h11;
-    for (i = 0; i < n; ++i) w[i] = 0.0;
-    if (x <= xs[0] || x >= xs[n - 1]) {
-        e = x <= xs[0] ? 0 : n - 1;
-        if (order == 0) {
-            w[e] += 1.0;
-            PFX_add_slope(xs, n, e, x - xs[e], w);
-        } else {
-            PFX_add_slope(xs, n, e, 1.0, w);
-        }
-        return;
-    }
-    i = 0;
-    while (xs[i + 1] < x) ++i;
-    h = xs[i + 1] - xs[i];
-    s = (x - xs[i]) / h;
-    if (order == 0) {
-        h00 = 2 * s * s * s - 3 * s * s + 1;
-        h10 = (s * s * s - 2 * s * s + s) * h;
-        h01 = -2 * s * s * s + 3 * s * s;
-        h11 = (s * s * s - s * s) * h;
-    } else {
-        h00 = (6 * s * s - 6 * s) / h;
-        h10 = 3 * s * s - 4 * s + 1;
-        h01 = (-6 * s * s + 6 * s) / h;
-        h11 = 3 * s * s - 2 * s;
-    }
-    w[i] += h00;
-    w[i + 1] += h01;
-    PFX_add_slope(xs, n, i, h10, w);
-    PFX_add_slope(xs, n, i + 1, h11, w);
-}
-
+)" << hermite_weights_text
+      << R"(
 double PFX_coefficient(int which, double tsr, double pitch_deg, double* d_tsr, double* d_pitch);
 
 double PFX_coefficient(int which, double tsr, double pitch_deg, double* d_tsr, double* d_pitch) {

@@ -1,6 +1,7 @@
 #include "yamsc/performance_table.hpp"
 
 #include <cmath>
+#include <cstddef>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -37,57 +38,17 @@ void check_increasing(const std::vector<double>& v, const std::string& what,
             throw std::runtime_error(source + ": the " + what + " is not increasing");
 }
 
-/// Weights w_j of the 1-D C1 Hermite interpolant at x over nodes xs, so that
-/// f(x) = Σ w_j f_j (derivative order 0) or f'(x) = Σ w_j f_j (order 1): the
-/// interpolant is linear in the data, so the 2-D one is the tensor product.
-/// Node slopes: the derivative at node i of the parabola through i-1, i, i+1
-/// (one-sided parabola at the ends). Beyond the ends: the linear continuation.
+// The interpolation weights, shared word for word with the C file of
+// `yamsc rotor-table` (hermite_weights.inc).
+#define PFX_add_slope hermite_add_slope
+#define PFX_weights hermite_weights_of
+#include "hermite_weights.inc"
+#undef PFX_add_slope
+#undef PFX_weights
+
 void hermite_weights(const std::vector<double>& xs, double x, int order, std::vector<double>& w) {
-    const std::size_t n = xs.size();
-    w.assign(n, 0.0);
-    // slope weights at node i: m_i = Σ_k s[k] f_{i0+k}
-    auto slope = [&](std::size_t i, double scale) {
-        std::size_t a = i == 0 ? 0 : (i == n - 1 ? n - 3 : i - 1);
-        if (n == 2) { // a straight line
-            w[0] -= scale / (xs[1] - xs[0]);
-            w[1] += scale / (xs[1] - xs[0]);
-            return;
-        }
-        // derivative at xs[i] of the Lagrange parabola through a, a+1, a+2
-        const double x0 = xs[a], x1 = xs[a + 1], x2 = xs[a + 2], xi = xs[i];
-        w[a] += scale * ((xi - x1) + (xi - x2)) / ((x0 - x1) * (x0 - x2));
-        w[a + 1] += scale * ((xi - x0) + (xi - x2)) / ((x1 - x0) * (x1 - x2));
-        w[a + 2] += scale * ((xi - x0) + (xi - x1)) / ((x2 - x0) * (x2 - x1));
-    };
-    if (x <= xs[0] || x >= xs[n - 1]) {
-        const std::size_t e = x <= xs[0] ? 0 : n - 1;
-        if (order == 0) {
-            w[e] += 1.0;
-            slope(e, x - xs[e]);
-        } else {
-            slope(e, 1.0);
-        }
-        return;
-    }
-    std::size_t i = 0;
-    while (xs[i + 1] < x) ++i;
-    const double h = xs[i + 1] - xs[i], s = (x - xs[i]) / h;
-    double h00, h10, h01, h11; // the Hermite basis (value) or its x-derivative
-    if (order == 0) {
-        h00 = 2 * s * s * s - 3 * s * s + 1;
-        h10 = (s * s * s - 2 * s * s + s) * h;
-        h01 = -2 * s * s * s + 3 * s * s;
-        h11 = (s * s * s - s * s) * h;
-    } else {
-        h00 = (6 * s * s - 6 * s) / h;
-        h10 = 3 * s * s - 4 * s + 1;
-        h01 = (-6 * s * s + 6 * s) / h;
-        h11 = 3 * s * s - 2 * s;
-    }
-    w[i] += h00;
-    w[i + 1] += h01;
-    slope(i, h10);
-    slope(i + 1, h11);
+    w.assign(xs.size(), 0.0);
+    hermite_weights_of(xs.data(), xs.size(), x, order, w.data());
 }
 
 } // namespace
