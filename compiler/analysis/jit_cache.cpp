@@ -59,8 +59,9 @@ std::string file_stamp(const std::string& path) {
 }
 
 // Before any compile was recorded in a cache: g++ 12 at -O2 on generated model
-// code, measured on a 2-core machine (docs/benchmarks.md), in seconds per MB.
-constexpr double default_seconds_per_megabyte = 25.0;
+// code on a quiet 2-core machine, in seconds per MB (every routine of the
+// 16-DOF turbine, 4.7 MB in 85 s, docs/benchmarks.md).
+constexpr double default_seconds_per_megabyte = 18.0;
 constexpr std::size_t compiles_considered = 20;
 const char* const record_name = "compile-times.tsv";
 

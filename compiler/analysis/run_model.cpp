@@ -85,11 +85,8 @@ int campbell(const Loaded& l, const LinOptions& o, std::ostream& out) {
 
 /// The linear model of --linear: about the model's `linearize` point, moved by --at/--u.
 runtime::ModelView linear_model(const Loaded& l, const SimOptions& o, std::ostream& out) {
-    LinOptions at;
-    at.at = o.at;
-    at.u = o.u;
     std::vector<double> q0, qd0, u0;
-    operating_point(l, l.params, at.at, at.u, q0, qd0, u0);
+    operating_point(l, l.params, o.at, o.u, q0, qd0, u0);
     std::vector<double> x0 = q0;
     x0.insert(x0.end(), qd0.begin(), qd0.end());
     const runtime::LinearSystem system = runtime::linearize_view(l.view, x0, u0);

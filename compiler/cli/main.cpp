@@ -5,6 +5,8 @@
 #include "driver/bindings.hpp"
 #include "driver/commands.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <iostream>
 #include <map>
@@ -188,7 +190,9 @@ int run(int argc, char** argv) {
         o.mbc3 = a.has("--mbc3");
         o.hold = comma_list(a.get("--hold"));
         o.azimuth = a.get("--azimuth");
-        o.azimuths = static_cast<int>(a.number("--azimuths", o.azimuths));
+        const double azimuths = a.number("--azimuths", o.azimuths);
+        if (azimuths != std::floor(azimuths)) throw UsageError("--azimuths must be a whole number");
+        o.azimuths = static_cast<int>(std::min(azimuths, 1e6));
         if (!o.trim && !o.mbc3 && !o.hold.empty())
             throw UsageError("--hold needs --trim or --mbc3");
         if (!o.mbc3 && (a.has("--azimuths") || a.has("--azimuth")))
@@ -208,7 +212,8 @@ int run(int argc, char** argv) {
         o.aero = a.get("--aero");
         o.wind = a.get("--wind");
         if (o.sweep && o.json) throw UsageError("--sweep writes CSV, not --json");
-        if (o.sweep && !o.aero.empty()) throw UsageError("--sweep does not take --aero");
+        if (o.sweep && (!o.aero.empty() || !o.wind.empty()))
+            throw UsageError("--sweep does not take --aero or --wind");
         return lin(o, std::cout, std::cerr);
     }
     if (cmd == "trim") {
