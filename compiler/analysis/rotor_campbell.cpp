@@ -105,7 +105,11 @@ int rotor_campbell(const Loaded& l, const LinOptions& o, std::ostream& out) {
         std::vector<double> q, qd, u;
         operating_point(l, params, o.at, o.u, q, qd, u);
         if (rate) qd[static_cast<std::size_t>(dof - dofs.begin())] = value;
-        if (o.trim) q = trim_point(view, q, qd, u, o.hold).q;
+        if (o.trim) {
+            const runtime::TrimResult trimmed = trim_point(view, q, qd, u, o.hold, o.adjust);
+            q = trimmed.q;
+            u = trimmed.u;
+        }
         const RotorModesRequest r = rotor_request(
             view, q, qd, u, rate && o.azimuth.empty() ? base : o.azimuth, o.hold, o.azimuths);
         rows.push_back({value, rotor_modes(view, r)});

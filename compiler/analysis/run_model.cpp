@@ -63,7 +63,11 @@ int campbell(const Loaded& l, const LinOptions& o, std::ostream& out) {
         const runtime::ModelView view = l.library->view(params);
         std::vector<double> q, qd, u;
         operating_point(l, params, o.at, o.u, q, qd, u);
-        if (o.trim) q = trim_point(view, q, qd, u, o.hold).q;
+        if (o.trim) {
+            const runtime::TrimResult r = trim_point(view, q, qd, u, o.hold, o.adjust);
+            q = r.q;
+            u = r.u;
+        }
         q.insert(q.end(), qd.begin(), qd.end());
         const std::vector<double> A = runtime::state_matrix_from_view(view, q, u, 0.0);
         rows.push_back({value, runtime::modal_analysis(A, view.nq)});
@@ -221,7 +225,11 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     std::vector<double> q, qd, u;
     operating_point(*loaded, loaded->params, o.at, o.u, q, qd, u);
     if (!o.wind.empty()) set_wind_at_start(v, u, o.wind);
-    if (o.trim) q = trim_point(v, q, qd, u, o.hold).q;
+    if (o.trim) {
+        const runtime::TrimResult r = trim_point(v, q, qd, u, o.hold, o.adjust);
+        q = r.q;
+        u = r.u;
+    }
     if (o.mbc3) {
         const RotorModesRequest r = rotor_request(v, q, qd, u, o.azimuth, o.hold, o.azimuths);
         const std::vector<RotorMode> modes = rotor_modes(v, r);

@@ -1,6 +1,8 @@
 // `yamsc trim`: the operating point at rest in the model's own equations
-// (runtime/trim.hpp), from the model's `linearize` point moved by --at/--u.
+// (runtime/trim.hpp), from the model's `linearize` point moved by --at/--u;
+// with --aero and --wind, in steady wind, the --adjust inputs trimmed too.
 #include "analysis/loaded_model.hpp"
+#include "analysis/rotor_aero_setup.hpp"
 #include "analysis/trim_point.hpp"
 #include "driver/json.hpp"
 
@@ -11,20 +13,25 @@
 namespace yamsc::driver {
 
 int trim(const TrimOptions& o, std::ostream& out, std::ostream& err) {
-    auto loaded = load(o.model, o.set, o.sid, false, err, {}, linear_model_routines());
+    std::vector<std::string> routines = linear_model_routines();
+    if (!o.aero.empty()) routines.push_back("outputs");
+    auto loaded = load(o.model, o.set, o.sid, false, err, {}, routines);
     if (!loaded) return 1;
-    const runtime::ModelView& v = loaded->view;
-    std::vector<double> q, qd, u;
-    operating_point(*loaded, loaded->params, o.at, o.u, q, qd, u);
-    const runtime::TrimResult r = trim_point(v, q, qd, u, o.hold);
+    const runtime::ModelView v = o.aero.empty() ? loaded->view : close_rotor_aero(*loaded, o.aero);
+    std::vector<double> q, qd, u0;
+    operating_point(*loaded, loaded->params, o.at, o.u, q, qd, u0);
+    if (!o.wind.empty()) set_wind_at_start(v, u0, o.wind);
+    const runtime::TrimResult r = trim_point(v, q, qd, u0, o.hold, o.adjust);
+    const std::vector<double>& u = r.u;
     if (o.json) {
         std::vector<std::string> held;
         for (std::size_t i = 0; i < r.held.size(); ++i)
             if (r.held[i]) held.push_back(v.dof_names[i]);
         out << "{\"dofs\":" << json::strings(v.dof_names) << ",\"q\":" << json::array(r.q)
             << ",\"qd\":" << json::array(r.qd) << ",\"u\":" << json::array(u)
-            << ",\"held\":" << json::strings(held) << ",\"residual\":" << json::array(r.residual)
-            << ",\"iterations\":" << r.iterations
+            << ",\"inputs\":" << json::strings(v.input_names)
+            << ",\"adjusted\":" << json::strings(o.adjust) << ",\"held\":" << json::strings(held)
+            << ",\"residual\":" << json::array(r.residual) << ",\"iterations\":" << r.iterations
             << ",\"max_free_residual\":" << json::number(r.max_free_residual) << "}\n";
         return 0;
     }
@@ -38,6 +45,13 @@ int trim(const TrimOptions& o, std::ostream& out, std::ostream& err) {
                       r.q[i], r.qd[i], r.residual[i], r.held[i] ? " (held)" : "");
         out << line;
     }
+    for (const std::string& name : o.adjust)
+        for (std::size_t k = 0; k < v.input_names.size(); ++k)
+            if (v.input_names[k] == name) {
+                std::snprintf(line, sizeof line, "%-16s %16.10g  (adjusted input)\n", name.c_str(),
+                              u[k]);
+                out << line;
+            }
     return 0;
 }
 

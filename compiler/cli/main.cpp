@@ -25,11 +25,12 @@ const char* usage_text = R"(usage:
   yamsc check MODEL.mbd [--json]
   yamsc eval MODEL.mbd [--q v,..] [--qd v,..] [--u name=v,..] [--set name=v,..] [--t T] --json
   yamsc lin MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--json]
-                      [--trim [--hold dof,..]] [--mbc3 [--azimuths N] [--azimuth dof]]
+                      [--trim [--hold dof,..] [--adjust input,..]]
+                      [--mbc3 [--azimuths N] [--azimuth dof]]
                       [--aero Cp_Ct_Cq.txt] [--wind V]
                       [--sweep NAME=FROM:STEP:TO [-o campbell.csv] [--plot campbell.svg]]
   yamsc trim MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--hold dof,..]
-                       [--json]
+                       [--adjust input,..] [--aero Cp_Ct_Cq.txt] [--wind V] [--json]
   yamsc sim MODEL.mbd --tmax T --dt DT [--ic name=v,..] [--u name=v,..] [--set name=v,..]
                       [--method rk4|cvode] [--rtol R] [--atol A] [-o out.csv] [-v]
                       [--channels all|openfast] [--compare ref.csv] [--plot out.svg]
@@ -182,13 +183,15 @@ int run(int argc, char** argv) {
     if (cmd == "lin") {
         Args a(argc, argv, 2,
                {"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot", "--hold", "--azimuths",
-                "--azimuth", "--aero", "--wind"},
+                "--azimuth", "--aero", "--wind", "--adjust"},
                {"--json", "--trim", "--mbc3"});
         LinOptions o;
         o.model = a.model();
         o.trim = a.has("--trim");
         o.mbc3 = a.has("--mbc3");
         o.hold = comma_list(a.get("--hold"));
+        o.adjust = comma_list(a.get("--adjust"));
+        if (!o.trim && !o.adjust.empty()) throw UsageError("--adjust needs --trim");
         o.azimuth = a.get("--azimuth");
         const double azimuths = a.number("--azimuths", o.azimuths);
         if (azimuths != std::floor(azimuths)) throw UsageError("--azimuths must be a whole number");
@@ -217,7 +220,9 @@ int run(int argc, char** argv) {
         return lin(o, std::cout, std::cerr);
     }
     if (cmd == "trim") {
-        Args a(argc, argv, 2, {"--at", "--u", "--set", "--sid", "--hold"}, {"--json"});
+        Args a(argc, argv, 2,
+               {"--at", "--u", "--set", "--sid", "--hold", "--adjust", "--aero", "--wind"},
+               {"--json"});
         TrimOptions o;
         o.model = a.model();
         o.at = a.assignments("--at");
@@ -225,6 +230,9 @@ int run(int argc, char** argv) {
         o.set = a.assignments("--set");
         o.sid = a.get("--sid");
         o.hold = comma_list(a.get("--hold"));
+        o.adjust = comma_list(a.get("--adjust"));
+        o.aero = a.get("--aero");
+        o.wind = a.get("--wind");
         o.json = a.has("--json");
         return trim(o, std::cout, std::cerr);
     }

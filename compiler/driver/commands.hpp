@@ -66,12 +66,13 @@ struct EvalOptions {
 struct LinOptions {
     std::string model;
     std::vector<Assignment> at, set, u;
-    bool trim = false;             // --trim: linearize about the trimmed point
-    std::vector<std::string> hold; // --hold: DOFs trim keeps / MBC3 leaves out (with a rate: too)
-    bool mbc3 = false;             // --mbc3: azimuth-averaged multi-blade coordinates
-    int azimuths = 36;             // --azimuths: linearizations over a revolution
-    std::string azimuth;           // --azimuth: the DOF that turns the rotor
-    std::string sid;               // --sid body=file.sid,..
+    bool trim = false;               // --trim: linearize about the trimmed point
+    std::vector<std::string> hold;   // --hold: DOFs trim keeps / MBC3 leaves out (with a rate: too)
+    std::vector<std::string> adjust; // --adjust: inputs trimmed to balance the spinning DOFs
+    bool mbc3 = false;               // --mbc3: azimuth-averaged multi-blade coordinates
+    int azimuths = 36;               // --azimuths: linearizations over a revolution
+    std::string azimuth;             // --azimuth: the DOF that turns the rotor
+    std::string sid;                 // --sid body=file.sid,..
     bool json = false;
     std::optional<Sweep> sweep; // --sweep NAME=FROM:STEP:TO: a Campbell diagram
     std::string output;         // -o: its CSV (default: stdout)
@@ -84,7 +85,10 @@ struct TrimOptions {
     std::string model;
     std::vector<Assignment> at, set, u; // the starting point, as for lin
     std::string sid;
-    std::vector<std::string> hold; // DOFs kept as given (besides those with a rate)
+    std::vector<std::string> hold;   // DOFs kept as given (besides those with a rate)
+    std::vector<std::string> adjust; // inputs trimmed so that nothing holds the spinning DOFs
+    std::string aero;                // --aero TABLE, as for lin
+    std::string wind;                // --wind SPEC (its value at t = 0)
     bool json = false;
 };
 

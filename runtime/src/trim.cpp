@@ -12,79 +12,141 @@ namespace {
 
 using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-/// The generalized forces of the view at q (q' and u fixed).
+/// The generalized forces of the view at (q, u), q' fixed.
 class Forces {
 public:
-    Forces(const ModelView& v, const std::vector<double>& qd, const std::vector<double>& u,
-           double t)
-        : v_(v), qd_(qd), u_(u), t_(t), F_(static_cast<std::size_t>(v.nq)), dq_(v.nq, v.nq),
+    Forces(const ModelView& v, const std::vector<double>& qd, double t)
+        : v_(v), qd_(qd), t_(t), F_(static_cast<std::size_t>(v.nq)), dq_(v.nq, v.nq),
           dqd_(v.nq, v.nq), du_(v.nq, std::max(v.nu, 1)) {}
 
-    const std::vector<double>& at(const std::vector<double>& q) {
-        v_.forcing(t_, q.data(), qd_.data(), inputs(), F_.data());
+    const std::vector<double>& at(const std::vector<double>& q, const std::vector<double>& u) {
+        v_.forcing(t_, q.data(), qd_.data(), inputs(u), F_.data());
         return F_;
     }
-    const RowMajor& jacobian(const std::vector<double>& q) {
-        v_.jacobians(t_, q.data(), qd_.data(), inputs(), dq_.data(), dqd_.data(), du_.data());
-        return dq_;
+    /// ∂F/∂q and ∂F/∂u at (q, u), in dq() and du().
+    void differentiate(const std::vector<double>& q, const std::vector<double>& u) {
+        v_.jacobians(t_, q.data(), qd_.data(), inputs(u), dq_.data(), dqd_.data(), du_.data());
     }
+    const RowMajor& dq() const { return dq_; }
+    const RowMajor& du() const { return du_; }
 
 private:
-    const double* inputs() const { return u_.empty() ? nullptr : u_.data(); }
+    static const double* inputs(const std::vector<double>& u) {
+        return u.empty() ? nullptr : u.data();
+    }
     const ModelView& v_;
     const std::vector<double>& qd_;
-    const std::vector<double>& u_;
     double t_;
     std::vector<double> F_;
     RowMajor dq_, dqd_, du_;
 };
 
-double max_free(const std::vector<double>& F, const std::vector<int>& free) {
-    double m = 0;
-    for (int i : free) m = std::max(m, std::fabs(F[static_cast<std::size_t>(i)]));
-    return m;
+/// The unknowns of the trim (free DOFs, then adjusted inputs) and the
+/// residual rows that must vanish (free DOFs, then balanced DOFs).
+struct Unknowns {
+    std::vector<int> free, inputs, rows;
+
+    double max_residual(const std::vector<double>& F) const {
+        double m = 0;
+        for (int i : rows) m = std::max(m, std::fabs(F[static_cast<std::size_t>(i)]));
+        return m;
+    }
+    Eigen::Index size() const { return static_cast<Eigen::Index>(free.size() + inputs.size()); }
+    /// The current value of unknown k.
+    double value(Eigen::Index k, const std::vector<double>& q, const std::vector<double>& u) const {
+        const auto nf = static_cast<Eigen::Index>(free.size());
+        return k < nf ? q[static_cast<std::size_t>(free[static_cast<std::size_t>(k)])]
+                      : u[static_cast<std::size_t>(inputs[static_cast<std::size_t>(k - nf)])];
+    }
+    /// (q, u) moved by scale * step from (q0, u0).
+    void move(const std::vector<double>& q0, const std::vector<double>& u0,
+              const Eigen::VectorXd& step, double scale, std::vector<double>& q,
+              std::vector<double>& u) const {
+        q = q0;
+        u = u0;
+        for (std::size_t a = 0; a < free.size(); ++a)
+            q[static_cast<std::size_t>(free[a])] += scale * step(static_cast<Eigen::Index>(a));
+        for (std::size_t a = 0; a < inputs.size(); ++a)
+            u[static_cast<std::size_t>(inputs[a])] +=
+                scale * step(static_cast<Eigen::Index>(free.size() + a));
+    }
+};
+
+Unknowns unknowns_of(const ModelView& view, const std::vector<bool>& held,
+                     const TrimAdjustment& adjust) {
+    Unknowns x;
+    for (std::size_t i = 0; i < held.size(); ++i)
+        if (!held[i]) x.free.push_back(static_cast<int>(i));
+    x.rows = x.free;
+    if (adjust.inputs.size() != adjust.balanced.size())
+        throw std::invalid_argument("trim: each adjusted input must balance one held DOF (" +
+                                    std::to_string(adjust.inputs.size()) + " inputs, " +
+                                    std::to_string(adjust.balanced.size()) + " DOFs)");
+    for (int k : adjust.inputs) {
+        if (k < 0 || k >= view.nu) throw std::invalid_argument("trim: no such input to adjust");
+        if (std::count(adjust.inputs.begin(), adjust.inputs.end(), k) > 1)
+            throw std::invalid_argument("trim: an input is adjusted twice");
+    }
+    for (int i : adjust.balanced) {
+        if (i < 0 || i >= view.nq || !held[static_cast<std::size_t>(i)])
+            throw std::invalid_argument("trim: only a held DOF can be balanced by an input");
+        if (std::count(adjust.balanced.begin(), adjust.balanced.end(), i) > 1)
+            throw std::invalid_argument("trim: a DOF is balanced twice");
+    }
+    x.inputs = adjust.inputs;
+    x.rows.insert(x.rows.end(), adjust.balanced.begin(), adjust.balanced.end());
+    return x;
 }
 
 } // namespace
 
 TrimResult trim(const ModelView& view, const std::vector<double>& q0,
-                const std::vector<double>& qd0, const std::vector<double>& u,
-                const std::vector<bool>& held, double t, const TrimSettings& settings) {
+                const std::vector<double>& qd0, const std::vector<double>& u0,
+                const std::vector<bool>& held, double t, const TrimSettings& settings,
+                const TrimAdjustment& adjust) {
     const auto nq = static_cast<std::size_t>(view.nq);
     if (q0.size() != nq || qd0.size() != nq || held.size() != nq ||
-        u.size() != static_cast<std::size_t>(view.nu))
+        u0.size() != static_cast<std::size_t>(view.nu))
         throw std::invalid_argument("trim: the point has the wrong size");
     if (!view.forcing || !view.jacobians)
         throw std::invalid_argument(
             "trim: the model was compiled without its forcing or jacobians routine");
-    std::vector<int> free;
-    for (std::size_t i = 0; i < nq; ++i)
-        if (!held[i]) free.push_back(static_cast<int>(i));
+    const Unknowns x = unknowns_of(view, held, adjust);
 
     TrimResult r;
     r.q = q0;
     r.qd = qd0;
+    r.u = u0;
     r.held = held;
-    Forces forces(view, r.qd, u, t);
-    double norm = max_free(forces.at(r.q), free);
+    Forces forces(view, r.qd, t);
+    double norm = x.max_residual(forces.at(r.q, r.u));
     r.tolerance = settings.relative_tolerance * std::max(1.0, norm);
-    const auto n = static_cast<Eigen::Index>(free.size());
+    const Eigen::Index n = x.size();
+    const auto m = static_cast<Eigen::Index>(x.rows.size());
     bool at_round_off = false;
+    std::vector<double> trial_q, trial_u;
     while (norm > r.tolerance && r.iterations < settings.max_iterations) {
-        const std::vector<double> F = forces.at(r.q);
-        const RowMajor& dF = forces.jacobian(r.q);
-        Eigen::MatrixXd J(n, n);
-        Eigen::VectorXd rhs(n);
-        for (Eigen::Index a = 0; a < n; ++a) {
-            rhs(a) = -F[static_cast<std::size_t>(free[a])];
-            for (Eigen::Index b = 0; b < n; ++b) J(a, b) = dF(free[a], free[b]);
+        const std::vector<double> F = forces.at(r.q, r.u);
+        forces.differentiate(r.q, r.u);
+        Eigen::MatrixXd J(m, n);
+        Eigen::VectorXd rhs(m);
+        for (Eigen::Index a = 0; a < m; ++a) {
+            const int row = x.rows[static_cast<std::size_t>(a)];
+            rhs(a) = -F[static_cast<std::size_t>(row)];
+            for (std::size_t b = 0; b < x.free.size(); ++b)
+                J(a, static_cast<Eigen::Index>(b)) = forces.dq()(row, x.free[b]);
+            for (std::size_t b = 0; b < x.inputs.size(); ++b)
+                J(a, static_cast<Eigen::Index>(x.free.size() + b)) = forces.du()(row, x.inputs[b]);
         }
         const Eigen::VectorXd step = J.completeOrthogonalDecomposition().solve(rhs);
         if (!step.allFinite()) break;
-        double q_scale = 1.0;
-        for (int i : free) q_scale = std::max(q_scale, std::fabs(r.q[static_cast<std::size_t>(i)]));
-        // A step at round-off of q: F is as small as it gets in floating point.
-        if (step.lpNorm<Eigen::Infinity>() <= settings.step_tolerance * q_scale) {
+        // The largest step relative to its unknown's size (at least 1).
+        double relative_step = 0;
+        for (Eigen::Index k = 0; k < n; ++k)
+            relative_step = std::max(
+                relative_step, std::fabs(step(k)) / std::max(1.0, std::fabs(x.value(k, r.q, r.u))));
+        // A step at round-off of the unknowns: F is as small as it gets in floating point.
+        if (relative_step <= settings.step_tolerance) {
             // Either F is at its floating-point floor (J step = -F holds), or
             // part of F lies where J has no stiffness: no equilibrium.
             at_round_off = (J * step - rhs).lpNorm<Eigen::Infinity>() <= r.tolerance;
@@ -93,14 +155,12 @@ TrimResult trim(const ModelView& view, const std::vector<double>& q0,
         ++r.iterations;
         // Halve the step until |F| decreases (at most 30 times).
         bool improved = false;
-        std::vector<double> trial = r.q;
         for (double scale = 1.0; scale > 1e-9; scale *= 0.5) {
-            for (Eigen::Index a = 0; a < n; ++a)
-                trial[static_cast<std::size_t>(free[a])] =
-                    r.q[static_cast<std::size_t>(free[a])] + scale * step(a);
-            const double trial_norm = max_free(forces.at(trial), free);
+            x.move(r.q, r.u, step, scale, trial_q, trial_u);
+            const double trial_norm = x.max_residual(forces.at(trial_q, trial_u));
             if (std::isfinite(trial_norm) && trial_norm < norm) {
-                r.q = trial;
+                r.q = trial_q;
+                r.u = trial_u;
                 norm = trial_norm;
                 improved = true;
                 break;
@@ -109,13 +169,13 @@ TrimResult trim(const ModelView& view, const std::vector<double>& q0,
         if (!improved) {
             // No decrease: F is noise (a small step that solves the linear
             // problem), or this is a minimum of |F| that is not a root.
-            at_round_off = step.lpNorm<Eigen::Infinity>() <= 1e-8 * q_scale &&
-                           (J * step - rhs).lpNorm<Eigen::Infinity>() <= r.tolerance;
+            at_round_off =
+                relative_step <= 1e-8 && (J * step - rhs).lpNorm<Eigen::Infinity>() <= r.tolerance;
             break;
         }
     }
-    r.residual = forces.at(r.q);
-    r.max_free_residual = max_free(r.residual, free);
+    r.residual = forces.at(r.q, r.u);
+    r.max_free_residual = x.max_residual(r.residual);
     r.converged = r.max_free_residual <= r.tolerance || at_round_off;
     return r;
 }

@@ -85,3 +85,32 @@ TEST_CASE("trim: --hold keeps a DOF; unknown names are errors") {
     CHECK_FALSE(unknown.ok);
     CHECK(unknown.err.find("did you mean 'theta'") != std::string::npos);
 }
+
+TEST_CASE("trim --adjust: the pitch of steady operation in wind, and lin about it") {
+    const std::string operating = source + "/models/nrel5mw_land_operating.mbd --aero " + source +
+                                  "/models/data/Cp_Ct_Cq.NREL5MW.txt --wind 16";
+    const std::string rated = " --at \"psi'=1.2671\" --u pitch=0.2,gen_torque=43093.55";
+    const Run r = yamsc("trim " + operating + rated + " --adjust pitch --json");
+    REQUIRE(r.ok);
+    CHECK(r.out.find("\"adjusted\":[\"pitch\"]") != std::string::npos);
+    // inputs: V_wind, pitch, ...: the pitch that holds 12.1 rpm at rated torque
+    const auto u = r.out.find("\"u\":[");
+    REQUIRE(u != std::string::npos);
+    const double pitch = std::strtod(r.out.c_str() + r.out.find(',', u) + 1, nullptr);
+    CHECK(pitch == doctest::Approx(0.20899).epsilon(1e-4));
+
+    const Run lin = yamsc("lin " + operating + rated + " --trim --adjust pitch");
+    REQUIRE(lin.ok);
+    CHECK(lin.err.find("not an equilibrium") == std::string::npos);
+    // without the adjustment the rotor is out of balance: lin says so
+    CHECK(yamsc("lin " + operating + rated + " --trim").err.find("not an equilibrium") !=
+          std::string::npos);
+
+    const Run two = yamsc("trim " + operating + rated + " --adjust pitch,gen_torque");
+    CHECK_FALSE(two.ok);
+    CHECK(two.err.find("2 input(s) for 1 DOF(s) held at a rate (psi)") != std::string::npos);
+    const Run typo = yamsc("trim " + operating + rated + " --adjust pich");
+    CHECK_FALSE(typo.ok);
+    CHECK(typo.err.find("did you mean 'pitch'") != std::string::npos);
+    CHECK_FALSE(yamsc("lin " + operating + rated + " --adjust pitch").ok); // needs --trim
+}

@@ -100,3 +100,49 @@ TEST_CASE("trim: wrong sizes and missing routines are errors") {
     CHECK_THROWS_WITH_AS(trim(v, {0}, {0}, {1}, {false}), doctest::Contains("compiled without"),
                          std::invalid_argument);
 }
+
+TEST_CASE("trim --adjust: the torque that holds a pendulum at a set angle, and a coupled input") {
+    // phi held at 0.5 rad: tau balances gravity, tau = m g l sin(0.5).
+    const double m = 1.3, l = 0.9, g = 9.81;
+    const ModelView pendulum = torque_pendulum(m, l, g);
+    const TrimResult r = trim(pendulum, {0.5}, {0.0}, {0.0}, {true}, 0.0, {}, {{0}, {0}});
+    CHECK(r.converged);
+    CHECK(r.q[0] == 0.5);
+    CHECK(r.u[0] == doctest::Approx(m * g * l * std::sin(0.5)).epsilon(1e-14));
+    CHECK(std::fabs(r.residual[0]) <= r.tolerance);
+
+    // A spring x loaded by the input (c u) and a held rotor r driven by T - u:
+    // balancing r needs u = T, and x then settles at (c T - m g) / k.
+    const double k = 500, c = 3, T = 40;
+    ModelView v;
+    v.nq = 2;
+    v.nu = 1;
+    v.forcing = [=](double, const double* q, const double*, const double* u, double* F) {
+        F[0] = -k * q[0] - m * g + c * u[0];
+        F[1] = T - u[0];
+    };
+    v.jacobians = [=](double, const double*, const double*, const double*, double* dq, double* dqd,
+                      double* du) {
+        for (int i = 0; i < 4; ++i) dq[i] = dqd[i] = 0;
+        dq[0] = -k;
+        du[0] = c;
+        du[1] = -1;
+    };
+    const TrimResult s = trim(v, {0, 0}, {0, 2.0}, {0}, {false, true}, 0.0, {}, {{0}, {1}});
+    CHECK(s.converged);
+    CHECK(s.u[0] == doctest::Approx(T).epsilon(1e-14));
+    CHECK(s.q[0] == doctest::Approx((c * T - m * g) / k).epsilon(1e-14));
+    // Without the adjustment the held DOF keeps its load: T - u.
+    const TrimResult plain = trim(v, {0, 0}, {0, 2.0}, {0}, {false, true});
+    CHECK(plain.u[0] == 0.0);
+    CHECK(plain.residual[1] == doctest::Approx(T));
+}
+
+TEST_CASE("trim --adjust: one input per held DOF, each once, and only held DOFs") {
+    const ModelView v = torque_pendulum(1, 1, 9.81);
+    CHECK_THROWS_WITH_AS(trim(v, {0}, {0}, {1}, {true}, 0.0, {}, {{0}, {}}),
+                         doctest::Contains("each adjusted input"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(trim(v, {0}, {0}, {1}, {false}, 0.0, {}, {{0}, {0}}),
+                         doctest::Contains("only a held DOF"), std::invalid_argument);
+    CHECK_THROWS_AS(trim(v, {0}, {0}, {1}, {true}, 0.0, {}, {{1}, {0}}), std::invalid_argument);
+}

@@ -4,6 +4,7 @@
 // damping from `lin --aero`. Differences and their causes: docs/validation.md.
 #include "analysis/loaded_model.hpp"
 #include "analysis/rotor_aero_setup.hpp"
+#include "analysis/trim_point.hpp"
 #include "driver/values.hpp"
 #include "validation_support.hpp"
 #include "yamsc/discon.hpp"
@@ -39,7 +40,8 @@ double tail_mean(const Table& t, const std::string& column, double seconds) {
 }
 
 Table run(const std::string& name, const std::string& wind, const std::string& set,
-          const std::string& u, double tmax, const std::string& controller = "") {
+          const std::string& u, double tmax, const std::string& controller = "",
+          const std::string& ic = "") {
     ::mkdir(work_dir.c_str(), 0755);
     yamsc::driver::SimOptions o;
     o.model = model;
@@ -49,6 +51,7 @@ Table run(const std::string& name, const std::string& wind, const std::string& s
     o.dt = 0.02;
     if (!set.empty()) o.set = yamsc::driver::parse_assignments(set, "--set");
     if (!u.empty()) o.u = yamsc::driver::parse_assignments(u, "--u");
+    if (!ic.empty()) o.ic = yamsc::driver::parse_assignments(ic, "--ic");
     o.controller = controller;
     o.output = work_dir + "/" + name + ".csv";
     std::ostringstream out, err;
@@ -140,6 +143,56 @@ TEST_CASE("the tower's fore-aft mode gets its aerodynamic damping at 16 m/s") {
     // dT/dV_rel / (2 m w) for a modal mass of about 4e5 kg: a few per cent
     CHECK(with_aero > 0.03);
     CHECK(with_aero < 0.08);
+}
+
+/// `yamsc trim --aero --wind` with the rotor held at `rpm` and `adjust` trimmed.
+yamsc::runtime::TrimResult trimmed(const std::string& wind, double rpm, const std::string& u,
+                                   const std::string& adjust) {
+    std::ostringstream err;
+    auto loaded = yamsc::driver::load(
+        model, {}, "", false, err, {},
+        {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"});
+    REQUIRE_MESSAGE(loaded, err.str());
+    const yamsc::runtime::ModelView v = yamsc::driver::close_rotor_aero(*loaded, table);
+    std::vector<double> q, qd, u0;
+    yamsc::driver::operating_point(*loaded, loaded->params, {},
+                                   yamsc::driver::parse_assignments(u, "--u"), q, qd, u0);
+    yamsc::driver::set_wind_at_start(v, u0, wind);
+    qd[2] = rpm * pi / 30; // psi
+    return yamsc::driver::trim_point(v, q, qd, u0, {}, {adjust});
+}
+
+TEST_CASE(
+    "steady operation by trim: the pitch that holds 12.1 rpm at 16 m/s, the torque at 8 m/s") {
+    // Region 3: rated speed and torque, the pitch trimmed (Newton on the exact
+    // Jacobians of the model and the table). The baseline controller's 150 s
+    // run settles at 11.97 deg; OpenFAST + ROSCO (AeroDyn's BEM) at 11.53 deg.
+    // Newton finds the root nearest its start: from 10 deg, the feathering one
+    // (a stalling one lies near -8 deg, and a start at 0 deg finds that).
+    const yamsc::runtime::TrimResult r16 =
+        trimmed("16", 12.1, "gen_torque=43093.55,pitch=10deg", "pitch");
+    const double pitch_deg = r16.u[1] * 180 / pi;
+    MESSAGE("trim at 16 m/s: pitch " << pitch_deg << " deg, q_fa1 " << r16.q[0] << " m in "
+                                     << r16.iterations << " Newton steps");
+    CHECK(r16.converged);
+    CHECK(std::fabs(pitch_deg - 11.53) < 0.5);
+    // A run from the trimmed point at the trimmed pitch stays there: 12.1 rpm
+    // and the tower's static deflection (the trim is a fixed point of the sim).
+    char u[120], ic[240];
+    std::snprintf(u, sizeof u, "gen_torque=43093.55,pitch=%.17g", r16.u[1]);
+    std::snprintf(ic, sizeof ic, "q_fa1=%.17g,q_ss1=%.17g,drtr=%.17g,psi'=%.17g", r16.q[0],
+                  r16.q[1], r16.q[3], r16.qd[2]);
+    Table t = run("trimmed_16mps", "16", "", u, 20, "", ic);
+    CHECK(tail_mean(t, "RotSpeed", 20) == doctest::Approx(12.1).epsilon(1e-9));
+    CHECK(tail_mean(t, "Q_TFA1", 20) == doctest::Approx(r16.q[0]).epsilon(1e-9));
+
+    // Region 2 at 8 m/s: OpenFAST's 8.99 rpm, pitch 0, the torque trimmed.
+    const yamsc::runtime::TrimResult r8 = trimmed("8", 8.99, "pitch=0", "gen_torque");
+    MESSAGE("trim at 8 m/s: generator torque " << r8.u[4] << " N m");
+    CHECK(r8.converged);
+    // the k w^2 law at 8.99 rpm on the high-speed shaft (k = 2.332287, GBRatio 97)
+    const double w = 8.99 * 97 * pi / 30;
+    CHECK(r8.u[4] == doctest::Approx(2.332287 * w * w).epsilon(0.05));
 }
 
 TEST_CASE("the NREL 5-MW baseline controller in the loop (sim --controller)") {

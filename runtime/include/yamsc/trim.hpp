@@ -9,6 +9,11 @@
 // constant loads (q' = 0, q'' = 0). With a spinning rotor held at its speed it
 // is the quasi-static point at the given azimuth: the free DOFs' rates are
 // kept as given (normally 0) and their accelerations vanish there.
+//
+// Steady operation adds inputs to the unknowns: the blade pitch or generator
+// torque that holds a spinning rotor at its speed in a given wind. Each
+// adjusted input balances one held DOF, whose residual must then vanish too
+// (the controller's set point: no torque is left to hold the rotor).
 #include "yamsc/model_view.hpp"
 
 #include <string>
@@ -26,25 +31,36 @@ struct TrimSettings {
     int max_iterations = 50;
 };
 
+/// Inputs trimmed with the DOFs, and the held DOFs whose residual they cancel
+/// (as many of each).
+struct TrimAdjustment {
+    std::vector<int> inputs;   ///< indices into u
+    std::vector<int> balanced; ///< indices of held DOFs
+};
+
 struct TrimResult {
     std::vector<double> q, qd;    ///< the point (held DOFs as given)
+    std::vector<double> u;        ///< the inputs (adjusted ones trimmed)
     std::vector<double> residual; ///< F(q, q', u) for every DOF
     std::vector<bool> held;       ///< as given
     int iterations = 0;           ///< Newton steps taken
-    double max_free_residual = 0; ///< max |F| over the free DOFs
+    double max_free_residual = 0; ///< max |F| over the free and balanced DOFs
     double tolerance = 0;         ///< what max_free_residual had to reach
     bool converged = false;
 };
 
 /// Newton's method from (q0, q0') at inputs u and time t. Each step solves
-/// J δ = -F over the free DOFs with the minimum-norm solution (a complete
+/// J δ = -F over the free DOFs (and the adjusted inputs against the balanced
+/// DOFs' residuals) with the minimum-norm solution (a complete
 /// orthogonal decomposition), so that directions without stiffness (a free
 /// rotor's azimuth) are left where they are, and is halved until |F| decreases.
 /// The view needs forcing and jacobians. Throws std::invalid_argument for
-/// wrong sizes; a point that does not converge is returned with
-/// converged = false (the caller reports the residual by DOF).
+/// wrong sizes or an adjustment that is not one input per held DOF; a point
+/// that does not converge is returned with converged = false (the caller
+/// reports the residual by DOF).
 TrimResult trim(const ModelView& view, const std::vector<double>& q0,
                 const std::vector<double>& qd0, const std::vector<double>& u,
-                const std::vector<bool>& held, double t = 0.0, const TrimSettings& settings = {});
+                const std::vector<bool>& held, double t = 0.0, const TrimSettings& settings = {},
+                const TrimAdjustment& adjust = {});
 
 } // namespace yamsc::runtime
