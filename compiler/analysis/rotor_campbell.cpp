@@ -1,7 +1,7 @@
 #include "analysis/rotor_campbell.hpp"
 
 #include "analysis/svg_plot.hpp"
-#include "analysis/trim_point.hpp"
+#include "analysis/sweep_point.hpp"
 #include "driver/bindings.hpp"
 
 #include <yamsc/atomic_file.hpp>
@@ -42,7 +42,8 @@ std::string rotor_campbell_csv(const std::string& name, const std::vector<RotorC
 }
 
 std::string rotor_campbell_svg(const std::string& title, const std::string& name,
-                               const std::vector<RotorCampbellRow>& rows, bool rotor_speed) {
+                               const std::vector<RotorCampbellRow>& rows,
+                               const std::vector<double>& rotor_speed, bool swept_rotor_speed) {
     // One curve per label, NaN where the label is absent (the curve breaks).
     std::vector<std::string> labels;
     std::map<std::string, std::size_t> index;
@@ -67,18 +68,20 @@ std::string rotor_campbell_svg(const std::string& title, const std::string& name
             // Two modes with one label at a value (a coupled pair): the first.
             if (std::isnan(freq.series[c].y[k])) {
                 freq.series[c].y[k] = m.mode.freq_hz;
-                damping.series[c].y[k] = m.mode.damping_ratio;
+                // A real pole (a rotor's speed regulation) has damping ratio 1
+                // by definition: left out of the panel, whose scale it would take.
+                if (!m.mode.real) damping.series[c].y[k] = m.mode.damping_ratio;
             }
         }
-    if (rotor_speed)
+    if (rotor_speed.size() == x.size())
         for (int p : {1, 3, 6}) {
             PlotSeries line{std::to_string(p) + "P", x, {}, true};
-            for (double omega : x) line.y.push_back(p * omega / (2 * M_PI));
+            for (double omega : rotor_speed) line.y.push_back(p * std::fabs(omega) / (2 * M_PI));
             freq.series.push_back(std::move(line));
         }
     PlotOptions options;
     options.title = title;
-    options.x_label = name + (rotor_speed ? " [rad/s]" : "");
+    options.x_label = name + (swept_rotor_speed ? " [rad/s]" : "");
     options.panel_height = 320;
     options.label_curve_ends = true;
     return svg_plot({freq, damping}, options);
@@ -86,33 +89,16 @@ std::string rotor_campbell_svg(const std::string& title, const std::string& name
 
 int rotor_campbell(const Loaded& l, const LinOptions& o, std::ostream& out) {
     const Sweep& sweep = *o.sweep;
-    const std::vector<std::string>& dofs = l.view.dof_names;
-    const bool rate = !sweep.name.empty() && sweep.name.back() == '\'';
-    const std::string base = rate ? sweep.name.substr(0, sweep.name.size() - 1) : sweep.name;
-    const auto dof = std::find(dofs.begin(), dofs.end(), base);
-    const int param = rate ? -1 : l.library->param_index(sweep.name);
-    if (rate && dof == dofs.end())
-        throw UserError("--sweep: unknown DOF '" + base + "'" + diag::did_you_mean(base, dofs));
-    if (!rate && param < 0)
-        throw UserError("--sweep: unknown parameter '" + sweep.name + "'" +
-                        diag::did_you_mean(sweep.name, l.library->param_names()) +
-                        " (a rotor speed is swept as a rate: psi'=FROM:STEP:TO)");
+    const SweepPoints points(l, o);
+    const std::string& rate = points.rate_of();
     std::vector<RotorCampbellRow> rows;
+    std::vector<double> rotor_speed;
     for (double value : sweep.values) {
-        std::vector<double> params = l.params;
-        if (param >= 0) params[static_cast<std::size_t>(param)] = value;
-        const runtime::ModelView view = l.library->view(params);
-        std::vector<double> q, qd, u;
-        operating_point(l, params, o.at, o.u, q, qd, u);
-        if (rate) qd[static_cast<std::size_t>(dof - dofs.begin())] = value;
-        if (o.trim) {
-            const runtime::TrimResult trimmed = trim_point(view, q, qd, u, o.hold, o.adjust);
-            q = trimmed.q;
-            u = trimmed.u;
-        }
+        const SweepPoint p = points.at(value);
         const RotorModesRequest r = rotor_request(
-            view, q, qd, u, rate && o.azimuth.empty() ? base : o.azimuth, o.hold, o.azimuths);
-        rows.push_back({value, rotor_modes(view, r)});
+            p.view, p.q, p.qd, p.u, o.azimuth.empty() ? rate : o.azimuth, o.hold, o.azimuths);
+        rotor_speed.push_back(p.qd[static_cast<std::size_t>(r.azimuth_dof)]);
+        rows.push_back({value, rotor_modes(p.view, r)});
     }
     const std::string csv = rotor_campbell_csv(sweep.name, rows);
     if (o.output.empty()) {
@@ -123,7 +109,8 @@ int rotor_campbell(const Loaded& l, const LinOptions& o, std::ostream& out) {
     }
     if (!o.plot.empty()) {
         const std::string title = l.front.model->name + ": MBC3 modes against " + sweep.name;
-        runtime::write_file_atomically(o.plot, rotor_campbell_svg(title, sweep.name, rows, rate));
+        runtime::write_file_atomically(
+            o.plot, rotor_campbell_svg(title, sweep.name, rows, rotor_speed, !rate.empty()));
         out << "wrote " << o.plot << "\n";
     }
     return 0;

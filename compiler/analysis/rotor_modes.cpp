@@ -61,9 +61,8 @@ RotorLayout rotor_layout(const std::vector<std::string>& dof_names) {
 
 std::vector<RotorMode> rotor_modes(const runtime::ModelView& view, const RotorModesRequest& r) {
     const RotorLayout layout = rotor_layout(view.dof_names);
-    if (layout.families.empty())
-        throw UserError("MBC3: no blade family among the DOFs (names that differ only in "
-                        "b1/b2/b3, like q_b1_flap1, q_b2_flap1, q_b3_flap1)");
+    // A rotor without blade DOFs (a rigid rotor on a flexible tower) has no
+    // coordinates to transform: its modes are those of the azimuth average.
     const auto azimuth = static_cast<std::size_t>(r.azimuth_dof);
     if (r.azimuth_dof < 0 || azimuth >= r.q.size())
         throw UserError("MBC3: no azimuth DOF (the DOF with a rate, or --azimuth)");

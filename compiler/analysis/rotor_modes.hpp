@@ -38,7 +38,7 @@ struct RotorModesRequest {
 };
 
 /// The azimuth-averaged MBC3 modes, sorted by frequency; `dof_names` give the
-/// labels. Throws UserError when the model has no complete blade family.
+/// labels. A model without blade families gets the azimuth average alone.
 std::vector<RotorMode> rotor_modes(const runtime::ModelView& view, const RotorModesRequest& r);
 
 /// The request of `lin --mbc3`: the azimuth DOF is `azimuth` if given, else

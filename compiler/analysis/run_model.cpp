@@ -9,6 +9,7 @@
 #include "analysis/rotor_campbell.hpp"
 #include "analysis/rotor_modes.hpp"
 #include "analysis/svg_plot.hpp"
+#include "analysis/sweep_point.hpp"
 #include "analysis/trim_point.hpp"
 #include "driver/bindings.hpp"
 #include "driver/commands.hpp"
@@ -52,25 +53,13 @@ double max_abs(const std::vector<double>& v) {
 int campbell(const Loaded& l, const LinOptions& o, std::ostream& out) {
     if (o.mbc3) return rotor_campbell(l, o, out);
     const Sweep& sweep = *o.sweep;
-    const int index = l.library->param_index(sweep.name);
-    if (index < 0)
-        throw UserError("--sweep: unknown parameter '" + sweep.name + "'" +
-                        diag::did_you_mean(sweep.name, l.library->param_names()));
+    const SweepPoints points(l, o);
     std::vector<CampbellRow> rows;
     for (double value : sweep.values) {
-        std::vector<double> params = l.params;
-        params[static_cast<std::size_t>(index)] = value;
-        const runtime::ModelView view = l.library->view(params);
-        std::vector<double> q, qd, u;
-        operating_point(l, params, o.at, o.u, q, qd, u);
-        if (o.trim) {
-            const runtime::TrimResult r = trim_point(view, q, qd, u, o.hold, o.adjust);
-            q = r.q;
-            u = r.u;
-        }
-        q.insert(q.end(), qd.begin(), qd.end());
-        const std::vector<double> A = runtime::state_matrix_from_view(view, q, u, 0.0);
-        rows.push_back({value, runtime::modal_analysis(A, view.nq)});
+        SweepPoint p = points.at(value);
+        p.q.insert(p.q.end(), p.qd.begin(), p.qd.end());
+        const std::vector<double> A = runtime::state_matrix_from_view(p.view, p.q, p.u, 0.0);
+        rows.push_back({value, runtime::modal_analysis(A, p.view.nq)});
     }
     const std::string csv = campbell_csv(sweep.name, rows);
     if (o.output.empty()) {

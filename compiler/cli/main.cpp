@@ -28,7 +28,8 @@ const char* usage_text = R"(usage:
                       [--trim [--hold dof,..] [--adjust input,..]]
                       [--mbc3 [--azimuths N] [--azimuth dof]]
                       [--aero Cp_Ct_Cq.txt] [--wind V]
-                      [--sweep NAME=FROM:STEP:TO [-o campbell.csv] [--plot campbell.svg]]
+                      [--sweep NAME=FROM:STEP:TO [--schedule points.csv] [-o campbell.csv]
+                                                 [--plot campbell.svg]]
   yamsc trim MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--hold dof,..]
                        [--adjust input,..] [--aero Cp_Ct_Cq.txt] [--wind V] [--json]
   yamsc sim MODEL.mbd --tmax T --dt DT [--ic name=v,..] [--u name=v,..] [--set name=v,..]
@@ -183,7 +184,7 @@ int run(int argc, char** argv) {
     if (cmd == "lin") {
         Args a(argc, argv, 2,
                {"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot", "--hold", "--azimuths",
-                "--azimuth", "--aero", "--wind", "--adjust"},
+                "--azimuth", "--aero", "--wind", "--adjust", "--schedule"},
                {"--json", "--trim", "--mbc3"});
         LinOptions o;
         o.model = a.model();
@@ -215,8 +216,10 @@ int run(int argc, char** argv) {
         o.aero = a.get("--aero");
         o.wind = a.get("--wind");
         if (o.sweep && o.json) throw UsageError("--sweep writes CSV, not --json");
-        if (o.sweep && (!o.aero.empty() || !o.wind.empty()))
-            throw UsageError("--sweep does not take --aero or --wind");
+        o.schedule = a.get("--schedule");
+        if (!o.sweep && !o.schedule.empty()) throw UsageError("--schedule needs --sweep");
+        if (o.sweep && !o.wind.empty() && o.sweep->name == "V_wind")
+            throw UsageError("--sweep V_wind=.. sets the wind: drop --wind");
         return lin(o, std::cout, std::cerr);
     }
     if (cmd == "trim") {

@@ -75,6 +75,7 @@ struct LinOptions {
     std::string sid;                 // --sid body=file.sid,..
     bool json = false;
     std::optional<Sweep> sweep; // --sweep NAME=FROM:STEP:TO: a Campbell diagram
+    std::string schedule;       // --schedule FILE: what moves with the swept value
     std::string output;         // -o: its CSV (default: stdout)
     std::string plot;           // --plot: its SVG
     std::string aero;           // --aero TABLE: the quasi-steady rotor block (Cp/Ct/Cq table)
