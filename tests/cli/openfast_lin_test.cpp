@@ -193,4 +193,7 @@ TEST_CASE("lin --format openfast-lin: a rotor's blade DOFs as ElastoDyn's, and M
     r = run_yamsc(dir, "lin rotor.mbd --format openfast-lin -o rotor.mbd");
     CHECK(r.status == 2);
     CHECK(read_file(model) == before);
+    r = run_yamsc(dir, "lin rotor.mbd --format openfast-lin");
+    CHECK(r.status == 2);
+    CHECK(r.err.find("--format openfast-lin needs -o FILE.lin") != std::string::npos);
 }
