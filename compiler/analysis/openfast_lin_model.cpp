@@ -21,30 +21,38 @@ namespace {
 using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 /// ElastoDyn's description of a DOF `yamsc from-openfast` names (its
-/// Init_Lin/DOF_Desc text, the glue code's "ED " prefix aside), and the sign
-/// that turns our DOF into ElastoDyn's; empty when the name is not one of them.
+/// Init_Lin/DOF_Desc text, the glue code's "ED " prefix aside), the sign that
+/// turns our DOF into ElastoDyn's and its place in ElastoDyn's order of states
+/// (platform, tower, yaw, generator, drivetrain, then the blades by mode: every
+/// blade's first flap mode, every first edge mode, every second flap mode);
+/// empty when the name is not one of them.
 struct EdDof {
     std::string description;
     double sign = 1;
+    int rank = 0;
 };
 
 EdDof elastodyn_dof(const std::string& name) {
     static const std::map<std::string, EdDof> fixed{
-        {"surge", {"Platform horizontal surge translation DOF (internal DOF index = DOF_Sg), m"}},
-        {"sway", {"Platform horizontal sway translation DOF (internal DOF index = DOF_Sw), m"}},
-        {"heave", {"Platform vertical heave translation DOF (internal DOF index = DOF_Hv), m"}},
-        {"roll", {"Platform roll tilt rotation DOF (internal DOF index = DOF_R), rad"}},
-        {"pitch", {"Platform pitch tilt rotation DOF (internal DOF index = DOF_P), rad"}},
-        {"yaw", {"Platform yaw rotation DOF (internal DOF index = DOF_Y), rad"}},
-        {"q_fa1", {"1st tower fore-aft bending mode DOF (internal DOF index = DOF_TFA1), m"}},
+        {"surge",
+         {"Platform horizontal surge translation DOF (internal DOF index = DOF_Sg), m", 1, 0}},
+        {"sway",
+         {"Platform horizontal sway translation DOF (internal DOF index = DOF_Sw), m", 1, 1}},
+        {"heave",
+         {"Platform vertical heave translation DOF (internal DOF index = DOF_Hv), m", 1, 2}},
+        {"roll", {"Platform roll tilt rotation DOF (internal DOF index = DOF_R), rad", 1, 3}},
+        {"pitch", {"Platform pitch tilt rotation DOF (internal DOF index = DOF_P), rad", 1, 4}},
+        {"yaw", {"Platform yaw rotation DOF (internal DOF index = DOF_Y), rad", 1, 5}},
+        {"q_fa1", {"1st tower fore-aft bending mode DOF (internal DOF index = DOF_TFA1), m", 1, 6}},
         {"q_ss1",
-         {"1st tower side-to-side bending mode DOF (internal DOF index = DOF_TSS1), m", -1}},
-        {"q_fa2", {"2nd tower fore-aft bending mode DOF (internal DOF index = DOF_TFA2), m"}},
+         {"1st tower side-to-side bending mode DOF (internal DOF index = DOF_TSS1), m", -1, 7}},
+        {"q_fa2", {"2nd tower fore-aft bending mode DOF (internal DOF index = DOF_TFA2), m", 1, 8}},
         {"q_ss2",
-         {"2nd tower side-to-side bending mode DOF (internal DOF index = DOF_TSS2), m", -1}},
-        {"nac_yaw", {"Nacelle yaw DOF (internal DOF index = DOF_Yaw), rad"}},
-        {"psi", {"Variable speed generator DOF (internal DOF index = DOF_GeAz), rad"}},
-        {"drtr", {"Drivetrain rotational-flexibility DOF (internal DOF index = DOF_DrTr), rad"}}};
+         {"2nd tower side-to-side bending mode DOF (internal DOF index = DOF_TSS2), m", -1, 9}},
+        {"nac_yaw", {"Nacelle yaw DOF (internal DOF index = DOF_Yaw), rad", 1, 10}},
+        {"psi", {"Variable speed generator DOF (internal DOF index = DOF_GeAz), rad", 1, 12}},
+        {"drtr",
+         {"Drivetrain rotational-flexibility DOF (internal DOF index = DOF_DrTr), rad", 1, 13}}};
     if (const auto it = fixed.find(name); it != fixed.end()) return it->second;
     // q_b<k>_flap1, q_b<k>_edge1, q_b<k>_flap2
     if (name.size() == 10 && name.compare(0, 3, "q_b") == 0 && name[3] >= '1' && name[3] <= '9' &&
@@ -55,10 +63,12 @@ EdDof elastodyn_dof(const std::string& name) {
                            : mode == "flap2" ? "2nd flapwise"
                                              : nullptr;
         const char* index = mode == "flap1" ? "DOF_BF(" : mode == "edge1" ? "DOF_BE(" : "DOF_BF(";
+        const int rank = (mode == "flap1" ? 20 : mode == "edge1" ? 30 : 40) + (name[3] - '0');
         if (what)
             return {std::string(what) + " bending-mode DOF of blade " + k +
-                    " (internal DOF index = " + index + k + (mode == "flap2" ? ",2" : ",1") +
-                    ")), m"};
+                        " (internal DOF index = " + index + k + (mode == "flap2" ? ",2" : ",1") +
+                        ")), m",
+                    1, rank};
     }
     return {};
 }
@@ -177,9 +187,19 @@ LinFile lin_file(const model::Model& model, const runtime::ModelView& v, const L
             f.B.data[static_cast<std::size_t>((n + i) * nu + j)] = dyn.B_lower(i, j);
 
     // States, then their derivatives: ElastoDyn writes "First time derivative of" for q'.
+    // File state a is S_a x[perm_a]: ElastoDyn's order and signs for its DOFs.
+    std::vector<int> order(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) order[static_cast<std::size_t>(k)] = k;
+    if (all_ed)
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+            return ed[static_cast<std::size_t>(a)].rank < ed[static_cast<std::size_t>(b)].rank;
+        });
     std::vector<double> sign(static_cast<std::size_t>(nx), 1.0);
+    std::vector<int> perm(static_cast<std::size_t>(nx));
     for (int d = 0; d < 2; ++d)
-        for (int k = 0; k < n; ++k) {
+        for (int kk = 0; kk < n; ++kk) {
+            const int k = order[static_cast<std::size_t>(kk)];
+            perm[static_cast<std::size_t>(d * n + kk)] = d * n + k;
             const auto i = static_cast<std::size_t>(free[static_cast<std::size_t>(k)]);
             const EdDof& e = ed[static_cast<std::size_t>(k)];
             std::string desc = all_ed ? e.description : "";
@@ -188,8 +208,8 @@ LinFile lin_file(const model::Model& model, const runtime::ModelView& v, const L
                 desc = v.dof_names[i] + " DOF, " + (unit.empty() ? "-" : unit);
             }
             if (d == 1) desc = "First time derivative of " + desc + "/s";
-            sign[static_cast<std::size_t>(d * n + k)] = all_ed ? e.sign : 1.0;
-            const double s = sign[static_cast<std::size_t>(d * n + k)];
+            sign[static_cast<std::size_t>(d * n + kk)] = all_ed ? e.sign : 1.0;
+            const double s = sign[static_cast<std::size_t>(d * n + kk)];
             const double value = d == 0 ? p.q[i] : p.qd[i];
             const double rate = d == 0 ? p.qd[i] : dyn.qdd[static_cast<std::size_t>(k)];
             const bool rot = rotating_dof(static_cast<int>(i));
@@ -248,17 +268,26 @@ LinFile lin_file(const model::Model& model, const runtime::ModelView& v, const L
                    static_cast<std::size_t>(nu));
     }
 
-    // ElastoDyn's signs: x_file = S x, so A -> S A S, B -> S B, C -> C S.
-    for (int i = 0; i < nx; ++i)
-        for (int j = 0; j < nx; ++j)
-            f.A.data[static_cast<std::size_t>(i * nx + j)] *=
-                sign[static_cast<std::size_t>(i)] * sign[static_cast<std::size_t>(j)];
-    for (int i = 0; i < nx; ++i)
-        for (int j = 0; j < nu; ++j)
-            f.B.data[static_cast<std::size_t>(i * nu + j)] *= sign[static_cast<std::size_t>(i)];
-    for (int r = 0; r < static_cast<int>(f.y.size()); ++r)
-        for (int j = 0; j < nx; ++j)
-            f.C.data[static_cast<std::size_t>(r * nx + j)] *= sign[static_cast<std::size_t>(j)];
+    // x_file = S P x: A -> S P A Pᵀ S, B -> S P B, C -> C Pᵀ S.
+    auto at = [](const std::vector<int>& v, int a) {
+        return static_cast<std::size_t>(v[static_cast<std::size_t>(a)]);
+    };
+    auto sg = [&](int a) { return sign[static_cast<std::size_t>(a)]; };
+    LinMatrix A = f.A, B = f.B, C = f.C;
+    const auto unx = static_cast<std::size_t>(nx), unu = static_cast<std::size_t>(nu);
+    for (int a = 0; a < nx; ++a) {
+        const auto ua = static_cast<std::size_t>(a);
+        for (int b = 0; b < nx; ++b)
+            A.data[ua * unx + static_cast<std::size_t>(b)] =
+                sg(a) * sg(b) * f.A.data[at(perm, a) * unx + at(perm, b)];
+        for (std::size_t j = 0; j < unu; ++j)
+            B.data[ua * unu + j] = sg(a) * f.B.data[at(perm, a) * unu + j];
+        for (std::size_t r = 0; r < f.y.size() && !f.C.data.empty(); ++r)
+            C.data[r * unx + ua] = sg(a) * f.C.data[r * unx + at(perm, a)];
+    }
+    f.A = std::move(A);
+    f.B = std::move(B);
+    f.C = std::move(C);
 
     f.origin = "Predictions were generated by yamsc from the model " + model.name;
     f.linked = "(yamsc lin --format openfast-lin; A and B from the generated Jacobians, C and D "

@@ -7,6 +7,7 @@
 // frequencies of `yamsc lin --mbc3`.
 #include "test_files.hpp"
 
+#include "analysis/openfast_lin_model.hpp"
 #include "driver/commands.hpp"
 
 #include <doctest/doctest.h>
@@ -196,4 +197,87 @@ TEST_CASE("lin --format openfast-lin: a rotor's blade DOFs as ElastoDyn's, and M
     r = run_yamsc(dir, "lin rotor.mbd --format openfast-lin");
     CHECK(r.status == 2);
     CHECK(r.err.find("--format openfast-lin needs -o FILE.lin") != std::string::npos);
+}
+
+TEST_CASE("lin file: ElastoDyn's order (blades by mode) and signs (side-side negated)") {
+    // A linear model M = I, F = -K q - c q' + b u, in yamsc's order (blade by blade).
+    const std::vector<std::string> names{"q_ss1",      "q_b1_flap1", "q_b1_edge1", "q_b2_flap1",
+                                         "q_b2_edge1", "q_b3_flap1", "q_b3_edge1"};
+    const int n = 7;
+    std::vector<double> K(n * n, 0.0);
+    for (int i = 0; i < n; ++i) {
+        K[i * n + i] = 10.0 + i;
+        for (int j = 0; j < n; ++j)
+            if (i != j) K[i * n + j] = 0.1 * (i + 1) + 0.01 * (j + 1);
+    }
+    yamsc::runtime::ModelView v;
+    v.nq = n;
+    v.nu = 1;
+    v.ny = 2;
+    v.dof_names = names;
+    v.input_names = {"thrust"};
+    v.output_names = {"Q_TSS1", "Q_B1E1"};
+    v.mass_matrix = [n](double, const double*, const double*, double* M) {
+        for (int i = 0; i < n * n; ++i) M[i] = i % (n + 1) == 0 ? 1.0 : 0.0;
+    };
+    v.forcing = [&K, n](double, const double* q, const double* qd, const double* u, double* F) {
+        for (int i = 0; i < n; ++i) {
+            F[i] = -0.2 * qd[i] + (i == 0 ? u[0] : 0.0);
+            for (int j = 0; j < n; ++j) F[i] -= K[i * n + j] * q[j];
+        }
+    };
+    v.jacobians = [&K, n](double, const double*, const double*, const double*, double* dq,
+                          double* dqd, double* du) {
+        for (int i = 0; i < n; ++i) {
+            du[i] = i == 0 ? 1.0 : 0.0;
+            for (int j = 0; j < n; ++j) {
+                dq[i * n + j] = -K[i * n + j];
+                dqd[i * n + j] = i == j ? -0.2 : 0.0;
+            }
+        }
+    };
+    v.rhs = [&v, n](double t, const double* x, const double* u, double* xdot) {
+        std::vector<double> F(n);
+        v.forcing(t, x, x + n, u, F.data());
+        for (int i = 0; i < n; ++i) xdot[i] = x[n + i], xdot[n + i] = F[i];
+    };
+    v.outputs = [](double, const double* q, const double*, const double*, double* y) {
+        y[0] = -q[0];
+        y[1] = q[2];
+    };
+    yamsc::model::Model m;
+    m.name = "fake";
+    yamsc::driver::LinFilePoint p;
+    p.q.assign(n, 0.0);
+    p.q[0] = 0.1;
+    p.qd.assign(n, 0.0);
+    p.u = {0.0};
+    const yamsc::driver::LinFile f = yamsc::driver::lin_file(m, v, p);
+    // ElastoDyn's order: BF(1..3,1) then BE(1..3,1); the file's state a is yamsc's perm[a].
+    const int perm[n] = {0, 1, 3, 5, 2, 4, 6};
+    const double sign[n] = {-1, 1, 1, 1, 1, 1, 1};
+    REQUIRE(f.x.size() == 2 * n);
+    CHECK(f.x[0].description ==
+          "ED 1st tower side-to-side bending mode DOF (internal DOF index = DOF_TSS1), m");
+    CHECK(f.x[0].op == -0.1);
+    CHECK(!f.x[0].rotating);
+    CHECK(f.x[2].description == "ED 1st flapwise bending-mode DOF of blade 2 (internal DOF "
+                                "index = DOF_BF(2,1)), m");
+    CHECK(f.x[4].description == "ED 1st edgewise bending-mode DOF of blade 1 (internal DOF "
+                                "index = DOF_BE(1,1)), m");
+    CHECK(f.x[4].rotating);
+    for (int a = 0; a < n; ++a)
+        for (int b = 0; b < n; ++b) {
+            CAPTURE(a);
+            CAPTURE(b);
+            // (A by central differences of rhs: the view has no rhs_jacobian)
+            CHECK(f.A.data[(n + a) * 2 * n + b] ==
+                  doctest::Approx(-sign[a] * sign[b] * K[perm[a] * n + perm[b]]).epsilon(1e-8));
+            CHECK(f.A.data[a * 2 * n + n + b] == doctest::Approx(a == b ? 1.0 : 0.0).epsilon(1e-8));
+        }
+    CHECK(f.B.data[n * 1 + 0] == -1.0); // the input drives q_ss1: ED's DOF the other way
+    // Q_TSS1 = -q_ss1 is ElastoDyn's DOF itself; Q_B1E1 its BE(1,1).
+    CHECK(f.C.data[0 * 2 * n + 0] == doctest::Approx(1.0).epsilon(1e-9));
+    CHECK(f.C.data[1 * 2 * n + 4] == doctest::Approx(1.0).epsilon(1e-9));
+    CHECK(f.y[1].rotating == false); // no Q_B2E1, Q_B3E1 siblings: not a triplet
 }
