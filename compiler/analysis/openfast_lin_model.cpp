@@ -62,7 +62,7 @@ EdDof elastodyn_dof(const std::string& name) {
                            : mode == "edge1" ? "1st edgewise"
                            : mode == "flap2" ? "2nd flapwise"
                                              : nullptr;
-        const char* index = mode == "flap1" ? "DOF_BF(" : mode == "edge1" ? "DOF_BE(" : "DOF_BF(";
+        const char* index = mode == "edge1" ? "DOF_BE(" : "DOF_BF(";
         const int rank = (mode == "flap1" ? 20 : mode == "edge1" ? 30 : 40) + (name[3] - '0');
         if (what)
             return {std::string(what) + " bending-mode DOF of blade " + k +
@@ -81,8 +81,8 @@ std::string unit_in(const std::string& doc) {
     return open == std::string::npos ? "" : doc.substr(open + 1, close - open - 1);
 }
 
-/// The index of `name` among a triplet `...b1...`/`...1` whose siblings with 2 and 3
-/// exist (a blade's channel), or false.
+/// Whether `name` is one of a blade triplet: a `b1`/`B1` (or a final digit) whose
+/// siblings with 2 and 3 in its place exist too (f_b2_flap1, Q_B3F1, OoPDefl2).
 bool in_blade_triplet(const std::string& name, const std::vector<std::string>& all) {
     auto has = [&](const std::string& n) {
         return std::find(all.begin(), all.end(), n) != all.end();
@@ -102,7 +102,9 @@ bool in_blade_triplet(const std::string& name, const std::vector<std::string>& a
     return false;
 }
 
-/// M_ff⁻¹ (rows of the free DOFs), and the free DOFs' accelerations and dF_f/du.
+/// The free DOFs' accelerations M_ff⁻¹ F_f (the held DOFs' are zero) and the lower
+/// half of B, M_ff⁻¹ ∂F_f/∂u: rows and columns of the free DOFs only, as the held
+/// system of runtime::state_matrix_with_held.
 struct FreeDynamics {
     std::vector<double> qdd; ///< free DOFs' accelerations (held DOFs' are zero)
     RowMajor B_lower;        ///< M_ff⁻¹ dF_f/du
