@@ -221,3 +221,14 @@ def test_simulation_releases_the_gil(pendulum):
     # A Python loop counts millions per second; holding the GIL in the runs
     # would leave it the ~1 % progress checks only.
     assert count[0] > 100_000 * elapsed, (count[0], elapsed)
+
+
+def test_ctrl_c_stops_a_run(pendulum):
+    """SIGINT (here interrupt_main) stops a run at its next progress check
+    (every 1 %); the whole run would take about 25 s."""
+    import _thread
+    threading.Timer(0.3, _thread.interrupt_main).start()
+    start = time.perf_counter()
+    with pytest.raises(KeyboardInterrupt):
+        pendulum.simulate(1e5, 1.0, ic={"th1": 0.5}, method="cvode", frame=False)
+    assert time.perf_counter() - start < 10
