@@ -169,6 +169,27 @@ def test_arrays_of_other_types_are_converted(pendulum):
         pendulum.mass_matrix(np.zeros(3))
 
 
+def test_load_library_built_from_generated_code(pendulum, models, source_dir, cli, tmp_path):
+    """A library as a build system makes one: yamsc's C++, the ABI shim, c++ -shared."""
+    import os
+    import subprocess
+    cli(models / "double_pendulum.mbd", "-o", tmp_path / "dp.cpp", "--header", tmp_path / "dp.hpp")
+    (tmp_path / "abi.cpp").write_text(
+        '#include "dp.hpp"\n#include <yamsc/abi_export.hpp>\nYAMSC_EXPORT_MODEL(double_pendulum)\n')
+    cxx = os.environ.get("YAMSC_CXX") or os.environ.get("CXX") or "c++"
+    subprocess.run([cxx, "-std=c++17", "-O2", "-shared", "-fPIC", "-fvisibility=hidden",
+                    "-I", str(source_dir / "runtime" / "include"), "-I", str(tmp_path),
+                    str(tmp_path / "dp.cpp"), str(tmp_path / "abi.cpp"),
+                    "-o", str(tmp_path / "libdp.so")], check=True)
+    lib = yamsc.load_library(tmp_path / "libdp.so")
+    x = np.array(Q + QD)
+    np.testing.assert_array_equal(lib.rhs(x, [1.0, 0.5]), pendulum.rhs(x, [1.0, 0.5]))
+    assert lib.params[0].default == 2.0 and lib.name == ""
+    run = lib.simulate(1.0, 0.01, ic=np.array([0.5, 0, 0, 0]), frame=False)
+    np.testing.assert_array_equal(
+        run["th1"], pendulum.simulate(1.0, 0.01, ic={"th1": 0.5}, frame=False)["th1"])
+
+
 def test_load_library(pendulum):
     lib = yamsc.load_library(pendulum.library_path, set={"k": 8.0})
     assert [d.name for d in lib.dofs] == ["th1", "th2"]
