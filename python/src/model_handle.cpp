@@ -32,11 +32,13 @@ template <class Item> const Item* named(const std::vector<Item>& items, const st
 } // namespace
 
 ModelHandle ModelHandle::from_source(const std::string& path, const std::string& sid,
-                                     const std::vector<driver::Assignment>& set) {
+                                     const std::vector<driver::Assignment>& set,
+                                     std::vector<std::string> routines) {
+    if (routines.empty()) routines = all_routines();
     std::ostringstream err;
     std::optional<driver::Loaded> loaded;
     try {
-        loaded = driver::load(path, set, sid, false, err, {}, all_routines());
+        loaded = driver::load(path, set, sid, false, err, {}, routines);
     } catch (const std::exception& e) {
         // UserError (a --set name that does not exist), a failed compile, ...
         throw LoadError(err.str() + e.what());

@@ -27,10 +27,12 @@ struct Described {
 
 class ModelHandle {
 public:
-    /// Checks and compiles a model file like `yamsc sim` (every routine of the
-    /// ABI, one cached library). Throws LoadError with the diagnostics.
+    /// Checks and compiles a model file like `yamsc sim`: `routines` of the ABI
+    /// (empty: every one) in one cached library, shared with the commands that
+    /// compile the same routines. Throws LoadError with the diagnostics.
     static ModelHandle from_source(const std::string& path, const std::string& sid,
-                                   const std::vector<driver::Assignment>& set);
+                                   const std::vector<driver::Assignment>& set,
+                                   std::vector<std::string> routines);
     /// A library exporting a model (abi_export.hpp), bound to its defaults and `set`.
     static ModelHandle from_library(const std::string& path,
                                     const std::vector<driver::Assignment>& set);

@@ -82,7 +82,9 @@ struct Call {
 };
 
 template <class F> void require(const F& routine, const char* name) {
-    if (!routine) throw py::value_error(std::string("the model library has no ") + name);
+    if (!routine)
+        throw py::value_error(std::string("the model was loaded without its ") + name +
+                              " routine (yamsc.load(..., routines=...))");
 }
 
 py::dict linear(ModelHandle& h, const Assignments& at, const Assignments& u_given,
@@ -321,12 +323,13 @@ PYBIND11_MODULE(_yamsc, mod) {
 
     mod.def(
         "load",
-        [](const std::string& path, const std::string& sid, const Assignments& set) {
+        [](const std::string& path, const std::string& sid, const Assignments& set,
+           const std::vector<std::string>& routines) {
             const auto a = assignments(set);
             py::gil_scoped_release released; // compiling can take seconds
-            return ModelHandle::from_source(path, sid, a);
+            return ModelHandle::from_source(path, sid, a, routines);
         },
-        py::arg("path"), py::arg("sid"), py::arg("set"));
+        py::arg("path"), py::arg("sid"), py::arg("set"), py::arg("routines"));
     mod.def(
         "load_library",
         [](const std::string& path, const Assignments& set) {

@@ -190,6 +190,15 @@ def test_load_library_built_from_generated_code(pendulum, models, source_dir, cl
         run["th1"], pendulum.simulate(1.0, 0.01, ic={"th1": 0.5}, frame=False)["th1"])
 
 
+def test_fewer_routines(models):
+    m = yamsc.load(models / "double_pendulum.mbd", routines=yamsc.SIMULATE)
+    assert m.simulate(0.1, 0.01, frame=False)["th1"].shape == (11,)
+    with pytest.raises(ValueError, match="loaded without its mass_matrix routine"):
+        m.mass_matrix(np.zeros(2))
+    with pytest.raises(yamsc.Error, match="no routine .nope."):
+        yamsc.load(models / "double_pendulum.mbd", routines=["nope"])
+
+
 def test_load_library(pendulum):
     lib = yamsc.load_library(pendulum.library_path, set={"k": 8.0})
     assert [d.name for d in lib.dofs] == ["th1", "th2"]

@@ -18,7 +18,7 @@ import numpy as np
 
 from . import _yamsc
 
-__all__ = ["Error", "Model", "Quantity", "load", "load_library"]
+__all__ = ["Error", "Model", "Quantity", "ROUTINES", "SIMULATE", "load", "load_library"]
 
 Error = _yamsc.Error
 
@@ -222,14 +222,22 @@ class Model:
         return data
 
 
-def load(path, sid=None, set=None):
+#: The routines of the model ABI; load(routines=SIMULATE) compiles what
+#: rk4 runs need, as `yamsc sim` does (and shares its cached library).
+ROUTINES = ("rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs")
+SIMULATE = ("rhs", "outputs")
+
+
+def load(path, sid=None, set=None, routines=None):
     """Checks and compiles a model file (cached like `yamsc sim`).
 
     sid: "body=file.sid,..." or {"body": "file.sid"} (as --sid); set: {name:
-    value} over the parameters' defaults (as --set). Raises yamsc.Error with
-    the located diagnostics when the model has errors.
+    value} over the parameters' defaults (as --set); routines: those to
+    compile (default: all of ROUTINES; fewer compile faster for large models).
+    Raises yamsc.Error with the located diagnostics when the model has errors.
     """
-    return Model(_yamsc.load(str(path), _sid_spec(sid), _assignments(set, "set")))
+    return Model(_yamsc.load(str(path), _sid_spec(sid), _assignments(set, "set"),
+                             list(routines or ())))
 
 
 def load_library(path, set=None):
