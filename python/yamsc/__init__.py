@@ -223,7 +223,7 @@ class Model:
 
 
 #: The routines of the model ABI; load(routines=SIMULATE) compiles what
-#: rk4 runs need, as `yamsc sim` does (and shares its cached library).
+#: rk4 runs need, as `yamsc sim` does.
 ROUTINES = ("rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs")
 SIMULATE = ("rhs", "outputs")
 
