@@ -262,3 +262,15 @@ def test_ctrl_c_stops_a_run(pendulum):
     with pytest.raises(KeyboardInterrupt):
         pendulum.simulate(1e5, 1.0, ic={"th1": 0.5}, method="cvode", frame=False)
     assert time.perf_counter() - start < 10
+
+
+def test_cache_key_holds_the_module_build(models, cli, tmp_path, monkeypatch):
+    """The module and yamsc compile the same routines into separate entries:
+    the key names the build that derived the code (analysis/jit_cache.cpp)."""
+    monkeypatch.setenv("YAMSC_CACHE_DIR", str(tmp_path))
+    m = yamsc.load(models / "double_pendulum.mbd", routines=yamsc.SIMULATE)
+    assert m.library_path.startswith(str(tmp_path))
+    yamsc.load(models / "double_pendulum.mbd", routines=yamsc.SIMULATE)  # a hit
+    assert len(list(tmp_path.glob("double_pendulum-*.so"))) == 1
+    cli("sim", models / "double_pendulum.mbd", "--tmax", 0.1, "--dt", 0.01)
+    assert len(list(tmp_path.glob("double_pendulum-*.so"))) == 2
