@@ -21,7 +21,8 @@ struct Loaded {
     std::unique_ptr<runtime::SharedModel> library;
     runtime::ModelView view;
     std::vector<double> params;
-    FrontEnd front; // the checked model (its equations are derived only to compile it)
+    FrontEnd front; // the checked model (its equations are derived only to compile it);
+                    // no model for a library loaded by load_library
 };
 
 /// `outputs` are checked against the model's data files before anything is derived.
@@ -32,6 +33,11 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
                            const std::string& sid_spec, bool verbose, std::ostream& err,
                            const std::vector<NamedFile>& outputs,
                            const std::vector<std::string>& routines);
+
+/// A model library built beforehand (abi_export.hpp's YAMSC_EXPORT_MODEL, e.g.
+/// by CMake) bound to its defaults and `set`. It has no front end: no `initial`
+/// or `linearize` block, so both points are zeros unless given.
+Loaded load_library(const std::string& path, const std::vector<Assignment>& set);
 
 /// The routines `lin` and `trim` call: the second-order model and A.
 std::vector<std::string> linear_model_routines();
