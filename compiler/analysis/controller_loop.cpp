@@ -25,10 +25,20 @@ int find(const std::vector<std::string>& names, const std::string& name, bool re
 
 } // namespace
 
+std::string output_root_of(const std::string& output) {
+    if (output.empty()) return "yamsc";
+    const auto slash = output.find_last_of('/');
+    const auto dot = output.find_last_of('.');
+    return dot != std::string::npos && (slash == std::string::npos || dot > slash + 1)
+               ? output.substr(0, dot)
+               : output;
+}
+
 runtime::SimulationResult simulate_with_controller(const runtime::ModelView& v,
                                                    const runtime::SimulationOptions& options,
                                                    const std::string& library,
-                                                   const std::string& input_file) {
+                                                   const std::string& input_file,
+                                                   const std::string& output_root) {
     const int pitch = find(v.input_names, "pitch", true, "input");
     const int torque = find(v.input_names, "gen_torque", true, "input");
     const int wind = find(v.input_names, "V_wind", false, "input");
@@ -39,7 +49,8 @@ runtime::SimulationResult simulate_with_controller(const runtime::ModelView& v,
 
     std::unique_ptr<runtime::DisconController> controller;
     try {
-        controller = std::make_unique<runtime::DisconController>(library, input_file);
+        controller =
+            std::make_unique<runtime::DisconController>(library, input_file, output_root + ".SrvD");
     } catch (const std::runtime_error& e) {
         throw diag::UserError(e.what());
     }

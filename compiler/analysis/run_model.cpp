@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ostream>
 
 namespace yamsc::driver {
@@ -126,14 +127,28 @@ std::vector<PlotPanel> plot_panels(const Table& sim, const Table* reference,
     return panels;
 }
 
+/// --wind names a file (not a speed, not step:..).
+bool wind_file(const std::string& spec) {
+    char* end = nullptr;
+    std::strtod(spec.c_str(), &end);
+    return !spec.empty() && *end != '\0' && spec.rfind("step:", 0) != 0;
+}
+
 } // namespace
 
 int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     if (!o.at.empty() && !o.linear) throw UsageError("--at needs --linear");
-    const std::vector<NamedFile> outputs{{"-o", o.output}, {"--plot", o.plot}};
+    std::vector<NamedFile> outputs{{"-o", o.output}, {"--plot", o.plot}};
+    // The controller writes its own files from the run's root (ROSCO: a log).
+    if (!o.controller.empty())
+        outputs.push_back({"the controller's log", output_root_of(o.output) + ".RO.dbg"});
     std::vector<NamedFile> inputs = sid_files_of(o.sid);
     inputs.push_back({"the model", o.model});
     inputs.push_back({"the --compare table", o.compare});
+    inputs.push_back({"--aero", o.aero});
+    inputs.push_back({"--controller", o.controller});
+    inputs.push_back({"--controller-input", o.controller_input});
+    if (wind_file(o.wind)) inputs.push_back({"--wind", o.wind});
     check_outputs(inputs, outputs);
     // A bad reference fails before anything is simulated or written.
     std::optional<Table> reference;
@@ -172,7 +187,8 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     };
     runtime::SimulationResult result =
         o.controller.empty() ? runtime::simulate(v, s, progress)
-                             : simulate_with_controller(v, s, o.controller, o.controller_input);
+                             : simulate_with_controller(v, s, o.controller, o.controller_input,
+                                                        output_root_of(o.output));
     const bool openfast = o.channels == Channels::openfast;
     const Table table = openfast ? openfast_table(result, 1 + v.nx()) : table_of(result);
     if (!o.output.empty()) {

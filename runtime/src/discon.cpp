@@ -16,14 +16,16 @@ constexpr int message_size = 1024;
 struct DisconController::Impl {
     void* handle = nullptr;
     Discon discon = nullptr;
-    std::string input_file, output_name = "yamsc";
+    std::string input_file, output_name;
     std::vector<float> swap = std::vector<float>(swap_size, 0.0f);
     bool started = false;
 };
 
-DisconController::DisconController(const std::string& library, std::string input_file)
+DisconController::DisconController(const std::string& library, std::string input_file,
+                                   std::string output_name)
     : impl_(std::make_unique<Impl>()) {
     impl_->input_file = std::move(input_file);
+    impl_->output_name = std::move(output_name);
     impl_->handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!impl_->handle)
         throw std::runtime_error("--controller: cannot load '" + library + "': " + dlerror());

@@ -33,7 +33,11 @@ struct ControllerDemands {
 class DisconController {
 public:
     /// Loads `library` (a path; dlopen) and its DISCON; throws std::runtime_error.
-    DisconController(const std::string& library, std::string input_file);
+    /// `output_name` is the avcOUTNAME argument, the simulation's root name with
+    /// an extension as OpenFAST's ServoDyn passes it (`case.SrvD`): ROSCO strips
+    /// the extension and writes its debug channels to `case.RO.dbg`.
+    DisconController(const std::string& library, std::string input_file,
+                     std::string output_name = "yamsc.SrvD");
     ~DisconController();
     DisconController(const DisconController&) = delete;
     DisconController& operator=(const DisconController&) = delete;
