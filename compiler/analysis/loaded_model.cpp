@@ -46,6 +46,15 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
                            const std::string& sid_spec, bool verbose, std::ostream& err,
                            const std::vector<NamedFile>& outputs,
                            const std::vector<std::string>& routines) {
+    std::optional<Loaded> l = load_unbound(path, sid_spec, verbose, err, outputs, routines);
+    if (l) bind_parameters(*l, set);
+    return l;
+}
+
+std::optional<Loaded> load_unbound(const std::string& path, const std::string& sid_spec,
+                                   bool verbose, std::ostream& err,
+                                   const std::vector<NamedFile>& outputs,
+                                   const std::vector<std::string>& routines) {
     diag::Diagnostics diags;
     auto progress = [&](const std::string& s) {
         if (verbose) err << "yamsc: " << s << "\n";
@@ -75,17 +84,21 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
     } catch (const NotDerived&) {
         return std::nullopt;
     }
+    // --sid values first, so that --set still overrides them.
+    if (!sid_spec.empty()) l.sid_values = sid_parameter_values(*fe.model, sid_spec);
+    l.digest = id.content_digest;
+    l.front = std::make_shared<const FrontEnd>(std::move(fe));
+    return l;
+}
+
+void bind_parameters(Loaded& l, const std::vector<Assignment>& set) {
     std::vector<std::optional<double>> defaults;
     for (double v : l.library->default_params())
         defaults.push_back(std::isnan(v) ? std::nullopt : std::optional<double>(v));
-    // --sid values first, so that --set still overrides them.
-    std::vector<Assignment> all =
-        sid_spec.empty() ? std::vector<Assignment>{} : sid_parameter_values(*fe.model, sid_spec);
+    std::vector<Assignment> all = l.sid_values;
     all.insert(all.end(), set.begin(), set.end());
     l.params = bind_named(l.library->param_names(), defaults, all, "parameter");
     l.view = l.library->view(l.params);
-    l.front = std::move(fe);
-    return l;
 }
 
 std::vector<std::string> linear_model_routines() {
@@ -104,7 +117,7 @@ void operating_point(const Loaded& l, const std::vector<double>& params,
     q.assign(static_cast<std::size_t>(v.nq), 0.0);
     qd.assign(static_cast<std::size_t>(v.nq), 0.0);
     u.assign(static_cast<std::size_t>(v.nu), 0.0);
-    if (const auto& point = l.front.model->operating_point) {
+    if (const auto& point = l.front->model->operating_point) {
         q = evaluate_at(l, params, point->q, v.dof_names, "linearize");
         qd = evaluate_at(l, params, point->qd, primed(v.dof_names), "linearize");
         u = evaluate_at(l, params, point->u, v.input_names, "linearize");
@@ -133,7 +146,7 @@ void initial_state(const Loaded& l, const std::vector<Assignment>& ic, std::vect
     const runtime::ModelView& v = l.view;
     q.assign(static_cast<std::size_t>(v.nq), 0.0);
     qd.assign(static_cast<std::size_t>(v.nq), 0.0);
-    if (const auto& init = l.front.model->initial_state) {
+    if (const auto& init = l.front->model->initial_state) {
         q = evaluate_at(l, l.params, init->q, v.dof_names, "initial");
         qd = evaluate_at(l, l.params, init->qd, primed(v.dof_names), "initial");
     }
