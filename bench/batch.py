@@ -9,8 +9,9 @@ For the land and the floating 3-DOF model, all in one run on this machine:
     its integration (binding the parameters, the view, writing its CSV and
     record, the bookkeeping), with the process start and model load removed;
   - a sweep of N cases of 20 s at dt = 0.01 (2000 RK4 steps, 2001 CSV rows)
-    on 1 and 2 threads: cases per second and the parallel efficiency
-    T1 / (2 T2);
+    on 1 and 2 threads: wall time per case, the parallel efficiency
+    T1 / (2 T2), the CPU time of 2 threads over 1 (1.0: the threads add no
+    work) and cases per core-hour (from the CPU time of 1 thread);
   - for comparison, one `yamsc sim` process per case (warm cache).
 The model is compiled (cached) before timing. Prints a markdown table and
 writes JSON.
@@ -21,6 +22,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import resource
 import shutil
 import subprocess
 import tempfile
@@ -49,10 +51,18 @@ def first_dof(model: Path) -> str:
 
 
 def timed(cmd: list[str], env: dict, cwd: Path) -> float:
+    return timed_cpu(cmd, env, cwd)[0]
+
+
+def timed_cpu(cmd: list[str], env: dict, cwd: Path) -> tuple[float, float]:
+    """Wall time and CPU time (user + system) of a command."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     subprocess.run(cmd, check=True, env=env, cwd=cwd, stdout=subprocess.DEVNULL,
                    stderr=subprocess.DEVNULL)
-    return time.perf_counter() - start
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return wall, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
 
 def main() -> int:
@@ -62,6 +72,7 @@ def main() -> int:
     ap.add_argument("--cases", type=int, default=400)
     ap.add_argument("--json", type=Path)
     a = ap.parse_args()
+    a.yamsc = str(Path(a.yamsc).resolve())
     work = a.workdir or Path(tempfile.mkdtemp(prefix="yamsc-batch-bench-"))
     work.mkdir(parents=True, exist_ok=True)
     env = dict(os.environ, YAMSC_CACHE_DIR=str(work / "cache"))
@@ -73,18 +84,21 @@ def main() -> int:
                        env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 
         def batch(cases: int, tmax: float, dt: float, threads: int) -> float:
+            return batch_cpu(cases, tmax, dt, threads)[0]
+
+        def batch_cpu(cases: int, tmax: float, dt: float, threads: int) -> tuple[float, float]:
             m = work / f"{key}-{cases}-{tmax}-{threads}.csv"
             manifest(m, model, cases, tmax, dt)
             out = work / (m.stem + ".out")
             shutil.rmtree(out, ignore_errors=True)
-            return timed([a.yamsc, "batch", str(m), "-o", str(out), "--threads", str(threads),
-                          "-q"], env, work)
+            return timed_cpu([a.yamsc, "batch", str(m), "-o", str(out), "--threads",
+                              str(threads), "-q"], env, work)
 
         one = min(batch(1, 0.01, 0.01, 1) for _ in range(3))
         many = min(batch(n, 0.01, 0.01, 1) for _ in range(2))
         overhead = (many - one) / (n - 1)
-        t1 = batch(n, 20, 0.01, 1)
-        t2 = batch(n, 20, 0.01, 2)
+        t1, cpu1 = min(batch_cpu(n, 20, 0.01, 1) for _ in range(2))
+        t2, cpu2 = min(batch_cpu(n, 20, 0.01, 2) for _ in range(2))
         sims = 20
         t_sim = timed(["sh", "-c", " ".join(
             f"{a.yamsc} sim {model} --tmax 20 --dt 0.01 -o s.csv >/dev/null;" for _ in range(sims))],
@@ -98,16 +112,22 @@ def main() -> int:
             "ms_per_case_1thread": 1e3 * t1 / n,
             "ms_per_case_2threads": 1e3 * t2 / n,
             "parallel_efficiency_2threads": t1 / (2 * t2),
+            "cpu_s_1thread": cpu1,
+            "cpu_s_2threads": cpu2,
+            "load_average": os.getloadavg()[0],
             "sim_process_per_case_ms": 1e3 * t_sim,
-            "cases_per_core_hour": 3600 * n / t1,
+            # CPU time, not wall: the machine may be shared while measuring.
+            "cases_per_core_hour": 3600 * n / cpu1,
         }
     print("| model | overhead per case | 20 s case, 1 thread | 2 threads | efficiency (2) |"
-          " `yamsc sim` per case | cases per core-hour |")
-    print("|---|---|---|---|---|---|---|")
+          " CPU 2 threads / 1 | `yamsc sim` per case | cases per core-hour |")
+    print("|---|---|---|---|---|---|---|---|")
     for name, r in results.items():
         print(f"| {name} | {r['overhead_ms_per_case']:.2f} ms | {r['ms_per_case_1thread']:.2f} ms |"
               f" {r['ms_per_case_2threads']:.2f} ms | {100 * r['parallel_efficiency_2threads']:.0f} % |"
+              f" {r['cpu_s_2threads'] / r['cpu_s_1thread']:.2f} |"
               f" {r['sim_process_per_case_ms']:.1f} ms | {r['cases_per_core_hour']:.3g} |")
+    print(f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
     if a.json:
         a.json.write_text(json.dumps(results, indent=2) + "\n")
     return 0

@@ -18,11 +18,14 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <climits>
 #include <cstdio>
+#include <cstdlib>
 #include <dirent.h>
 #include <map>
 #include <mutex>
 #include <ostream>
+#include <sched.h>
 #include <set>
 #include <sstream>
 #include <sys/stat.h>
@@ -163,6 +166,34 @@ void remove_leftovers(const std::string& dir, const std::vector<std::string>& id
     }
 }
 
+/// A failed case leaves no result: a file from an earlier run of the row
+/// would look like its result.
+void forget(const std::string& dir, const std::string& id) {
+    std::remove((dir + "/" + id + ".csv").c_str());
+    std::remove((dir + "/.records/" + id).c_str());
+}
+
+/// The path with links and dots resolved; as given when it does not exist.
+std::string real_path(const std::string& path) {
+    char buf[PATH_MAX];
+    return ::realpath(path.c_str(), buf) ? std::string(buf) : path;
+}
+
+/// The input that the result of `id` would replace, or "".
+std::string replaced_input(const std::string& real_dir, const std::string& id,
+                           const std::set<std::string>& inputs) {
+    const std::string result = real_dir + "/" + id + ".csv";
+    return inputs.count(result) ? result : "";
+}
+
+/// The cores this process may run on (a Slurm task's share, not the machine's).
+std::size_t usable_cores() {
+    cpu_set_t set;
+    if (::sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0)
+        return static_cast<std::size_t>(CPU_COUNT(&set));
+    return std::max(1u, std::thread::hardware_concurrency());
+}
+
 std::string join(const std::vector<std::string>& v) {
     std::string out;
     for (const std::string& s : v) out += (out.empty() ? "" : ",") + s;
@@ -210,6 +241,15 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
         jobs.push_back(std::move(job));
     }
 
+    // A result must not replace an input (the manifest, a model, a wind file).
+    const std::string real_dir = real_path(dir);
+    std::set<std::string> inputs{real_path(o.manifest)};
+    for (const Job& job : jobs)
+        if (job.c) {
+            inputs.insert(real_path(job.c->sim.model));
+            if (!job.c->sim.wind.empty()) inputs.insert(real_path(job.c->sim.wind));
+        }
+
     // Each distinct model (and set of routines) loaded once: from the JIT cache
     // when compiled before.
     std::map<std::string, std::optional<Loaded>> models;
@@ -235,6 +275,13 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
         if (!models[key]) {
             job.summary.message = job.c->model_at + ": error: " + model_errors[key];
             job.done = true;
+            forget(dir, job.c->id);
+            continue;
+        }
+        if (const std::string input = replaced_input(real_dir, job.c->id, inputs); !input.empty()) {
+            job.summary.message = job.c->row_at + ": error: the result " + dir + "/" + job.c->id +
+                                  ".csv would replace " + input + ", an input of the batch";
+            job.done = true;
             continue;
         }
         job.model = &*models[key];
@@ -259,7 +306,7 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
     std::vector<std::string> ids;
     for (const Job* job : pending) ids.push_back(job->c->id);
     remove_leftovers(dir, ids);
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    const std::size_t cores = usable_cores();
     const std::size_t threads = std::max<std::size_t>(
         1, std::min<std::size_t>(o.threads > 0 ? static_cast<std::size_t>(o.threads) : cores,
                                  pending.size()));
@@ -292,6 +339,7 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
                 job.summary.ok = false;
                 job.summary.message = e.what();
                 job.summary.wall_s = since(start);
+                forget(dir, job.c->id);
             }
             progress.finished(job.summary.ok);
         }

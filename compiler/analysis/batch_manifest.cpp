@@ -208,6 +208,10 @@ BatchCase case_of(const Manifest& m, const ManifestRow& row) {
                 throw CaseError(at(f), "the id '" + f.text +
                                            "' is not a file name: use letters, digits, _ - . + "
                                            "(not first: . -)");
+            if (f.text == "summary" || f.text.rfind("summary-", 0) == 0)
+                throw CaseError(at(f), "the id '" + f.text +
+                                           "' would name the summary's file (summary.csv, "
+                                           "summary-k-of-N.csv)");
             c.id = f.text;
         } else if (column == "model") {
             if (f.text.empty()) throw CaseError(at(f), "no model given");

@@ -197,33 +197,23 @@ TEST_CASE("threads, shards and a run killed with SIGKILL and resumed give one ru
 
 TEST_CASE("bad rows are reported at their place; the other cases run; exit status 1") {
     const std::string dir = scratch_dir("batch", "bad_rows");
-    write_file(dir + "/cases.csv", "# a comment line, then the header\n"
-                                   "id,model,tmax,dt,set,ic:phi_y\n"
-                                   "good1," +
-                                       floating +
-                                       ",1,0.1,,0.01\n"
-                                       "unknown," +
-                                       floating +
-                                       ",1,0.1,\"M_F=7e6,M_Q=3\",0\n"
-                                       "missing,no/such.mbd,1,0.1,,0\n"
-                                       "nan," +
-                                       floating +
-                                       ",1,0.1,,nan\n"
-                                       "good1," +
-                                       floating +
-                                       ",1,0.1,,0.02\n"
-                                       "short," +
-                                       floating +
-                                       ",1\n"
-                                       "bad/id," +
-                                       floating +
-                                       ",1,0.1,,0\n"
-                                       "good2," +
-                                       floating + ",1,0.1,M_F=7e6,0.03\n");
+    // MODEL stands for the floating model's path.
+    const std::string manifest = "# a comment line, then the header\n"
+                                 "id,model,tmax,dt,set,ic:phi_y\n"
+                                 "good1,MODEL,1,0.1,,0.01\n"
+                                 "unknown,MODEL,1,0.1,\"M_F=7e6,M_Q=3\",0\n"
+                                 "missing,no/such.mbd,1,0.1,,0\n"
+                                 "nan,MODEL,1,0.1,,nan\n"
+                                 "good1,MODEL,1,0.1,,0.02\n"
+                                 "short,MODEL,1\n"
+                                 "bad/id,MODEL,1,0.1,,0\n"
+                                 "summary,MODEL,1,0.1,,0\n"
+                                 "good2,MODEL,1,0.1,M_F=7e6,0.03\n";
+    write_file(dir + "/cases.csv", replace_all(manifest, "MODEL", floating));
     const Run r = run_in(dir, "$Y batch cases.csv --threads 2");
     INFO(r.err);
     CHECK(r.status == 1);
-    CHECK(has(r.out, "8 cases, 2 ok, 6 failed"));
+    CHECK(has(r.out, "9 cases, 2 ok, 7 failed"));
     const std::string m = "cases.csv:";
     // M_Q's column: after the id, the model, the times, the quote and M_F=7e6,.
     const std::size_t q_col = std::string("unknown,").size() + floating.size() +
@@ -237,7 +227,8 @@ TEST_CASE("bad rows are reported at their place; the other cases run; exit statu
     CHECK(has(r.err, m + "9:1: error: the id 'bad/id' is not a file name"));
     const std::string summary = read_file(dir + "/cases.out/summary.csv");
     CHECK(has(summary, "\n1,good1,ok,"));
-    CHECK(has(summary, "\n8,good2,ok,"));
+    CHECK(has(r.err, m + "10:1: error: the id 'summary' would name the summary's file"));
+    CHECK(has(summary, "\n9,good2,ok,"));
     CHECK(has(summary, "\n3,missing,error,,cases.csv:5:9: error: cannot read the model"));
     CHECK(files_of(dir + "/cases.out", ".csv") ==
           std::vector<std::string>{"good1.csv", "good2.csv"});
@@ -257,4 +248,19 @@ TEST_CASE("an edited row runs again; the others are kept") {
     CHECK(has(r.err, "5 cases, 4 done before, 1 to run"));
     CHECK(read_file(dir + "/out/case3.csv") != case3);
     CHECK(read_file(dir + "/out/case3.csv").size() < case3.size());
+
+    // A row that fails now leaves no result from before; one whose result
+    // would replace the manifest is refused.
+    edited = replace_all(edited, "set:M_F,", "set:M_Q,");
+    write_file(dir + "/cases.csv", edited);
+    const Run failing = run_in(dir, "$Y batch cases.csv -o out");
+    CHECK(failing.status == 1);
+    CHECK(has(failing.err, "cases.csv:2:"));
+    CHECK(has(failing.err, ": error: unknown parameter 'M_Q'"));
+    CHECK(files_of(dir + "/out", ".csv").empty());
+    write_file(dir + "/cases.csv", "id,model,tmax,dt\ncases," + floating + ",1,0.1\n");
+    const Run itself = run_in(dir, "$Y batch cases.csv -o .");
+    CHECK(itself.status == 1);
+    CHECK(has(itself.err, "/cases.csv would replace "));
+    CHECK(read_file(dir + "/cases.csv").rfind("id,model", 0) == 0);
 }
