@@ -248,6 +248,7 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
         if (job.c) {
             inputs.insert(real_path(job.c->sim.model));
             if (!job.c->sim.wind.empty()) inputs.insert(real_path(job.c->sim.wind));
+            if (!job.c->sim.aero.empty()) inputs.insert(real_path(job.c->sim.aero));
         }
 
     // Each distinct model (and set of routines) loaded once: from the JIT cache

@@ -14,7 +14,7 @@ namespace yamsc::driver {
 namespace {
 
 const std::vector<std::string> plain_columns{"id",   "model", "tmax", "dt", "method", "rtol",
-                                             "atol", "set",   "ic",   "u",  "wind"};
+                                             "atol", "set",   "ic",   "u",  "wind",   "aero"};
 const std::vector<std::string> required_columns{"id", "model", "tmax", "dt"};
 const std::vector<std::string> prefixes{"set:", "ic:", "u:"};
 
@@ -133,11 +133,11 @@ Manifest read_manifest(const std::string& path) {
                 throw diag::UserError(m.where(line_no, 1) + ": error: the header: " + error);
             for (const ManifestField& f : fields) {
                 if (!known_column(f.text))
-                    throw diag::UserError(
-                        m.where(line_no, f.col) + ": error: unknown column '" + f.text + "'" +
-                        diag::did_you_mean(f.text, plain_columns) +
-                        " (columns: id, model, tmax, dt, method, rtol, atol, set, ic, u, wind, "
-                        "set:NAME, ic:NAME, u:NAME)");
+                    throw diag::UserError(m.where(line_no, f.col) + ": error: unknown column '" +
+                                          f.text + "'" + diag::did_you_mean(f.text, plain_columns) +
+                                          " (columns: id, model, tmax, dt, method, rtol, atol, "
+                                          "set, ic, u, wind, aero, "
+                                          "set:NAME, ic:NAME, u:NAME)");
                 if (std::find(m.columns.begin(), m.columns.end(), f.text) != m.columns.end())
                     throw diag::UserError(m.where(line_no, f.col) + ": error: column '" + f.text +
                                           "' is given twice");
@@ -230,6 +230,12 @@ BatchCase case_of(const Manifest& m, const ManifestRow& row) {
                 c.sim.method = SimMethod::cvode;
             else if (!f.text.empty() && f.text != "rk4")
                 throw CaseError(at(f), "method must be rk4 or cvode, not '" + f.text + "'");
+        } else if (column == "aero") {
+            if (!f.text.empty()) {
+                c.sim.aero = resolved(m, f.text);
+                if (!readable(c.sim.aero))
+                    throw CaseError(at(f), "cannot read the rotor table '" + c.sim.aero + "'");
+            }
         } else if (column == "wind") {
             c.sim.wind = f.text;
             bool number_or_step = f.text.rfind("step:", 0) == 0;

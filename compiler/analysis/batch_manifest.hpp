@@ -46,7 +46,7 @@ struct Manifest {
 Manifest read_manifest(const std::string& path);
 
 /// One case: its id, the model file (resolved against the manifest's folder)
-/// and the options of `yamsc sim` it stands for.
+/// and the options of `yamsc sim` it stands for (files resolved likewise).
 struct BatchCase {
     std::string id;
     SimOptions sim;

@@ -49,7 +49,8 @@ eval, lin, trim and sim take --sid body=file.sid: the shape integrals of a flexi
 declared with `symbolic modes`, read from a SID file. Values accept `deg`: --set theta_t=5deg.
 sim starts from the model's `initial` block (zeros without one); --ic overrides single values.
 batch runs one sim per row of CASES.csv (columns id,model,tmax,dt and optionally method,rtol,
-atol,set,ic,u,wind,set:NAME,ic:NAME,u:NAME; docs/batch.md); a rerun runs only unfinished cases.
+atol,set,ic,u,wind,aero,set:NAME,ic:NAME,u:NAME; docs/batch.md); a rerun runs only the cases
+not finished yet.
 Exit status: 0 ok, 1 error in the model or its inputs, 2 usage error (also an output that
 names an input or another output: nothing is written), 70 internal error.
 )";

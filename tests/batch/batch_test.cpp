@@ -131,6 +131,44 @@ TEST_CASE("a batch case writes the file `yamsc sim` writes with the same options
     CHECK(summary.rfind("row,id,status,final,message,wall_s\n1,plain,ok,\"time=3,x=", 0) == 0);
 }
 
+TEST_CASE("wind and rotor table files are relative to the manifest; a missing one is located") {
+    const std::string dir = scratch_dir("batch", "wind");
+    const std::string operating = source_dir + "/models/nrel5mw_land_operating.mbd";
+    const std::string table = source_dir + "/models/data/Cp_Ct_Cq.NREL5MW.txt";
+    run_in(dir, "mkdir -p dlc && cp '" + table + "' dlc/table.txt");
+    write_file(dir + "/dlc/gust.csv", "time,V_wind\n0,8\n0.5,8\n1,12\n2,10\n");
+    write_file(dir + "/dlc/cases.csv", "id,model,tmax,dt,aero,wind,set:air_density\n"
+                                       "steady," +
+                                           operating +
+                                           ",2,0.01,table.txt,9,\n"
+                                           "gust," +
+                                           operating +
+                                           ",2,0.01,table.txt,gust.csv,1.1\n"
+                                           "lost," +
+                                           operating + ",2,0.01,table.txt,lost.csv,\n");
+    const Run b = run_in(dir, "$Y batch dlc/cases.csv -o out");
+    INFO(b.err);
+    CHECK(b.status == 1);
+    CHECK(has(b.out, "3 cases, 2 ok, 1 failed"));
+    const std::size_t wind_col = std::string("lost,").size() + operating.size() +
+                                 std::string(",2,0.01,table.txt,").size() + 1;
+    CHECK(has(b.err, "dlc/cases.csv:4:" + std::to_string(wind_col) +
+                         ": error: cannot read the wind file 'dlc/lost.csv'"));
+    const Run s = run_in(dir, "cd dlc && $Y sim " + operating +
+                                  " --tmax 2 --dt 0.01 --aero table.txt --wind 9 -o ../steady.csv "
+                                  "&& $Y sim " +
+                                  operating +
+                                  " --tmax 2 --dt 0.01 --aero table.txt --wind gust.csv "
+                                  "--set air_density=1.1 -o ../gust.csv");
+    INFO(s.err);
+    REQUIRE(s.status == 0);
+    for (const char* id : {"steady", "gust"}) {
+        INFO(id);
+        CHECK(read_file(dir + "/out/" + id + ".csv") == read_file(dir + "/" + id + ".csv"));
+    }
+    CHECK(read_file(dir + "/out/gust.csv") != read_file(dir + "/out/steady.csv"));
+}
+
 TEST_CASE("threads, shards and a run killed with SIGKILL and resumed give one run's files") {
     const int n = 400;
     const std::string dir = scratch_dir("batch", "sweep");
