@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <dirent.h>
+#include <fstream>
 #include <map>
 #include <mutex>
 #include <ostream>
@@ -166,6 +167,13 @@ void remove_leftovers(const std::string& dir, const std::vector<std::string>& id
     }
 }
 
+std::string read_all(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
 /// A failed case leaves no result: a file from an earlier run of the row
 /// would look like its result.
 void forget(const std::string& dir, const std::string& id) {
@@ -255,6 +263,7 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
     // when compiled before.
     std::map<std::string, std::optional<Loaded>> models;
     std::map<std::string, std::string> model_errors;
+    std::map<std::string, std::string> file_digests; // wind files and rotor tables
     for (Job& job : jobs) {
         if (job.done) continue;
         const std::vector<std::string> routines = sim_routines(job.c->sim);
@@ -286,7 +295,13 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
             continue;
         }
         job.model = &*models[key];
-        job.digest = digest(job.c->text + "model-content=" + job.model->digest + "\n");
+        std::string content = job.c->text + "model-content=" + job.model->digest + "\n";
+        for (const std::string& file : job.c->files) {
+            auto [it, fresh] = file_digests.emplace(file, "");
+            if (fresh) it->second = digest(read_all(file));
+            content += "file-content=" + it->second + "\n";
+        }
+        job.digest = digest(content);
         if (::access((dir + "/" + job.c->id + ".csv").c_str(), R_OK) == 0)
             if (auto rec = read_record(dir + "/.records/" + job.c->id, job.digest)) {
                 job.summary.ok = true;

@@ -235,6 +235,7 @@ BatchCase case_of(const Manifest& m, const ManifestRow& row) {
                 c.sim.aero = resolved(m, f.text);
                 if (!readable(c.sim.aero))
                     throw CaseError(at(f), "cannot read the rotor table '" + c.sim.aero + "'");
+                c.files.push_back(c.sim.aero);
             }
         } else if (column == "wind") {
             c.sim.wind = f.text;
@@ -248,6 +249,7 @@ BatchCase case_of(const Manifest& m, const ManifestRow& row) {
                 c.sim.wind = resolved(m, f.text);
                 if (!readable(c.sim.wind))
                     throw CaseError(at(f), "cannot read the wind file '" + c.sim.wind + "'");
+                c.files.push_back(c.sim.wind);
             }
         } else if (f.text.empty()) {
             continue; // an optional value not given for this case

@@ -53,7 +53,8 @@ struct BatchCase {
     /// Where each --set/--ic/--u name was given, to locate an unknown name.
     std::map<std::string, std::string> set_at, ic_at, u_at;
     std::string model_at, row_at;
-    std::string text; // the row's content as name=value lines: what its digest covers
+    std::string text;               // the row's content as name=value lines: what its digest covers
+    std::vector<std::string> files; // the wind file and rotor table read (their content too)
 };
 
 /// The case of a well-formed row; throws CaseError at the offending field.

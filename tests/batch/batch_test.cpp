@@ -167,6 +167,11 @@ TEST_CASE("wind and rotor table files are relative to the manifest; a missing on
         CHECK(read_file(dir + "/out/" + id + ".csv") == read_file(dir + "/" + id + ".csv"));
     }
     CHECK(read_file(dir + "/out/gust.csv") != read_file(dir + "/out/steady.csv"));
+    // A wind file that changed reruns the cases that read it.
+    write_file(dir + "/dlc/gust.csv", "time,V_wind\n0,8\n0.5,8\n1,13\n2,10\n");
+    const Run again = run_in(dir, "$Y batch dlc/cases.csv -o out");
+    CHECK(has(again.err, "3 cases, 1 done before, 1 to run"));
+    CHECK(read_file(dir + "/out/gust.csv") != read_file(dir + "/gust.csv"));
 }
 
 TEST_CASE("threads, shards and a run killed with SIGKILL and resumed give one run's files") {
