@@ -29,6 +29,7 @@
 #include <sched.h>
 #include <set>
 #include <sstream>
+#include <streambuf>
 #include <sys/stat.h>
 #include <thread>
 #include <unistd.h>
@@ -174,6 +175,38 @@ std::string read_all(const std::string& path) {
     return text.str();
 }
 
+/// The lines of rendered diagnostics that state an error (not the source
+/// lines and carets), as one line.
+std::string error_lines(const std::string& diagnostics) {
+    std::istringstream in(diagnostics);
+    std::string out;
+    for (std::string line; std::getline(in, line);)
+        if (line.find("error: ") != std::string::npos) out += (out.empty() ? "" : " | ") + line;
+    return out;
+}
+
+/// A stream buffer writing to two others.
+class Tee : public std::streambuf {
+public:
+    Tee(std::streambuf* a, std::streambuf* b) : a_(a), b_(b) {}
+
+protected:
+    int overflow(int c) override {
+        if (c == traits_type::eof()) return traits_type::not_eof(c);
+        a_->sputc(static_cast<char>(c));
+        b_->sputc(static_cast<char>(c));
+        return c;
+    }
+    std::streamsize xsputn(const char* s, std::streamsize n) override {
+        a_->sputn(s, n);
+        return b_->sputn(s, n);
+    }
+    int sync() override { return a_->pubsync() | b_->pubsync(); }
+
+private:
+    std::streambuf *a_, *b_;
+};
+
 /// A failed case leaves no result: a file from an earlier run of the row
 /// would look like its result.
 void forget(const std::string& dir, const std::string& id) {
@@ -269,17 +302,21 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
         const std::vector<std::string> routines = sim_routines(job.c->sim);
         const std::string key = job.c->sim.model + "\n" + join(routines);
         if (!models.count(key)) {
+            // Diagnostics and the compile notice on stderr as they come, and
+            // kept for the summary of the rows that use the model.
             std::ostringstream diags;
+            Tee tee(err.rdbuf(), diags.rdbuf());
+            std::ostream both(&tee);
             try {
-                models[key] = load_unbound(job.c->sim.model, "", false, diags, {}, routines);
+                models[key] = load_unbound(job.c->sim.model, "", false, both, {}, routines);
             } catch (const std::exception& e) {
-                diags << "yamsc: error: " << e.what() << "\n";
+                both << "yamsc: error: " << e.what() << "\n";
                 models[key] = std::nullopt;
             }
+            both.flush();
             if (!models[key]) {
-                err << diags.str();
                 model_errors[key] =
-                    "the model '" + job.c->sim.model + "' has errors: " + one_line(diags.str());
+                    "the model '" + job.c->sim.model + "' has errors: " + error_lines(diags.str());
             }
         }
         if (!models[key]) {

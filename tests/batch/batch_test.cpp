@@ -251,12 +251,14 @@ TEST_CASE("bad rows are reported at their place; the other cases run; exit statu
                                  "short,MODEL,1\n"
                                  "bad/id,MODEL,1,0.1,,0\n"
                                  "summary,MODEL,1,0.1,,0\n"
-                                 "good2,MODEL,1,0.1,M_F=7e6,0.03\n";
+                                 "good2,MODEL,1,0.1,M_F=7e6,0.03\n"
+                                 "broken,broken.mbd,1,0.1,,0\n";
+    write_file(dir + "/broken.mbd", "model broken\ndof phi_y\nparam k = q\n");
     write_file(dir + "/cases.csv", replace_all(manifest, "MODEL", floating));
     const Run r = run_in(dir, "$Y batch cases.csv --threads 2");
     INFO(r.err);
     CHECK(r.status == 1);
-    CHECK(has(r.out, "9 cases, 2 ok, 7 failed"));
+    CHECK(has(r.out, "10 cases, 2 ok, 8 failed"));
     const std::string m = "cases.csv:";
     // M_Q's column: after the id, the model, the times, the quote and M_F=7e6,.
     const std::size_t q_col = std::string("unknown,").size() + floating.size() +
@@ -272,6 +274,9 @@ TEST_CASE("bad rows are reported at their place; the other cases run; exit statu
     CHECK(has(summary, "\n1,good1,ok,"));
     CHECK(has(r.err, m + "10:1: error: the id 'summary' would name the summary's file"));
     CHECK(has(summary, "\n9,good2,ok,"));
+    // A model with errors: its diagnostics once on stderr, in the summary for its rows.
+    CHECK(has(summary, "\n10,broken,error,,cases.csv:12:8: error: the model 'broken.mbd' has "
+                       "errors: broken.mbd:3:11: error: unknown name 'q'"));
     CHECK(has(summary, "\n3,missing,error,,cases.csv:5:9: error: cannot read the model"));
     CHECK(files_of(dir + "/cases.out", ".csv") ==
           std::vector<std::string>{"good1.csv", "good2.csv"});
