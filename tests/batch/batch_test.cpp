@@ -252,13 +252,14 @@ TEST_CASE("bad rows are reported at their place; the other cases run; exit statu
                                  "bad/id,MODEL,1,0.1,,0\n"
                                  "summary,MODEL,1,0.1,,0\n"
                                  "good2,MODEL,1,0.1,M_F=7e6,0.03\n"
-                                 "broken,broken.mbd,1,0.1,,0\n";
+                                 "broken,broken.mbd,1,0.1,,0\n"
+                                 "open,MODEL,1,0.1,\"M_F=7e6,0\n";
     write_file(dir + "/broken.mbd", "model broken\ndof phi_y\nparam k = q\n");
     write_file(dir + "/cases.csv", replace_all(manifest, "MODEL", floating));
     const Run r = run_in(dir, "$Y batch cases.csv --threads 2");
     INFO(r.err);
     CHECK(r.status == 1);
-    CHECK(has(r.out, "10 cases, 2 ok, 8 failed"));
+    CHECK(has(r.out, "11 cases, 2 ok, 9 failed"));
     const std::string m = "cases.csv:";
     // M_Q's column: after the id, the model, the times, the quote and M_F=7e6,.
     const std::size_t q_col = std::string("unknown,").size() + floating.size() +
@@ -270,6 +271,10 @@ TEST_CASE("bad rows are reported at their place; the other cases run; exit statu
     CHECK(has(r.err, m + "7:1: error: the id 'good1' is already used at cases.csv:3:1"));
     CHECK(has(r.err, m + "8:1: error: 3 fields, the header has 6"));
     CHECK(has(r.err, m + "9:1: error: the id 'bad/id' is not a file name"));
+    const std::size_t quote_col =
+        std::string("open,").size() + floating.size() + std::string(",1,0.1,").size() + 1;
+    CHECK(has(r.err,
+              m + "13:" + std::to_string(quote_col) + ": error: the quoted field is not closed"));
     const std::string summary = read_file(dir + "/cases.out/summary.csv");
     CHECK(has(summary, "\n1,good1,ok,"));
     CHECK(has(r.err, m + "10:1: error: the id 'summary' would name the summary's file"));
