@@ -2,7 +2,7 @@
 // (sim_case.hpp), on a pool of threads in one process. Each distinct model
 // is loaded once and its compiled library shared by every thread: the
 // generated routines keep no state of their own (pure functions of their
-// arguments), and each case binds its parameters in its own view.
+// arguments), and each thread binds each case's parameters in its own copy.
 #include "analysis/batch_manifest.hpp"
 #include "analysis/batch_summary.hpp"
 #include "analysis/loaded_model.hpp"
@@ -88,11 +88,12 @@ void check_names(const BatchCase& c, const Loaded& l) {
     check(c.u_at, l.library->input_names(), "input", false);
 }
 
-/// Runs one case; its result file is complete once renamed into place.
-CaseSummary run_case(const Job& job, const std::string& result_path) {
+/// Runs one case on `l`, this thread's copy of the case's model (the library
+/// shared, the parameters rebound here); its result file is complete once
+/// renamed into place.
+CaseSummary run_case(const Job& job, Loaded& l, const std::string& result_path) {
     const BatchCase& c = *job.c;
-    check_names(c, *job.model);
-    Loaded l = *job.model; // shares the library; the parameters are this case's
+    check_names(c, l);
     try {
         bind_parameters(l, c.sim.set);
     } catch (const std::exception& e) {
@@ -375,12 +376,16 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
     Progress progress(err, pending.size(), o.quiet);
     std::atomic<std::size_t> next{0};
     auto worker = [&]() {
+        // Each thread's own copy of each model (copied once, not per case).
+        std::map<const Loaded*, Loaded> mine;
         for (std::size_t i = next++; i < pending.size(); i = next++) {
             Job& job = *pending[i];
+            auto model = mine.find(job.model);
+            if (model == mine.end()) model = mine.emplace(job.model, *job.model).first;
             const auto start = Clock::now();
             const std::string result = dir + "/" + job.c->id + ".csv";
             try {
-                CaseSummary s = run_case(job, result);
+                CaseSummary s = run_case(job, model->second, result);
                 s.row = job.summary.row;
                 s.id = job.summary.id;
                 s.wall_s = since(start);

@@ -5,6 +5,7 @@
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
+#include <dlfcn.h>
 #include <fcntl.h>
 #include <fstream>
 #include <sstream>
@@ -94,7 +95,15 @@ std::string program_identity() {
     char self[PATH_MAX];
     const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
     const std::string exe = n > 0 ? std::string(self, static_cast<std::size_t>(n)) : "";
-    return std::string("yamsc ") + YAMSC_VERSION + " " + file_stamp(exe);
+    std::string id = std::string("yamsc ") + YAMSC_VERSION + " " + file_stamp(exe);
+    // yamsc inside another program (the Python module): the object this code
+    // is in is the build that matters, not the interpreter.
+    Dl_info info{};
+    char object[PATH_MAX];
+    if (::dladdr(reinterpret_cast<void*>(&program_identity), &info) && info.dli_fname &&
+        ::realpath(info.dli_fname, object) && exe != object)
+        id += " in " + file_stamp(object);
+    return id;
 }
 
 ModelCache::ModelCache(std::string folder) : folder_(std::move(folder)) {

@@ -87,7 +87,7 @@ std::optional<Loaded> load_unbound(const std::string& path, const std::string& s
     // --sid values first, so that --set still overrides them.
     if (!sid_spec.empty()) l.sid_values = sid_parameter_values(*fe.model, sid_spec);
     l.digest = id.content_digest;
-    l.front = std::make_shared<const FrontEnd>(std::move(fe));
+    l.front = std::move(fe);
     return l;
 }
 
@@ -99,6 +99,13 @@ void bind_parameters(Loaded& l, const std::vector<Assignment>& set) {
     all.insert(all.end(), set.begin(), set.end());
     l.params = bind_named(l.library->param_names(), defaults, all, "parameter");
     l.view = l.library->view(l.params);
+}
+
+Loaded load_library(const std::string& path, const std::vector<Assignment>& set) {
+    Loaded l;
+    l.library = std::make_unique<runtime::SharedModel>(path);
+    bind_parameters(l, set);
+    return l;
 }
 
 std::vector<std::string> linear_model_routines() {
@@ -117,10 +124,11 @@ void operating_point(const Loaded& l, const std::vector<double>& params,
     q.assign(static_cast<std::size_t>(v.nq), 0.0);
     qd.assign(static_cast<std::size_t>(v.nq), 0.0);
     u.assign(static_cast<std::size_t>(v.nu), 0.0);
-    if (const auto& point = l.front->model->operating_point) {
-        q = evaluate_at(l, params, point->q, v.dof_names, "linearize");
-        qd = evaluate_at(l, params, point->qd, primed(v.dof_names), "linearize");
-        u = evaluate_at(l, params, point->u, v.input_names, "linearize");
+    if (l.front.model && l.front.model->operating_point) {
+        const auto& op = *l.front.model->operating_point;
+        q = evaluate_at(l, params, op.q, v.dof_names, "linearize");
+        qd = evaluate_at(l, params, op.qd, primed(v.dof_names), "linearize");
+        u = evaluate_at(l, params, op.u, v.input_names, "linearize");
     }
     for (const Assignment& a : at) {
         const std::string channel = a.name + std::string(static_cast<std::size_t>(a.primes), '\'');
@@ -146,7 +154,8 @@ void initial_state(const Loaded& l, const std::vector<Assignment>& ic, std::vect
     const runtime::ModelView& v = l.view;
     q.assign(static_cast<std::size_t>(v.nq), 0.0);
     qd.assign(static_cast<std::size_t>(v.nq), 0.0);
-    if (const auto& init = l.front->model->initial_state) {
+    if (l.front.model && l.front.model->initial_state) {
+        const auto& init = l.front.model->initial_state;
         q = evaluate_at(l, l.params, init->q, v.dof_names, "initial");
         qd = evaluate_at(l, l.params, init->qd, primed(v.dof_names), "initial");
     }

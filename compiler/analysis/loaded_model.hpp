@@ -17,14 +17,14 @@
 namespace yamsc::driver {
 
 /// A model compiled and bound to its parameters, ready to run. Copies share
-/// the library and the checked model (both read-only), so `yamsc batch` loads a
-/// model once and binds each case's parameters in its own copy.
+/// the library (read-only), so `yamsc batch` loads a model once and binds
+/// each case's parameters in a copy per thread.
 struct Loaded {
     std::shared_ptr<const runtime::SharedModel> library;
     runtime::ModelView view;
     std::vector<double> params;
-    // The checked model (its equations are derived only to compile it).
-    std::shared_ptr<const FrontEnd> front;
+    FrontEnd front; // the checked model (its equations are derived only to compile it);
+                    // no model for a library loaded by load_library
     std::vector<Assignment> sid_values; // from --sid, bound before --set
     std::string digest;                 // content_digest of the model text and data
 };
@@ -48,6 +48,11 @@ std::optional<Loaded> load_unbound(const std::string& path, const std::string& s
 /// Binds the parameters again: the model's defaults, the --sid values, then
 /// `set` (as `load` does); a view of the same library with those values.
 void bind_parameters(Loaded& l, const std::vector<Assignment>& set);
+
+/// A model library built beforehand (abi_export.hpp's YAMSC_EXPORT_MODEL, e.g.
+/// by CMake) bound to its defaults and `set`. It has no front end: no `initial`
+/// or `linearize` block, so both points are zeros unless given.
+Loaded load_library(const std::string& path, const std::vector<Assignment>& set);
 
 /// The routines `lin` and `trim` call: the second-order model and A.
 std::vector<std::string> linear_model_routines();

@@ -105,10 +105,11 @@ int rotor_campbell(const Loaded& l, const LinOptions& o, std::ostream& out) {
         out << csv;
     } else {
         runtime::write_file_atomically(o.output, csv);
-        out << "wrote " << rows.size() << " rotor speeds' modes to " << o.output << "\n";
+        out << "wrote " << rows.size() << " values' modes (" << sweep.name << ") to " << o.output
+            << "\n";
     }
     if (!o.plot.empty()) {
-        const std::string title = l.front->model->name + ": MBC3 modes against " + sweep.name;
+        const std::string title = l.front.model->name + ": MBC3 modes against " + sweep.name;
         runtime::write_file_atomically(
             o.plot, rotor_campbell_svg(title, sweep.name, rows, rotor_speed, !rate.empty()));
         out << "wrote " << o.plot << "\n";

@@ -5,6 +5,7 @@
 #include "analysis/compare.hpp"
 #include "analysis/controller_loop.hpp"
 #include "analysis/loaded_model.hpp"
+#include "analysis/openfast_lin_model.hpp"
 #include "analysis/rotor_aero_setup.hpp"
 #include "analysis/rotor_campbell.hpp"
 #include "analysis/rotor_modes.hpp"
@@ -70,7 +71,7 @@ int campbell(const Loaded& l, const LinOptions& o, std::ostream& out) {
         out << "wrote " << rows.size() << " rows to " << o.output << "\n";
     }
     if (!o.plot.empty()) {
-        const std::string title = l.front->model->name + ": modes against " + sweep.name;
+        const std::string title = l.front.model->name + ": modes against " + sweep.name;
         runtime::write_file_atomically(o.plot, campbell_svg(title, sweep.name, rows));
         out << "wrote " << o.plot << "\n";
     }
@@ -134,7 +135,7 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     }
     if (!o.plot.empty()) {
         PlotOptions plot;
-        plot.title = loaded->front->model->name + (o.linear ? " (linear)" : "");
+        plot.title = loaded->front.model->name + (o.linear ? " (linear)" : "");
         runtime::write_file_atomically(
             o.plot,
             svg_plot(plot_panels(table, reference ? &*reference : nullptr, comparison, o), plot));
@@ -144,13 +145,21 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
 }
 
 int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
-    const std::vector<NamedFile> outputs{{"-o", o.output}, {"--plot", o.plot}};
+    const bool lin_files = o.format == LinFormat::openfast_lin;
+    std::vector<NamedFile> outputs{{"-o", o.output}, {"--plot", o.plot}};
+    if (lin_files) {
+        // Every .lin file is an output: none may be an input or another output.
+        outputs.clear();
+        for (const std::string& path :
+             lin_file_paths(o.output, lin_files_per_azimuth(o) ? o.azimuths : 0))
+            outputs.push_back({"-o", path});
+    }
     std::vector<NamedFile> inputs = sid_files_of(o.sid);
     inputs.push_back({"the model", o.model});
     check_outputs(inputs, outputs);
     // The second-order model (M, F and its Jacobians) and, for the modes, A.
     std::vector<std::string> routines = linear_model_routines();
-    if (!o.aero.empty()) routines.push_back("outputs");
+    if (!o.aero.empty() || lin_files) routines.push_back("outputs");
     auto loaded = load(o.model, o.set, o.sid, false, err, outputs, routines);
     if (!loaded) return 1;
     if (o.sweep) return campbell(*loaded, o, out);
@@ -164,6 +173,7 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
         q = r.q;
         u = r.u;
     }
+    if (lin_files) write_openfast_lin(*loaded, v, o, q, qd, u, out, o.json);
     if (o.mbc3) {
         const RotorModesRequest r = rotor_request(v, q, qd, u, o.azimuth, o.hold, o.azimuths);
         const std::vector<RotorMode> modes = rotor_modes(v, r);

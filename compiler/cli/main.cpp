@@ -30,6 +30,7 @@ const char* usage_text = R"(usage:
                       [--aero Cp_Ct_Cq.txt] [--wind V]
                       [--sweep NAME=FROM:STEP:TO [--schedule points.csv] [-o campbell.csv]
                                                  [--plot campbell.svg]]
+                      [--format openfast-lin -o case.lin [--azimuths N [--azimuth dof]]]
   yamsc trim MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--hold dof,..]
                        [--adjust input,..] [--aero Cp_Ct_Cq.txt] [--wind V] [--json]
   yamsc sim MODEL.mbd --tmax T --dt DT [--ic name=v,..] [--u name=v,..] [--set name=v,..]
@@ -190,9 +191,12 @@ int run(int argc, char** argv) {
     if (cmd == "lin") {
         Args a(argc, argv, 2,
                {"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot", "--hold", "--azimuths",
-                "--azimuth", "--aero", "--wind", "--adjust", "--schedule"},
+                "--azimuth", "--aero", "--wind", "--adjust", "--schedule", "--format"},
                {"--json", "--trim", "--mbc3"});
         LinOptions o;
+        o.format = choice(a, "--format", LinFormat::table,
+                          {{"table", LinFormat::table}, {"openfast-lin", LinFormat::openfast_lin}});
+        const bool lin_files = o.format == LinFormat::openfast_lin;
         o.model = a.model();
         o.trim = a.has("--trim");
         o.mbc3 = a.has("--mbc3");
@@ -203,17 +207,22 @@ int run(int argc, char** argv) {
         const double azimuths = a.number("--azimuths", o.azimuths);
         if (azimuths != std::floor(azimuths)) throw UsageError("--azimuths must be a whole number");
         o.azimuths = static_cast<int>(std::min(azimuths, 1e6));
-        if (!o.trim && !o.mbc3 && !o.hold.empty())
-            throw UsageError("--hold needs --trim or --mbc3");
-        if (!o.mbc3 && (a.has("--azimuths") || a.has("--azimuth")))
-            throw UsageError("--azimuths and --azimuth need --mbc3");
+        o.azimuths_given = a.has("--azimuths");
+        if (!o.trim && !o.mbc3 && !o.azimuths_given && !o.hold.empty())
+            throw UsageError("--hold needs --trim, --mbc3 or --azimuths");
+        if (!o.mbc3 && !lin_files && (a.has("--azimuths") || a.has("--azimuth")))
+            throw UsageError("--azimuths and --azimuth need --mbc3 or --format openfast-lin");
         if (o.azimuths < 1 || o.azimuths > 3600)
             throw UsageError("--azimuths must be between 1 and 3600");
         if (a.has("--sweep")) o.sweep = parse_sweep(a.get("--sweep"));
         o.output = a.get("-o");
         o.plot = a.get("--plot");
-        if (!o.sweep && (!o.output.empty() || !o.plot.empty()))
-            throw UsageError("lin writes files (-o, --plot) only for --sweep");
+        if (!o.sweep && !lin_files && (!o.output.empty() || !o.plot.empty()))
+            throw UsageError("lin writes files (-o, --plot) only for --sweep or --format");
+        if (lin_files && o.output.empty())
+            throw UsageError("--format openfast-lin needs -o FILE.lin");
+        if (lin_files && (o.sweep || !o.plot.empty()))
+            throw UsageError("--format openfast-lin does not take --sweep or --plot");
         o.at = a.assignments("--at");
         o.u = a.assignments("--u");
         o.set = a.assignments("--set");

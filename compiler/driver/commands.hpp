@@ -63,6 +63,9 @@ struct EvalOptions {
     bool json = true;
 };
 
+/// --format of `lin`: the modes as a table (or --json), or OpenFAST's .lin files too.
+enum class LinFormat { table, openfast_lin };
+
 struct LinOptions {
     std::string model;
     std::vector<Assignment> at, set, u;
@@ -71,8 +74,10 @@ struct LinOptions {
     std::vector<std::string> adjust; // --adjust: inputs trimmed to balance the spinning DOFs
     bool mbc3 = false;               // --mbc3: azimuth-averaged multi-blade coordinates
     int azimuths = 36;               // --azimuths: linearizations over a revolution
-    std::string azimuth;             // --azimuth: the DOF that turns the rotor
-    std::string sid;                 // --sid body=file.sid,..
+    bool azimuths_given = false;     // --azimuths given (openfast-lin: one file per azimuth)
+    LinFormat format = LinFormat::table; // --format openfast-lin: .lin files at -o
+    std::string azimuth;                 // --azimuth: the DOF that turns the rotor
+    std::string sid;                     // --sid body=file.sid,..
     bool json = false;
     std::optional<Sweep> sweep; // --sweep NAME=FROM:STEP:TO: a Campbell diagram
     std::string schedule;       // --schedule FILE: what moves with the swept value

@@ -1,9 +1,9 @@
 // Outputs never destroy anything. For every file a command writes (compile -o,
 // --header, --depfile in C++, C and LaTeX; sim -o and --plot; lin --sweep -o and
-// --plot; sid -o; from-openfast -o): a character device (made here with mknod,
-// when the test runs as root) stays a device, a FIFO stays a FIFO and its reader
-// gets the content, a symbolic link stays a link and its target gets the content.
-// An output that names an input (also through a link, a hard link or another
+// --plot; lin --format openfast-lin -o; sid -o; from-openfast -o): a character
+// device (made here with mknod, when the test runs as root) stays a device, a
+// FIFO stays a FIFO and its reader gets the content, a symbolic link stays a link and its target
+// gets the content. An output that names an input (also through a link, a hard link or another
 // spelling) or another output is a usage error that leaves every file as it
 // was, and a run that fails leaves the old outputs unchanged.
 #include "test_files.hpp"
@@ -117,6 +117,7 @@ const std::vector<Output> outputs{
     {"sim --plot", sim + " --plot {OUT}", "out.svg"},
     {"lin --sweep -o", sweep + " -o {OUT}", "sweep.csv"},
     {"lin --sweep --plot", sweep + " --plot {OUT}", "sweep.svg"},
+    {"lin --format openfast-lin -o", "lin in/model.mbd --format openfast-lin -o {OUT}", "m.lin"},
     {"sid -o", "sid --elastodyn-tower " + tower + " --length 87.6 -o {OUT}", "tower.sid"},
     {"from-openfast -o", "from-openfast in/NREL5MW_ED_Onshore.dat -o {OUT}", "turbine.mbd"},
 };
@@ -263,6 +264,8 @@ TEST_CASE("an output that is an input is a usage error, and every file stays as 
         {sweep + " -o out/s.csv --plot in/mast.sid", "--plot 'in/mast.sid' is the model's data"},
         {"lin in/symbolic.mbd --sweep g=0:5:10 --sid mast=in/other.sid -o in/other.sid",
          "-o 'in/other.sid' is the --sid file of body mast"},
+        {"lin in/model.mbd --format openfast-lin -o in/mast.sid",
+         "-o 'in/mast.sid' is the model's data file"},
         {"sid --elastodyn-tower " + tower + " --length 87.6 -o " + tower,
          "-o '" + tower + "' is --elastodyn-tower '" + tower + "'"},
         {deck + "in/NREL5MW_ED_Onshore.dat", "-o 'in/NREL5MW_ED_Onshore.dat' is the deck"},

@@ -1,0 +1,112 @@
+#include "model_handle.hpp"
+
+#include "diag/errors.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <sstream>
+
+namespace yamsc::python {
+
+namespace {
+
+/// Every routine of the ABI: Python may call any of them.
+std::vector<std::string> all_routines() {
+    return {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"};
+}
+
+/// `link length [m]` -> `m`: the bracket at the end of a doc comment.
+std::string unit_of(const std::string& doc) {
+    const std::size_t close = doc.find_last_not_of(" \t");
+    if (close == std::string::npos || doc[close] != ']') return "";
+    const std::size_t open = doc.rfind('[', close);
+    return open == std::string::npos ? "" : doc.substr(open + 1, close - open - 1);
+}
+
+template <class Item> const Item* named(const std::vector<Item>& items, const std::string& name) {
+    for (const Item& item : items)
+        if (item.name == name) return &item;
+    return nullptr;
+}
+
+} // namespace
+
+ModelHandle ModelHandle::from_source(const std::string& path, const std::string& sid,
+                                     const std::vector<driver::Assignment>& set,
+                                     std::vector<std::string> routines) {
+    if (routines.empty()) routines = all_routines();
+    std::ostringstream err;
+    std::optional<driver::Loaded> loaded;
+    try {
+        loaded = driver::load(path, set, sid, false, err, {}, routines);
+    } catch (const std::exception& e) {
+        // UserError (a --set name that does not exist), a failed compile, ...
+        throw LoadError(err.str() + e.what());
+    }
+    if (!loaded) throw LoadError(err.str());
+    ModelHandle h;
+    h.loaded_ = std::move(*loaded);
+    return h;
+}
+
+ModelHandle ModelHandle::from_library(const std::string& path,
+                                      const std::vector<driver::Assignment>& set) {
+    ModelHandle h;
+    try {
+        h.loaded_ = driver::load_library(path, set);
+    } catch (const std::exception& e) {
+        throw LoadError(e.what());
+    }
+    return h;
+}
+
+const runtime::ModelView& ModelHandle::view_at(const double* p) {
+    if (!p) return loaded_.view;
+    const std::size_t n = loaded_.params.size();
+    if (n == 0 || std::equal(p, p + n, loaded_.params.begin())) return loaded_.view;
+    if (other_params_.size() != n || !std::equal(p, p + n, other_params_.begin())) {
+        other_view_ = library().view(std::vector<double>(p, p + n));
+        other_params_.assign(p, p + n);
+    }
+    return other_view_;
+}
+
+std::vector<double> ModelHandle::params_at(const double* p) const {
+    return p ? std::vector<double>(p, p + loaded_.params.size()) : loaded_.params;
+}
+
+std::vector<Described> ModelHandle::described(const std::string& kind) const {
+    const runtime::SharedModel& lib = library();
+    const std::optional<model::Model>& m = loaded_.front.model;
+    std::vector<Described> out;
+    auto add = [&](const std::string& name, const std::string* doc) {
+        out.push_back({name, doc ? *doc : "", doc ? unit_of(*doc) : ""});
+    };
+    if (kind == "dofs") {
+        for (const std::string& n : lib.dof_names()) {
+            const auto* d = m ? named(m->dofs, n) : nullptr;
+            add(n, d ? &d->doc : nullptr);
+        }
+    } else if (kind == "inputs") {
+        for (const std::string& n : lib.input_names()) {
+            // u' and u'' are channels of the input u.
+            const auto* d = m ? named(m->inputs, n.substr(0, n.find('\''))) : nullptr;
+            add(n, d ? &d->doc : nullptr);
+        }
+    } else if (kind == "params") {
+        for (const std::string& n : lib.param_names()) {
+            const auto* d = m ? named(m->params, n) : nullptr;
+            add(n, d ? &d->doc : nullptr);
+        }
+    } else if (kind == "outputs") {
+        for (const std::string& n : lib.output_names()) {
+            const auto* d = m ? named(m->outputs, n) : nullptr;
+            add(n, d ? &d->doc : nullptr);
+        }
+    } else {
+        throw std::invalid_argument("unknown kind '" + kind + "'");
+    }
+    return out;
+}
+
+} // namespace yamsc::python
