@@ -34,15 +34,6 @@ std::vector<double> evaluate_at(const Loaded& l, const std::vector<double>& para
     return out;
 }
 
-/// The library's defaults overridden by `set`, and the view at them.
-void bind_parameters(Loaded& l, const std::vector<Assignment>& set) {
-    std::vector<std::optional<double>> defaults;
-    for (double v : l.library->default_params())
-        defaults.push_back(std::isnan(v) ? std::nullopt : std::optional<double>(v));
-    l.params = bind_named(l.library->param_names(), defaults, set, "parameter");
-    l.view = l.library->view(l.params);
-}
-
 std::vector<std::string> primed(const std::vector<std::string>& names) {
     std::vector<std::string> out;
     for (const std::string& n : names) out.push_back(n + "'");
@@ -55,6 +46,15 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
                            const std::string& sid_spec, bool verbose, std::ostream& err,
                            const std::vector<NamedFile>& outputs,
                            const std::vector<std::string>& routines) {
+    std::optional<Loaded> l = load_unbound(path, sid_spec, verbose, err, outputs, routines);
+    if (l) bind_parameters(*l, set);
+    return l;
+}
+
+std::optional<Loaded> load_unbound(const std::string& path, const std::string& sid_spec,
+                                   bool verbose, std::ostream& err,
+                                   const std::vector<NamedFile>& outputs,
+                                   const std::vector<std::string>& routines) {
     diag::Diagnostics diags;
     auto progress = [&](const std::string& s) {
         if (verbose) err << "yamsc: " << s << "\n";
@@ -85,12 +85,20 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
         return std::nullopt;
     }
     // --sid values first, so that --set still overrides them.
-    std::vector<Assignment> all =
-        sid_spec.empty() ? std::vector<Assignment>{} : sid_parameter_values(*fe.model, sid_spec);
-    all.insert(all.end(), set.begin(), set.end());
-    bind_parameters(l, all);
+    if (!sid_spec.empty()) l.sid_values = sid_parameter_values(*fe.model, sid_spec);
+    l.digest = id.content_digest;
     l.front = std::move(fe);
     return l;
+}
+
+void bind_parameters(Loaded& l, const std::vector<Assignment>& set) {
+    std::vector<std::optional<double>> defaults;
+    for (double v : l.library->default_params())
+        defaults.push_back(std::isnan(v) ? std::nullopt : std::optional<double>(v));
+    std::vector<Assignment> all = l.sid_values;
+    all.insert(all.end(), set.begin(), set.end());
+    l.params = bind_named(l.library->param_names(), defaults, all, "parameter");
+    l.view = l.library->view(l.params);
 }
 
 Loaded load_library(const std::string& path, const std::vector<Assignment>& set) {
