@@ -25,6 +25,23 @@ int find(const std::vector<std::string>& names, const std::string& name, bool re
 
 } // namespace
 
+Actuators actuators_of(const Loaded& l) {
+    auto tau = [&](const char* name) {
+        const int i = l.library->param_index(name);
+        if (i < 0) return 0.0;
+        const double value = l.params[static_cast<std::size_t>(i)];
+        if (!(value >= 0) || !std::isfinite(value))
+            throw diag::UserError(std::string("the actuator time constant ") + name +
+                                  " must be 0 (ideal) or positive [s]");
+        return value;
+    };
+    return {tau("pitch_actuator_tau"), tau("torque_actuator_tau")};
+}
+
+double actuator_lag(double from, double to, double seconds, double tau) {
+    return tau > 0 ? to + (from - to) * std::exp(-seconds / tau) : to;
+}
+
 std::string output_root_of(const std::string& output) {
     if (output.empty()) return "yamsc";
     const auto slash = output.find_last_of('/');
@@ -34,11 +51,10 @@ std::string output_root_of(const std::string& output) {
                : output;
 }
 
-runtime::SimulationResult simulate_with_controller(const runtime::ModelView& v,
-                                                   const runtime::SimulationOptions& options,
-                                                   const std::string& library,
-                                                   const std::string& input_file,
-                                                   const std::string& output_root) {
+runtime::SimulationResult
+simulate_with_controller(const runtime::ModelView& v, const runtime::SimulationOptions& options,
+                         const std::string& library, const std::string& input_file,
+                         const std::string& output_root, const Actuators& actuators) {
     const int pitch = find(v.input_names, "pitch", true, "input");
     const int torque = find(v.input_names, "gen_torque", true, "input");
     const int wind = find(v.input_names, "V_wind", false, "input");
@@ -60,32 +76,34 @@ runtime::SimulationResult simulate_with_controller(const runtime::ModelView& v,
     const runtime::TimeGrid grid(options.t_start, options.t_end, options.dt);
     std::vector<double> x = options.x0, u(static_cast<std::size_t>(v.nu)),
                         y(static_cast<std::size_t>(v.ny));
-    runtime::ControllerDemands demand;
+    // What the actuators apply (the model's inputs), from --u at the start.
+    runtime::ControllerDemands applied;
     {
         base(options.t_start, u.data());
-        demand.pitch = u[static_cast<std::size_t>(pitch)];
-        demand.gen_torque = u[static_cast<std::size_t>(torque)];
+        applied.pitch = u[static_cast<std::size_t>(pitch)];
+        applied.gen_torque = u[static_cast<std::size_t>(torque)];
     }
     runtime::SimulationResult result;
     for (std::size_t k = 0; k + 1 < grid.size(); ++k) {
         const double t = grid[k];
-        // measurements at t, with the demands in force
+        // measurements at t, with the actuators' inputs in force
         base(t, u.data());
-        u[static_cast<std::size_t>(pitch)] = demand.pitch;
-        u[static_cast<std::size_t>(torque)] = demand.gen_torque;
+        u[static_cast<std::size_t>(pitch)] = applied.pitch;
+        u[static_cast<std::size_t>(torque)] = applied.gen_torque;
         v.outputs(t, x.data(), x.data() + nq, u.data(), y.data());
         runtime::ControllerMeasurements m;
         m.time = t;
         m.step = grid.step();
-        m.pitch = demand.pitch;
+        m.pitch = applied.pitch;
         m.gen_speed = y[static_cast<std::size_t>(gen_speed)] * pi / 30;
         m.rotor_speed = y[static_cast<std::size_t>(rotor_speed)];
-        m.gen_torque = demand.gen_torque;
+        m.gen_torque = applied.gen_torque;
         m.mech_power = m.gen_torque * m.gen_speed;
         m.power = power >= 0 ? y[static_cast<std::size_t>(power)] * 1e3 : m.mech_power;
         m.wind = wind >= 0 ? u[static_cast<std::size_t>(wind)] : 0.0;
         m.azimuth =
             azimuth >= 0 ? std::fmod(y[static_cast<std::size_t>(azimuth)], 360.0) * pi / 180 : 0.0;
+        runtime::ControllerDemands demand;
         try {
             demand = controller->call(m);
         } catch (const std::runtime_error& e) {
@@ -97,12 +115,16 @@ runtime::SimulationResult simulate_with_controller(const runtime::ModelView& v,
         step.t_end = grid[k + 1];
         step.dt = grid[k + 1] - t;
         step.x0 = x;
-        const runtime::ControllerDemands held = demand;
-        step.u_of_t = [&base, held, pitch, torque](double time, double* out) {
+        // The demands held over the step, through the actuators.
+        const runtime::ControllerDemands from = applied, to = demand;
+        const Actuators a = actuators;
+        step.u_of_t = [&base, from, to, a, t, pitch, torque](double time, double* out) {
             base(time, out);
-            out[pitch] = held.pitch;
-            out[torque] = held.gen_torque;
+            out[pitch] = actuator_lag(from.pitch, to.pitch, time - t, a.pitch_tau);
+            out[torque] = actuator_lag(from.gen_torque, to.gen_torque, time - t, a.torque_tau);
         };
+        applied.pitch = actuator_lag(from.pitch, to.pitch, step.dt, a.pitch_tau);
+        applied.gen_torque = actuator_lag(from.gen_torque, to.gen_torque, step.dt, a.torque_tau);
         runtime::SimulationResult r = runtime::simulate(v, step);
         const std::size_t first = k == 0 ? 0 : 1; // the start row is the previous end
         if (k == 0) {

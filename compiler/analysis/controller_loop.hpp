@@ -7,6 +7,10 @@
 // rotor_speed [rad/s] and GenSpeed [rpm], and optionally Azimuth [deg],
 // GenPwr [kW] and the input V_wind. The controller's output name is
 // `output_root`.SrvD, as OpenFAST names it (ROSCO writes `output_root`.RO.dbg).
+// The controller measures the actuators' outputs (the blade pitch and the
+// generator torque applied), as it would on a turbine.
+#include "analysis/loaded_model.hpp"
+
 #include <yamsc/model_view.hpp>
 #include <yamsc/simulation.hpp>
 
@@ -14,11 +18,25 @@
 
 namespace yamsc::driver {
 
-runtime::SimulationResult simulate_with_controller(const runtime::ModelView& view,
-                                                   const runtime::SimulationOptions& options,
-                                                   const std::string& library,
-                                                   const std::string& input_file,
-                                                   const std::string& output_root = "yamsc");
+/// The actuators between the controller's demands and the model's inputs:
+/// first-order lags with these time constants [s], or ideal (0: the demand
+/// acts at once). A model chooses them with the parameters
+/// `pitch_actuator_tau` and `torque_actuator_tau` (absent: ideal).
+struct Actuators {
+    double pitch_tau = 0, torque_tau = 0;
+};
+
+/// The actuators of a loaded model (its parameters as bound).
+Actuators actuators_of(const Loaded& l);
+
+/// The input of a first-order actuator `seconds` after it stood at `from`,
+/// with the demand `to` held since (exact for a held demand).
+double actuator_lag(double from, double to, double seconds, double tau);
+
+runtime::SimulationResult
+simulate_with_controller(const runtime::ModelView& view, const runtime::SimulationOptions& options,
+                         const std::string& library, const std::string& input_file,
+                         const std::string& output_root = "yamsc", const Actuators& actuators = {});
 
 /// The root of a run's files: `output` without its extension ("yamsc" when empty).
 std::string output_root_of(const std::string& output);

@@ -74,7 +74,7 @@ SimRun simulate_case(const Loaded& l, const SimOptions& o, std::ostream& out, st
     run.result = o.controller.empty()
                      ? runtime::simulate(v, s, progress)
                      : simulate_with_controller(v, s, o.controller, o.controller_input,
-                                                output_root_of(o.output));
+                                                output_root_of(o.output), actuators_of(l));
     return run;
 }
 

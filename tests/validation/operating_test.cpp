@@ -222,6 +222,34 @@ TEST_CASE("the NREL 5-MW baseline controller in the loop (sim --controller)") {
     CHECK(tail_mean(t, "BldPitch1", 50) == 0.0);
 }
 
+TEST_CASE("actuators: a first-order pitch lag between the controller's demand and the blades") {
+    // 16 m/s from the model's initial state: the baseline controller's first
+    // demand d0 is the same with and without the lag (same measurements at
+    // t = 0, the applied pitch a0 = 11.5 deg); the ideal run applies d0 over
+    // the first step, the lagged one a0 + (d0 - a0) (1 - exp(-dt / tau)).
+    const std::string u = "pitch=11.5deg,gen_torque=43094";
+    const Table ideal = run("actuator_ideal", "16", "", u, 10, YAMSC_BASELINE_DISCON);
+    const Table zero =
+        run("actuator_zero", "16", "pitch_actuator_tau=0", u, 10, YAMSC_BASELINE_DISCON);
+    const Table lagged =
+        run("actuator_lag", "16", "pitch_actuator_tau=0.3", u, 10, YAMSC_BASELINE_DISCON);
+    const int p = ideal.find("BldPitch1");
+    REQUIRE(p >= 0);
+    const auto& pi_ideal = ideal.data[static_cast<std::size_t>(p)];
+    const auto& pi_lag = lagged.data[static_cast<std::size_t>(p)];
+    CHECK(zero.data[static_cast<std::size_t>(p)] == pi_ideal); // tau = 0: the ideal actuator
+    const double dt = 0.02, a0 = 11.5, d0 = pi_ideal[1];
+    REQUIRE(std::fabs(d0 - a0) > 1e-3); // the controller moves the pitch at once
+    CHECK(pi_lag[1] == doctest::Approx(a0 + (d0 - a0) * (1 - std::exp(-dt / 0.3))).epsilon(1e-9));
+    // the lag slows the pitch: its largest rate over the run is lower
+    auto max_rate = [&](const std::vector<double>& x) {
+        double r = 0;
+        for (std::size_t k = 1; k < x.size(); ++k) r = std::max(r, std::fabs(x[k] - x[k - 1]) / dt);
+        return r;
+    };
+    CHECK(max_rate(pi_lag) < max_rate(pi_ideal));
+}
+
 TEST_CASE("the baseline controller's torque regions and pitch loop (DISCON called directly)") {
     // Jonkman 2009, ch. 7: region 2 K w^2 with K = 2.332287 N m s^2, region 3
     // constant power 5296610 W, region 1 1/2 the line from cut-in (70.16 rad/s).
