@@ -62,6 +62,8 @@ simulate_with_controller(const runtime::ModelView& v, const runtime::SimulationO
     const int gen_speed = find(v.output_names, "GenSpeed", true, "output");
     const int azimuth = find(v.output_names, "Azimuth", false, "output");
     const int power = find(v.output_names, "GenPwr", false, "output");
+    const int fa_acc = find(v.output_names, "YawBrTAxp", false, "output");
+    const int ss_acc = find(v.output_names, "YawBrTAyp", false, "output");
 
     std::unique_ptr<runtime::DisconController> controller;
     try {
@@ -101,6 +103,8 @@ simulate_with_controller(const runtime::ModelView& v, const runtime::SimulationO
         m.mech_power = m.gen_torque * m.gen_speed;
         m.power = power >= 0 ? y[static_cast<std::size_t>(power)] * 1e3 : m.mech_power;
         m.wind = wind >= 0 ? u[static_cast<std::size_t>(wind)] : 0.0;
+        m.tower_top_fa_acc = fa_acc >= 0 ? y[static_cast<std::size_t>(fa_acc)] : 0.0;
+        m.tower_top_ss_acc = ss_acc >= 0 ? y[static_cast<std::size_t>(ss_acc)] : 0.0;
         m.azimuth =
             azimuth >= 0 ? std::fmod(y[static_cast<std::size_t>(azimuth)], 360.0) * pi / 180 : 0.0;
         runtime::ControllerDemands demand;

@@ -5,7 +5,8 @@
 // generator torque demands are held until the next call. The model provides
 // (by name) the inputs pitch [rad] and gen_torque [N m], the outputs
 // rotor_speed [rad/s] and GenSpeed [rpm], and optionally Azimuth [deg],
-// GenPwr [kW] and the input V_wind. The controller's output name is
+// GenPwr [kW], YawBrTAxp and YawBrTAyp [m/s^2] (the tower-top accelerations,
+// records 53 and 54; 0 without them) and the input V_wind. The controller's output name is
 // `output_root`.SrvD, as OpenFAST names it (ROSCO writes `output_root`.RO.dbg).
 // The controller measures the actuators' outputs (the blade pitch and the
 // generator torque applied), as it would on a turbine.

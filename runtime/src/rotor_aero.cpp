@@ -168,8 +168,11 @@ ModelView with_rotor_aero(const ModelView& base_view, const RotorAero& aero_spec
             c.base->forcing(t, q, qd, c.effective_inputs(l, u).data(), F);
         };
     v.outputs = [c](double t, const double* q, const double* qd, const double* u, double* y) {
-        c.base->outputs(t, q, qd, u, y);
-        const RotorLoads l = c.loads(y, u);
+        // The loads from the kinematic outputs (rotor speed, hub velocity), then
+        // every output again with the loads applied: those that read q'' or a
+        // reaction load see the rotor's thrust and torque too.
+        const RotorLoads l = c.loads(c.outputs(t, q, qd, u).data(), u);
+        c.base->outputs(t, q, qd, c.effective_inputs(l, u).data(), y);
         const double extra[] = {l.thrust, l.torque, l.power, l.tsr, l.v_rel, l.cp, l.ct};
         for (int i = 0; i < 7; ++i) y[c.base->ny + i] = extra[i];
     };

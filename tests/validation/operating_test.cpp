@@ -250,6 +250,30 @@ TEST_CASE("actuators: a first-order pitch lag between the controller's demand an
     CHECK(max_rate(pi_lag) < max_rate(pi_ideal));
 }
 
+TEST_CASE("the tower-top acceleration the controller measures is the rate of the tower-top speed") {
+    // YawBrTAxp = q_fa1'' (the solved accelerations, with the rotor's thrust
+    // applied), fed to DISCON record 53: central differences of q_fa1' over
+    // the 0.02 s output step agree to O(dt^2) against the acceleration's range.
+    // Constant pitch and torque: a controller's held demands jump at each
+    // call, and the acceleration with them.
+    const Table t = run("tower_top_acc", "16", "", "pitch=11.5deg,gen_torque=43094", 10);
+    const int a = t.find("YawBrTAxp"), v = t.find("q_fa1'");
+    REQUIRE(a >= 0);
+    REQUIRE(v >= 0);
+    const auto& acc = t.data[static_cast<std::size_t>(a)];
+    const auto& vel = t.data[static_cast<std::size_t>(v)];
+    const double dt = 0.02;
+    double worst = 0, range = 0;
+    for (std::size_t k = 1; k + 1 < acc.size(); ++k) {
+        worst = std::max(worst, std::fabs((vel[k + 1] - vel[k - 1]) / (2 * dt) - acc[k]));
+        range = std::max(range, std::fabs(acc[k]));
+    }
+    MESSAGE("tower-top acceleration: up to " << range << " m/s^2, central differences within "
+                                             << worst);
+    CHECK(range > 0.1);
+    CHECK(worst < 2e-3 * range); // (omega dt)^2 / 6 = 3e-4 at 0.33 Hz
+}
+
 TEST_CASE("the baseline controller's torque regions and pitch loop (DISCON called directly)") {
     // Jonkman 2009, ch. 7: region 2 K w^2 with K = 2.332287 N m s^2, region 3
     // constant power 5296610 W, region 1 1/2 the line from cut-in (70.16 rad/s).
