@@ -19,6 +19,7 @@
 #include <cerrno>
 #include <chrono>
 #include <climits>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <dirent.h>
@@ -139,6 +140,10 @@ public:
                       total_, failed_, elapsed, eta);
         err_ << line << std::flush;
     }
+    std::size_t done() {
+        std::lock_guard<std::mutex> lock(mutex_);
+        return done_;
+    }
 
 private:
     std::ostream& err_;
@@ -241,6 +246,42 @@ std::string join(const std::vector<std::string>& v) {
     for (const std::string& s : v) out += (out.empty() ? "" : ",") + s;
     return out;
 }
+
+} // namespace
+
+namespace {
+
+volatile std::sig_atomic_t stop_requested = 0;
+extern "C" void request_stop(int) {
+    stop_requested = 1;
+}
+
+/// While alive, SIGINT and SIGTERM ask the batch to stop after the cases in
+/// progress (each then has its result and record, or none); a signal the
+/// process ignores (a background job's SIGINT) stays ignored.
+class StopOnSignal {
+public:
+    explicit StopOnSignal(bool enabled) : enabled_(enabled) {
+        stop_requested = 0;
+        if (!enabled_) return;
+        for (int i = 0; i < 2; ++i) {
+            old_[i] = std::signal(signals_[i], request_stop);
+            if (old_[i] == SIG_IGN) std::signal(signals_[i], SIG_IGN);
+        }
+    }
+    ~StopOnSignal() {
+        if (enabled_)
+            for (int i = 0; i < 2; ++i) std::signal(signals_[i], old_[i]);
+    }
+    StopOnSignal(const StopOnSignal&) = delete;
+    StopOnSignal& operator=(const StopOnSignal&) = delete;
+    bool stopped() const { return stop_requested != 0; }
+
+private:
+    bool enabled_;
+    const int signals_[2] = {SIGINT, SIGTERM};
+    void (*old_[2])(int) = {SIG_DFL, SIG_DFL};
+};
 
 } // namespace
 
@@ -374,11 +415,12 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
             << (threads == 1 ? " thread\n" : " threads\n");
 
     Progress progress(err, pending.size(), o.quiet);
+    const StopOnSignal signals(o.stop_on_signal);
     std::atomic<std::size_t> next{0};
     auto worker = [&]() {
         // Each thread's own copy of each model (copied once, not per case).
         std::map<const Loaded*, Loaded> mine;
-        for (std::size_t i = next++; i < pending.size(); i = next++) {
+        for (std::size_t i = next++; i < pending.size() && !signals.stopped(); i = next++) {
             Job& job = *pending[i];
             auto model = mine.find(job.model);
             if (model == mine.end()) model = mine.emplace(job.model, *job.model).first;
@@ -406,6 +448,13 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
     for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
     worker();
     for (std::thread& t : pool) t.join();
+    if (signals.stopped()) {
+        // The summary is written by the run that finishes; the results and
+        // records written so far are kept for it.
+        err << "yamsc: batch interrupted after " << progress.done() << " of " << pending.size()
+            << " cases to run; run the same command again to finish\n";
+        return 130;
+    }
 
     std::vector<CaseSummary> summaries;
     std::size_t failed = 0;

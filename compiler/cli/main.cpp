@@ -351,6 +351,7 @@ int run(int argc, char** argv) {
                 throw UsageError("--shard takes k/N with 1 <= k <= N (e.g. 2/8), not '" + s + "'");
         }
         o.quiet = a.has("-q");
+        o.stop_on_signal = true;
         return batch(o, std::cout, std::cerr);
     }
     if (cmd == "from-openfast") {

@@ -126,6 +126,10 @@ struct BatchOptions {
     int threads = 0;           // --threads; 0: one per core
     int shard = 1, shards = 1; // --shard k/N: the rows whose index mod N is k - 1
     bool quiet = false;        // -q: no progress on stderr
+    /// SIGINT/SIGTERM stop the run after the cases in progress (the command
+    /// line; not a library caller such as a Python worker, whose signals are
+    /// its own).
+    bool stop_on_signal = false;
 };
 
 /// `yamsc batch merge DIR...`: the shards' summaries as one.

@@ -1,7 +1,7 @@
 // `yamsc batch` through the yamsc binary: a case gives `yamsc sim`'s file byte
 // for byte; threads, shards and a run killed and resumed all give the same
-// files as one uninterrupted run; bad rows are reported at their place in the
-// manifest while the other cases run; an edited row is run again.
+// files as one uninterrupted run (1000 cases, killed by SIGKILL or SIGINT); bad rows are reported
+// at their place in the manifest while the other cases run; an edited row is run again.
 #include "test_files.hpp"
 
 #include <doctest/doctest.h>
@@ -174,15 +174,16 @@ TEST_CASE("wind and rotor table files are relative to the manifest; a missing on
     CHECK(read_file(dir + "/out/gust.csv") != read_file(dir + "/gust.csv"));
 }
 
-TEST_CASE("threads, shards and a run killed with SIGKILL and resumed give one run's files") {
-    const int n = 400;
+TEST_CASE("threads, shards and a run killed with SIGKILL or SIGINT and resumed give one run's "
+          "files") {
+    const int n = 1000;
     const std::string dir = scratch_dir("batch", "sweep");
     write_file(dir + "/cases.csv", sweep_manifest(n));
 
     const Run one = run_in(dir, "$Y batch cases.csv -o one --threads 1");
     INFO(one.err);
     REQUIRE(one.status == 0);
-    CHECK(has(one.out, "400 cases, 400 ok, 0 failed"));
+    CHECK(has(one.out, "1000 cases, 1000 ok, 0 failed"));
     CHECK(files_of(dir + "/one", ".csv").size() == n);
 
     SUBCASE("two threads") {
@@ -196,7 +197,7 @@ TEST_CASE("threads, shards and a run killed with SIGKILL and resumed give one ru
                                        "$Y batch merge shards");
         INFO(shards.err);
         REQUIRE(shards.status == 0);
-        CHECK(has(shards.out, "batch merge: 4 shards, 400 cases, 400 ok, 0 failed"));
+        CHECK(has(shards.out, "batch merge: 4 shards, 1000 cases, 1000 ok, 0 failed"));
         check_same_results(dir + "/one", dir + "/shards", "summary.csv", "summary.csv");
         // Shard 2 of 4 holds rows 2, 6, 10, ...
         const std::string s2 = read_file(dir + "/shards/summary-2-of-4.csv");
@@ -209,32 +210,41 @@ TEST_CASE("threads, shards and a run killed with SIGKILL and resumed give one ru
         CHECK(missing.status == 1);
         CHECK(has(missing.err, "missing shards: 2/4, 3/4, 4/4"));
     }
-    SUBCASE("killed at a random point, then resumed") {
-        // Killed once a random number of results is written (polled every
-        // 5 ms): a point inside the run whatever the machine's speed.
-        std::random_device seed;
-        std::mt19937 random(seed());
-        const int at = std::uniform_int_distribution<int>(n / 10, n * 8 / 10)(random);
-        MESSAGE("SIGKILL after " << at << " of " << n << " results");
-        const Run killed = run_in(dir, "$Y batch cases.csv -o resumed --threads 2 -q & p=$!\n"
-                                       "while [ $(ls resumed 2>/dev/null | grep -c 'csv$') -lt " +
-                                           std::to_string(at) +
-                                           " ]; do sleep 0.005; done\n"
-                                           "kill -9 $p; wait $p; echo killed $?");
-        CHECK(has(killed.out, "killed 137"));
-        const Run resumed = run_in(dir, "$Y batch cases.csv -o resumed --threads 2");
-        INFO(resumed.err);
-        REQUIRE(resumed.status == 0);
-        const std::size_t done_before = std::stoul(resumed.err.substr(resumed.err.find(", ") + 2));
-        MESSAGE(done_before << " cases done before resuming");
-        CHECK(done_before >= static_cast<std::size_t>(at) - 2); // records lag the results
-        CHECK(done_before < static_cast<std::size_t>(n));
-        check_same_results(dir + "/one", dir + "/resumed", "summary.csv", "summary.csv");
-        CHECK(temporaries(dir + "/resumed").empty());
-        // A third run has nothing left to do.
-        const Run again = run_in(dir, "$Y batch cases.csv -o resumed");
-        CHECK(again.status == 0);
-        CHECK(has(again.err, "400 done before, 0 to run"));
+    // Killed once a random number of results is written (polled every 5 ms):
+    // a point inside the run whatever the machine's speed. SIGKILL leaves what
+    // a crash leaves; SIGINT (Ctrl-C) lets the cases in progress finish.
+    for (const char* signal : {"KILL", "INT"}) {
+        SUBCASE(
+            (std::string("killed by SIG") + signal + " at a random point, then resumed").c_str()) {
+            std::random_device seed;
+            std::mt19937 random(seed());
+            const int at = std::uniform_int_distribution<int>(n / 10, n * 8 / 10)(random);
+            MESSAGE("SIG" << std::string(signal) << " after " << at << " of " << n << " results");
+            // yamsc in the foreground (a background job of sh ignores SIGINT),
+            // the signal from a watcher in the background.
+            const Run killed = run_in(
+                dir, "rm -f pid\n(while [ ! -s pid ] || [ $(ls resumed 2>/dev/null | grep -c "
+                     "'csv$') -lt " +
+                         std::to_string(at) + " ]; do sleep 0.005; done; kill -" + signal +
+                         " $(cat pid)) &\nsh -c 'echo $$ > pid; exec \"$Y\" batch cases.csv -o "
+                         "resumed --threads 2 -q'\necho killed $?\nwait");
+            CHECK(has(killed.out, std::string("killed ") + (signal[0] == 'K' ? "137" : "130")));
+            if (signal[0] == 'I') CHECK(has(killed.err, "batch interrupted after"));
+            const Run resumed = run_in(dir, "$Y batch cases.csv -o resumed --threads 2");
+            INFO(resumed.err);
+            REQUIRE(resumed.status == 0);
+            const std::size_t done_before =
+                std::stoul(resumed.err.substr(resumed.err.find(", ") + 2));
+            MESSAGE(done_before << " cases done before resuming");
+            CHECK(done_before >= static_cast<std::size_t>(at) - 2); // records lag the results
+            CHECK(done_before < static_cast<std::size_t>(n));
+            check_same_results(dir + "/one", dir + "/resumed", "summary.csv", "summary.csv");
+            CHECK(temporaries(dir + "/resumed").empty());
+            // A third run has nothing left to do.
+            const Run again = run_in(dir, "$Y batch cases.csv -o resumed");
+            CHECK(again.status == 0);
+            CHECK(has(again.err, "1000 done before, 0 to run"));
+        }
     }
 }
 
