@@ -198,6 +198,48 @@ TEST_CASE(
     CHECK(r8.u[4] == doctest::Approx(2.332287 * w * w).epsilon(0.05));
 }
 
+TEST_CASE("aerodynamic damping at 16 m/s: the linear model's equals the nonlinear decay's") {
+    // The trimmed operating point (rated speed and torque, pitch trimmed), the
+    // linear model there, and a nonlinear run from it with the tower top
+    // pushed 0.2 m downwind at the same pitch and torque: the logarithmic
+    // decrement of each of the first five cycles gives the linear model's
+    // damping ratio of the tower's fore-aft mode.
+    const yamsc::runtime::TrimResult r =
+        trimmed("16", 12.1, "gen_torque=43093.55,pitch=10deg", "pitch");
+    REQUIRE(r.converged);
+    char u[120], at[80], ic[240];
+    std::snprintf(u, sizeof u, "gen_torque=43093.55,pitch=%.17g", r.u[1]);
+    std::snprintf(at, sizeof at, "psi'=%.17g", r.qd[2]);
+    std::snprintf(ic, sizeof ic, "q_fa1=%.17g,q_ss1=%.17g,drtr=%.17g,psi'=%.17g", r.q[0] + 0.2,
+                  r.q[1], r.q[3], r.qd[2]);
+    yamsc::driver::LinOptions o;
+    o.model = model;
+    o.aero = table;
+    o.wind = "16";
+    o.at = yamsc::driver::parse_assignments(at, "--at");
+    o.u = yamsc::driver::parse_assignments(u, "--u");
+    std::ostringstream out, err;
+    REQUIRE_MESSAGE(yamsc::driver::lin(o, out, err) == 0, err.str());
+    const double linear = damping_of(out.str(), "q_fa1");
+
+    const Table t = run("aero_damping_decay", "16", "", u, 20, "", ic);
+    const int j = t.find("Q_TFA1");
+    REQUIRE(j >= 0);
+    const auto& x = t.data[static_cast<std::size_t>(j)];
+    std::vector<double> peaks; // maxima of the deflection from the trimmed one
+    for (std::size_t k = 1; k + 1 < x.size(); ++k)
+        if (x[k] > x[k - 1] && x[k] >= x[k + 1] && x[k] > r.q[0]) peaks.push_back(x[k] - r.q[0]);
+    REQUIRE(peaks.size() >= 6);
+    for (std::size_t k = 0; k < 5; ++k) {
+        const double delta = std::log(peaks[k] / peaks[k + 1]);
+        const double zeta = delta / std::sqrt(4 * pi * pi + delta * delta);
+        CAPTURE(k);
+        CHECK(zeta == doctest::Approx(linear).epsilon(0.01));
+    }
+    MESSAGE("tower FA1 at 16 m/s: linear damping ratio "
+            << linear << ", first decay cycle " << std::log(peaks[0] / peaks[1]) / (2 * pi));
+}
+
 TEST_CASE("the NREL 5-MW baseline controller in the loop (sim --controller)") {
     // 16 m/s, region 3: the PI pitch loop holds rated speed, the torque loop 5 MW
     Table t = run("baseline_16mps", "16", "", "pitch=11.5deg,gen_torque=43094", 150,
