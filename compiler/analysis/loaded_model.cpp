@@ -34,15 +34,6 @@ std::vector<double> evaluate_at(const Loaded& l, const std::vector<double>& para
     return out;
 }
 
-/// The library's defaults overridden by `set`, and the view at them.
-void bind_parameters(Loaded& l, const std::vector<Assignment>& set) {
-    std::vector<std::optional<double>> defaults;
-    for (double v : l.library->default_params())
-        defaults.push_back(std::isnan(v) ? std::nullopt : std::optional<double>(v));
-    l.params = bind_named(l.library->param_names(), defaults, set, "parameter");
-    l.view = l.library->view(l.params);
-}
-
 std::vector<std::string> primed(const std::vector<std::string>& names) {
     std::vector<std::string> out;
     for (const std::string& n : names) out.push_back(n + "'");
@@ -55,6 +46,15 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
                            const std::string& sid_spec, bool verbose, std::ostream& err,
                            const std::vector<NamedFile>& outputs,
                            const std::vector<std::string>& routines) {
+    std::optional<Loaded> l = load_unbound(path, sid_spec, verbose, err, outputs, routines);
+    if (l) bind_parameters(*l, set);
+    return l;
+}
+
+std::optional<Loaded> load_unbound(const std::string& path, const std::string& sid_spec,
+                                   bool verbose, std::ostream& err,
+                                   const std::vector<NamedFile>& outputs,
+                                   const std::vector<std::string>& routines) {
     diag::Diagnostics diags;
     auto progress = [&](const std::string& s) {
         if (verbose) err << "yamsc: " << s << "\n";
@@ -85,17 +85,25 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
         return std::nullopt;
     }
     // --sid values first, so that --set still overrides them.
-    std::vector<Assignment> all =
-        sid_spec.empty() ? std::vector<Assignment>{} : sid_parameter_values(*fe.model, sid_spec);
-    all.insert(all.end(), set.begin(), set.end());
-    bind_parameters(l, all);
-    l.front = std::move(fe);
+    if (!sid_spec.empty()) l.sid_values = sid_parameter_values(*fe.model, sid_spec);
+    l.digest = id.content_digest;
+    l.front = std::make_shared<const FrontEnd>(std::move(fe));
     return l;
+}
+
+void bind_parameters(Loaded& l, const std::vector<Assignment>& set) {
+    std::vector<std::optional<double>> defaults;
+    for (double v : l.library->default_params())
+        defaults.push_back(std::isnan(v) ? std::nullopt : std::optional<double>(v));
+    std::vector<Assignment> all = l.sid_values;
+    all.insert(all.end(), set.begin(), set.end());
+    l.params = bind_named(l.library->param_names(), defaults, all, "parameter");
+    l.view = l.library->view(l.params);
 }
 
 Loaded load_library(const std::string& path, const std::vector<Assignment>& set) {
     Loaded l;
-    l.library = std::make_unique<runtime::SharedModel>(path);
+    l.library = std::make_shared<const runtime::SharedModel>(path);
     bind_parameters(l, set);
     return l;
 }
@@ -116,11 +124,12 @@ void operating_point(const Loaded& l, const std::vector<double>& params,
     q.assign(static_cast<std::size_t>(v.nq), 0.0);
     qd.assign(static_cast<std::size_t>(v.nq), 0.0);
     u.assign(static_cast<std::size_t>(v.nu), 0.0);
-    if (l.front.model && l.front.model->operating_point) {
-        const auto& op = *l.front.model->operating_point;
-        q = evaluate_at(l, params, op.q, v.dof_names, "linearize");
-        qd = evaluate_at(l, params, op.qd, primed(v.dof_names), "linearize");
-        u = evaluate_at(l, params, op.u, v.input_names, "linearize");
+    // A library loaded by load_library has no front end: no `linearize` block.
+    if (l.front && l.front->model && l.front->model->operating_point) {
+        const auto& point = l.front->model->operating_point;
+        q = evaluate_at(l, params, point->q, v.dof_names, "linearize");
+        qd = evaluate_at(l, params, point->qd, primed(v.dof_names), "linearize");
+        u = evaluate_at(l, params, point->u, v.input_names, "linearize");
     }
     for (const Assignment& a : at) {
         const std::string channel = a.name + std::string(static_cast<std::size_t>(a.primes), '\'');
@@ -146,8 +155,8 @@ void initial_state(const Loaded& l, const std::vector<Assignment>& ic, std::vect
     const runtime::ModelView& v = l.view;
     q.assign(static_cast<std::size_t>(v.nq), 0.0);
     qd.assign(static_cast<std::size_t>(v.nq), 0.0);
-    if (l.front.model && l.front.model->initial_state) {
-        const auto& init = l.front.model->initial_state;
+    if (l.front && l.front->model && l.front->model->initial_state) {
+        const auto& init = l.front->model->initial_state;
         q = evaluate_at(l, l.params, init->q, v.dof_names, "initial");
         qd = evaluate_at(l, l.params, init->qd, primed(v.dof_names), "initial");
     }

@@ -16,13 +16,18 @@
 
 namespace yamsc::driver {
 
-/// A model compiled and bound to its parameters, ready to run.
+/// A model compiled and bound to its parameters, ready to run. Copies share
+/// the library and the checked model (both read-only), so `yamsc batch` loads a
+/// model once and binds each case's parameters in its own copy.
 struct Loaded {
-    std::unique_ptr<runtime::SharedModel> library;
+    std::shared_ptr<const runtime::SharedModel> library;
     runtime::ModelView view;
     std::vector<double> params;
-    FrontEnd front; // the checked model (its equations are derived only to compile it);
-                    // no model for a library loaded by load_library
+    // The checked model (its equations are derived only to compile it); null
+    // for a library loaded by load_library.
+    std::shared_ptr<const FrontEnd> front;
+    std::vector<Assignment> sid_values; // from --sid, bound before --set
+    std::string digest;                 // content_digest of the model text and data
 };
 
 /// `outputs` are checked against the model's data files before anything is derived.
@@ -35,9 +40,20 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
                            const std::vector<std::string>& routines);
 
 /// A model library built beforehand (abi_export.hpp's YAMSC_EXPORT_MODEL, e.g.
-/// by CMake) bound to its defaults and `set`. It has no front end: no `initial`
-/// or `linearize` block, so both points are zeros unless given.
+/// by CMake) bound to its defaults and `set`. It has no front end (`front` is
+/// null): no `initial` or `linearize` block, so both points are zeros unless given.
 Loaded load_library(const std::string& path, const std::vector<Assignment>& set);
+
+/// `load` without binding the parameters (`params` and `view` empty): for
+/// commands that bind them per case with bind_parameters.
+std::optional<Loaded> load_unbound(const std::string& path, const std::string& sid_spec,
+                                   bool verbose, std::ostream& err,
+                                   const std::vector<NamedFile>& outputs,
+                                   const std::vector<std::string>& routines);
+
+/// Binds the parameters again: the model's defaults, the --sid values, then
+/// `set` (as `load` does); a view of the same library with those values.
+void bind_parameters(Loaded& l, const std::vector<Assignment>& set);
 
 /// The routines `lin` and `trim` call: the second-order model and A.
 std::vector<std::string> linear_model_routines();

@@ -315,7 +315,7 @@ bool lin_files_per_azimuth(const LinOptions& o) {
 void write_openfast_lin(const Loaded& l, const runtime::ModelView& view, const LinOptions& o,
                         const std::vector<double>& q, const std::vector<double>& qd,
                         const std::vector<double>& u, std::ostream& out, bool quiet) {
-    const model::Model& model = *l.front.model;
+    const model::Model& model = *l.front->model;
     const bool per_azimuth = lin_files_per_azimuth(o);
     const std::vector<std::string> paths = lin_file_paths(o.output, per_azimuth ? o.azimuths : 0);
     LinFilePoint p;

@@ -109,7 +109,7 @@ int rotor_campbell(const Loaded& l, const LinOptions& o, std::ostream& out) {
             << "\n";
     }
     if (!o.plot.empty()) {
-        const std::string title = l.front.model->name + ": MBC3 modes against " + sweep.name;
+        const std::string title = l.front->model->name + ": MBC3 modes against " + sweep.name;
         runtime::write_file_atomically(
             o.plot, rotor_campbell_svg(title, sweep.name, rows, rotor_speed, !rate.empty()));
         out << "wrote " << o.plot << "\n";

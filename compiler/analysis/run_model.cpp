@@ -9,6 +9,7 @@
 #include "analysis/rotor_aero_setup.hpp"
 #include "analysis/rotor_campbell.hpp"
 #include "analysis/rotor_modes.hpp"
+#include "analysis/sim_case.hpp"
 #include "analysis/svg_plot.hpp"
 #include "analysis/sweep_point.hpp"
 #include "analysis/trim_point.hpp"
@@ -70,30 +71,11 @@ int campbell(const Loaded& l, const LinOptions& o, std::ostream& out) {
         out << "wrote " << rows.size() << " rows to " << o.output << "\n";
     }
     if (!o.plot.empty()) {
-        const std::string title = l.front.model->name + ": modes against " + sweep.name;
+        const std::string title = l.front->model->name + ": modes against " + sweep.name;
         runtime::write_file_atomically(o.plot, campbell_svg(title, sweep.name, rows));
         out << "wrote " << o.plot << "\n";
     }
     return 0;
-}
-
-/// The linear model of --linear: about the model's `linearize` point, moved by --at/--u.
-runtime::ModelView linear_model(const Loaded& l, const SimOptions& o, std::ostream& out) {
-    std::vector<double> q0, qd0, u0;
-    operating_point(l, l.params, o.at, o.u, q0, qd0, u0);
-    std::vector<double> x0 = q0;
-    x0.insert(x0.end(), qd0.begin(), qd0.end());
-    const runtime::LinearSystem system = runtime::linearize_view(l.view, x0, u0);
-    if (o.verbose) {
-        out << "linear model about q0 = (";
-        for (std::size_t i = 0; i < x0.size(); ++i)
-            out << (i == q0.size() ? "), q0' = (" : i ? ", " : "") << x0[i];
-        out << "); modes [Hz]:";
-        for (const runtime::Mode& m : runtime::modal_analysis(system.A, l.view.nq))
-            if (!m.rigid_body) out << ' ' << m.freq_hz;
-        out << "\n";
-    }
-    return runtime::linear_view(l.view, system);
 }
 
 /// The channels to plot: --plot-channels, else those compared, else every column.
@@ -138,49 +120,12 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     // A bad reference fails before anything is simulated or written.
     std::optional<Table> reference;
     if (!o.compare.empty()) reference = read_table(o.compare);
-    // rhs and outputs; CVODE's Newton iterations use the exact rhs_jacobian,
-    // and --linear linearizes with M and the Jacobians of F.
-    std::vector<std::string> routines{"rhs", "outputs"};
-    if (o.method == SimMethod::cvode) routines.push_back("rhs_jacobian");
-    if (o.linear || (!o.aero.empty() && o.method == SimMethod::cvode))
-        routines.insert(routines.end(), {"mass_matrix", "jacobians"});
-    auto loaded = load(o.model, o.set, o.sid, o.verbose, err, outputs, routines);
+    auto loaded = load(o.model, o.set, o.sid, o.verbose, err, outputs, sim_routines(o));
     if (!loaded) return 1;
-    std::vector<double> q, qd;
-    initial_state(*loaded, o.ic, q, qd);
-    const runtime::ModelView v = o.linear         ? linear_model(*loaded, o, out)
-                                 : o.aero.empty() ? loaded->view
-                                                  : close_rotor_aero(*loaded, o.aero);
-    runtime::SimulationOptions s;
-    s.t_end = o.tmax;
-    s.dt = o.dt;
-    s.method = o.method == SimMethod::cvode ? runtime::Method::cvode : runtime::Method::rk4;
-    s.rtol = o.rtol;
-    s.atol = o.atol;
-    s.x0 = q;
-    s.x0.insert(s.x0.end(), qd.begin(), qd.end());
-    s.u = inputs_of(v, o.u);
-    if (!o.wind.empty()) s.u_of_t = wind_inputs(v, s.u, o.wind);
-    int last_percent = -1;
-    auto progress = [&](double t, double t_end) {
-        int percent = static_cast<int>(100.0 * t / t_end);
-        if (o.verbose && percent / 10 != last_percent / 10) {
-            err << "yamsc: simulated " << percent << " %\n";
-            last_percent = percent;
-        }
-        return true;
-    };
-    runtime::SimulationResult result =
-        o.controller.empty() ? runtime::simulate(v, s, progress)
-                             : simulate_with_controller(v, s, o.controller, o.controller_input);
-    const bool openfast = o.channels == Channels::openfast;
-    const Table table = openfast ? openfast_table(result, 1 + v.nx()) : table_of(result);
-    if (!o.output.empty()) {
-        if (openfast)
-            write_table_csv(table, o.output);
-        else
-            runtime::write_csv(result, o.output);
-    }
+    const SimRun run = simulate_case(*loaded, o, out, err);
+    const runtime::SimulationResult& result = run.result;
+    const Table table = sim_table(run, o.channels);
+    if (!o.output.empty()) write_sim_csv(run, o.channels, o.output);
     out << runtime::format_summary(result);
     if (!o.output.empty()) out << "wrote " << result.rows() << " rows to " << o.output << "\n";
     std::optional<Comparison> comparison;
@@ -190,7 +135,7 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     }
     if (!o.plot.empty()) {
         PlotOptions plot;
-        plot.title = loaded->front.model->name + (o.linear ? " (linear)" : "");
+        plot.title = loaded->front->model->name + (o.linear ? " (linear)" : "");
         runtime::write_file_atomically(
             o.plot,
             svg_plot(plot_panels(table, reference ? &*reference : nullptr, comparison, o), plot));

@@ -39,6 +39,8 @@ const char* usage_text = R"(usage:
                       [--plot-channels a,b,..] [--linear [--at name=v,..]]
                       [--aero Cp_Ct_Cq.txt] [--wind V|step:V0:V1:t=T|wind.csv]
                       [--controller libdiscon.so [--controller-input DISCON.IN]]
+  yamsc batch CASES.csv [-o OUTDIR] [--threads N] [--shard k/N] [-q]
+  yamsc batch merge OUTDIR... [-o summary.csv]
   yamsc from-openfast ELASTODYN.dat|DECK.fst [--dofs NAME=on|off,..] -o model.mbd
   yamsc rotor-table Cp_Ct_Cq.txt -o rotor_table.c [--prefix NAME]
   yamsc sid --elastodyn-tower FILE | --elastodyn-blade FILE --length L [--modes fa1,ss1,..]
@@ -47,6 +49,9 @@ const char* usage_text = R"(usage:
 eval, lin, trim and sim take --sid body=file.sid: the shape integrals of a flexible body
 declared with `symbolic modes`, read from a SID file. Values accept `deg`: --set theta_t=5deg.
 sim starts from the model's `initial` block (zeros without one); --ic overrides single values.
+batch runs one sim per row of CASES.csv (columns id,model,tmax,dt and optionally method,rtol,
+atol,set,ic,u,wind,aero,set:NAME,ic:NAME,u:NAME; docs/batch.md); a rerun runs only the cases
+not finished yet.
 Exit status: 0 ok, 1 error in the model or its inputs, 2 usage error (also an output that
 names an input or another output: nothing is written), 70 internal error.
 )";
@@ -97,6 +102,7 @@ public:
                                                        std::to_string(positional_.size()));
         return positional_[0];
     }
+    const std::vector<std::string>& positionals() const { return positional_; }
     std::vector<yamsc::driver::Assignment> assignments(const std::string& name) const {
         return has(name) ? yamsc::driver::parse_assignments(get(name), name)
                          : std::vector<yamsc::driver::Assignment>{};
@@ -312,6 +318,40 @@ int run(int argc, char** argv) {
         if (!o.controller.empty() && (o.linear || o.method == SimMethod::cvode))
             throw UsageError("--controller runs with RK4 on the nonlinear model");
         return sim(o, std::cout, std::cerr);
+    }
+    if (cmd == "batch" && argc > 2 && std::string(argv[2]) == "merge") {
+        Args a(argc, argv, 3, {"-o"}, {});
+        BatchMergeOptions o;
+        o.dirs = a.positionals();
+        o.output = a.get("-o");
+        return batch_merge(o, std::cout, std::cerr);
+    }
+    if (cmd == "batch") {
+        Args a(argc, argv, 2, {"-o", "--threads", "--shard"}, {"-q"});
+        BatchOptions o;
+        o.manifest = a.model();
+        o.output_dir = a.get("-o");
+        const double threads = a.number("--threads", 0);
+        if (threads != std::floor(threads) || threads < 1 || threads > 4096)
+            if (a.has("--threads")) throw UsageError("--threads must be a whole number >= 1");
+        o.threads = static_cast<int>(threads);
+        if (a.has("--shard")) {
+            const std::string s = a.get("--shard");
+            const auto slash = s.find('/');
+            std::size_t k_end = 0, n_end = 0;
+            try {
+                if (slash == std::string::npos) throw std::invalid_argument(s);
+                o.shard = std::stoi(s.substr(0, slash), &k_end);
+                o.shards = std::stoi(s.substr(slash + 1), &n_end);
+            } catch (const std::exception&) {
+                k_end = 0;
+            }
+            if (k_end != slash || slash + 1 + n_end != s.size() || o.shards < 1 || o.shard < 1 ||
+                o.shard > o.shards)
+                throw UsageError("--shard takes k/N with 1 <= k <= N (e.g. 2/8), not '" + s + "'");
+        }
+        o.quiet = a.has("-q");
+        return batch(o, std::cout, std::cerr);
     }
     if (cmd == "from-openfast") {
         Args a(argc, argv, 2, {"--dofs", "-o"}, {});

@@ -119,6 +119,21 @@ struct SimOptions {
     std::string controller_input; // --controller-input FILE: its accINFILE
 };
 
+/// `yamsc batch MANIFEST` (docs/batch.md): one `sim` per manifest row.
+struct BatchOptions {
+    std::string manifest;
+    std::string output_dir;    // -o; empty: the manifest's name without .csv, plus ".out"
+    int threads = 0;           // --threads; 0: one per core
+    int shard = 1, shards = 1; // --shard k/N: the rows whose index mod N is k - 1
+    bool quiet = false;        // -q: no progress on stderr
+};
+
+/// `yamsc batch merge DIR...`: the shards' summaries as one.
+struct BatchMergeOptions {
+    std::vector<std::string> dirs;
+    std::string output; // -o; empty: summary.csv in the first folder
+};
+
 struct FromOpenFastOptions {
     std::string deck;                               // ElastoDyn main file or .fst
     std::vector<std::pair<std::string, bool>> dofs; // --dofs NAME=on|off (ElastoDyn flag names)
@@ -145,6 +160,8 @@ int eval(const EvalOptions& o, std::ostream& out, std::ostream& err);
 int lin(const LinOptions& o, std::ostream& out, std::ostream& err);
 int trim(const TrimOptions& o, std::ostream& out, std::ostream& err);
 int sim(const SimOptions& o, std::ostream& out, std::ostream& err);
+int batch(const BatchOptions& o, std::ostream& out, std::ostream& err);
+int batch_merge(const BatchMergeOptions& o, std::ostream& out, std::ostream& err);
 int sid(const SidOptions& o, std::ostream& out, std::ostream& err);
 int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream& err);
 int rotor_table(const RotorTableOptions& o, std::ostream& out, std::ostream& err);

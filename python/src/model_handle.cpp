@@ -77,7 +77,8 @@ std::vector<double> ModelHandle::params_at(const double* p) const {
 
 std::vector<Described> ModelHandle::described(const std::string& kind) const {
     const runtime::SharedModel& lib = library();
-    const std::optional<model::Model>& m = loaded_.front.model;
+    const model::Model* m =
+        loaded_.front && loaded_.front->model ? &*loaded_.front->model : nullptr;
     std::vector<Described> out;
     auto add = [&](const std::string& name, const std::string* doc) {
         out.push_back({name, doc ? *doc : "", doc ? unit_of(*doc) : ""});

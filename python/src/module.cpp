@@ -225,8 +225,8 @@ PYBIND11_MODULE(_yamsc, mod) {
     py::class_<ModelHandle>(mod, "Model")
         .def_property_readonly("name",
                                [](const ModelHandle& h) {
-                                   const auto& m = h.loaded().front.model;
-                                   return m ? m->name : std::string();
+                                   const auto& f = h.loaded().front;
+                                   return f && f->model ? f->model->name : std::string();
                                })
         .def_property_readonly("library_path",
                                [](const ModelHandle& h) { return h.library().path(); })

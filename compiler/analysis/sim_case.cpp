@@ -1,0 +1,92 @@
+#include "analysis/sim_case.hpp"
+
+#include "analysis/controller_loop.hpp"
+#include "analysis/rotor_aero_setup.hpp"
+
+#include <yamsc/csv.hpp>
+#include <yamsc/linear_view.hpp>
+#include <yamsc/modal.hpp>
+
+#include <ostream>
+
+namespace yamsc::driver {
+
+namespace {
+
+/// The linear model of --linear: about the model's `linearize` point, moved by --at/--u.
+runtime::ModelView linear_model(const Loaded& l, const SimOptions& o, std::ostream& out) {
+    std::vector<double> q0, qd0, u0;
+    operating_point(l, l.params, o.at, o.u, q0, qd0, u0);
+    std::vector<double> x0 = q0;
+    x0.insert(x0.end(), qd0.begin(), qd0.end());
+    const runtime::LinearSystem system = runtime::linearize_view(l.view, x0, u0);
+    if (o.verbose) {
+        out << "linear model about q0 = (";
+        for (std::size_t i = 0; i < x0.size(); ++i)
+            out << (i == q0.size() ? "), q0' = (" : i ? ", " : "") << x0[i];
+        out << "); modes [Hz]:";
+        for (const runtime::Mode& m : runtime::modal_analysis(system.A, l.view.nq))
+            if (!m.rigid_body) out << ' ' << m.freq_hz;
+        out << "\n";
+    }
+    return runtime::linear_view(l.view, system);
+}
+
+} // namespace
+
+std::vector<std::string> sim_routines(const SimOptions& o) {
+    // rhs and outputs; CVODE's Newton iterations use the exact rhs_jacobian,
+    // and --linear linearizes with M and the Jacobians of F.
+    std::vector<std::string> routines{"rhs", "outputs"};
+    if (o.method == SimMethod::cvode) routines.push_back("rhs_jacobian");
+    if (o.linear || (!o.aero.empty() && o.method == SimMethod::cvode))
+        routines.insert(routines.end(), {"mass_matrix", "jacobians"});
+    return routines;
+}
+
+SimRun simulate_case(const Loaded& l, const SimOptions& o, std::ostream& out, std::ostream& err) {
+    std::vector<double> q, qd;
+    initial_state(l, o.ic, q, qd);
+    SimRun run;
+    run.view = o.linear         ? linear_model(l, o, out)
+               : o.aero.empty() ? l.view
+                                : close_rotor_aero(l, o.aero);
+    const runtime::ModelView& v = run.view;
+    runtime::SimulationOptions s;
+    s.t_end = o.tmax;
+    s.dt = o.dt;
+    s.method = o.method == SimMethod::cvode ? runtime::Method::cvode : runtime::Method::rk4;
+    s.rtol = o.rtol;
+    s.atol = o.atol;
+    s.x0 = q;
+    s.x0.insert(s.x0.end(), qd.begin(), qd.end());
+    s.u = inputs_of(v, o.u);
+    if (!o.wind.empty()) s.u_of_t = wind_inputs(v, s.u, o.wind);
+    int last_percent = -1;
+    auto progress = [&](double t, double t_end) {
+        int percent = static_cast<int>(100.0 * t / t_end);
+        if (o.verbose && percent / 10 != last_percent / 10) {
+            err << "yamsc: simulated " << percent << " %\n";
+            last_percent = percent;
+        }
+        return true;
+    };
+    run.result = o.controller.empty()
+                     ? runtime::simulate(v, s, progress)
+                     : simulate_with_controller(v, s, o.controller, o.controller_input);
+    return run;
+}
+
+Table sim_table(const SimRun& run, Channels channels) {
+    return channels == Channels::openfast ? openfast_table(run.result, 1 + run.view.nx())
+                                          : table_of(run.result);
+}
+
+void write_sim_csv(const SimRun& run, Channels channels, const std::string& path) {
+    if (channels == Channels::openfast)
+        write_table_csv(sim_table(run, channels), path);
+    else
+        runtime::write_csv(run.result, path);
+}
+
+} // namespace yamsc::driver
