@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <ostream>
 
 namespace yamsc::driver {
@@ -55,6 +56,11 @@ std::optional<Loaded> load_unbound(const std::string& path, const std::string& s
                                    bool verbose, std::ostream& err,
                                    const std::vector<NamedFile>& outputs,
                                    const std::vector<std::string>& routines) {
+    // One model at a time per process: the derivation (GiNaC) shares global
+    // state, and the JIT names its temporary files by process id. Python
+    // threads (yamsc.load, a Dask worker's batch tasks) can load at once.
+    static std::mutex loading;
+    std::lock_guard<std::mutex> lock(loading);
     diag::Diagnostics diags;
     auto progress = [&](const std::string& s) {
         if (verbose) err << "yamsc: " << s << "\n";

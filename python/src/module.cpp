@@ -2,6 +2,7 @@
 // other half). Arrays in are read in place when they are contiguous float64
 // (forcecast converts anything else once); arrays out are new. Errors are
 // yamsc.Error with yamsc's located messages; simulate() runs without the GIL.
+#include "batch_functions.hpp"
 #include "input_table.hpp"
 #include "model_handle.hpp"
 #include "output_matrices.hpp"
@@ -336,4 +337,5 @@ PYBIND11_MODULE(_yamsc, mod) {
             return ModelHandle::from_library(path, assignments(set));
         },
         py::arg("path"), py::arg("set"));
+    yamsc::python::add_batch_functions(mod);
 }
