@@ -1,5 +1,6 @@
 #include "analysis/batch_summary.hpp"
 
+#include "analysis/channels.hpp"
 #include "diag/errors.hpp"
 
 #include <cstdio>
@@ -12,13 +13,6 @@ namespace yamsc::driver {
 const char* const summary_header = "row,id,status,final,message,wall_s";
 
 namespace {
-
-std::string quoted(const std::string& s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string out = "\"";
-    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
 
 /// The fields of one CSV line (RFC 4180 quoting); false on an open quote.
 bool fields_of(const std::string& line, std::vector<std::string>& out) {
@@ -70,8 +64,9 @@ std::string one_line(const std::string& text) {
 }
 
 std::string summary_line(const CaseSummary& s) {
-    return std::to_string(s.row) + "," + quoted(s.id) + "," + (s.ok ? "ok" : "error") + "," +
-           quoted(s.final) + "," + quoted(one_line(s.message)) + "," + seconds(s.wall_s) + "\n";
+    return std::to_string(s.row) + "," + csv_field(s.id) + "," + (s.ok ? "ok" : "error") + "," +
+           csv_field(s.final) + "," + csv_field(one_line(s.message)) + "," + seconds(s.wall_s) +
+           "\n";
 }
 
 std::string summary_text(const std::vector<CaseSummary>& cases) {

@@ -18,6 +18,13 @@ int Table::find(std::string_view name) const {
     return -1;
 }
 
+std::string csv_field(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string out = "\"";
+    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
 Table table_of(const runtime::SimulationResult& result) {
     Table t;
     t.columns = result.columns;

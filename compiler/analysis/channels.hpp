@@ -30,6 +30,10 @@ struct Table {
 /// Every column of a run as `yamsc sim` writes it: time, DOFs, rates, outputs.
 Table table_of(const runtime::SimulationResult& result);
 
+/// A text field of a CSV row: as it is, or quoted (RFC 4180) when it holds a
+/// comma, a quote or a line break.
+std::string csv_field(const std::string& s);
+
 /// An OpenFAST output channel that a model can provide.
 struct OpenFastChannel {
     const char* name;

@@ -1,5 +1,6 @@
 #include "analysis/rotor_campbell.hpp"
 
+#include "analysis/channels.hpp"
 #include "analysis/svg_plot.hpp"
 #include "analysis/sweep_point.hpp"
 #include "driver/bindings.hpp"
@@ -15,17 +16,6 @@
 #include <map>
 
 namespace yamsc::driver {
-
-namespace {
-
-std::string csv_field(const std::string& s) {
-    if (s.find_first_of(",\"") == std::string::npos) return s;
-    std::string out = "\"";
-    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
-
-} // namespace
 
 std::string rotor_campbell_csv(const std::string& name, const std::vector<RotorCampbellRow>& rows) {
     std::string out = csv_field(name) + ",mode,label,freq_hz,damping_ratio,share\n";
