@@ -23,7 +23,8 @@ const char* usage_text = R"(usage:
                   [--depfile FILE] [--dump=ast|model|module] [-v] [--real double|float]
                   [--jacobians auto|unrolled|tangent] [--sensitivities p1,p2,..]
   yamsc check MODEL.mbd [--json]
-  yamsc eval MODEL.mbd [--q v,..] [--qd v,..] [--u name=v,..] [--set name=v,..] [--t T] --json
+  yamsc eval MODEL.mbd [--q v,..] [--qd v,..] [--u name=v,..] [--set name=v,..] [--t T]
+                       [--compiled] --json
   yamsc lin MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--json]
                       [--trim [--hold dof,..] [--adjust input,..]]
                       [--mbc3 [--azimuths N] [--azimuth dof]]
@@ -177,7 +178,8 @@ int run(int argc, char** argv) {
         return check({a.model(), a.has("--json")}, std::cout, std::cerr);
     }
     if (cmd == "eval") {
-        Args a(argc, argv, 2, {"--q", "--qd", "--u", "--set", "--sid", "--t"}, {"--json"});
+        Args a(argc, argv, 2, {"--q", "--qd", "--u", "--set", "--sid", "--t"},
+               {"--json", "--compiled"});
         EvalOptions o;
         o.model = a.model();
         if (a.has("--q")) o.q = parse_list(a.get("--q"), "--q");
@@ -186,7 +188,8 @@ int run(int argc, char** argv) {
         o.set = a.assignments("--set");
         o.sid = a.get("--sid");
         o.t = a.number("--t", 0.0);
-        return eval(o, std::cout, std::cerr);
+        o.compiled = a.has("--compiled");
+        return o.compiled ? eval_compiled(o, std::cout, std::cerr) : eval(o, std::cout, std::cerr);
     }
     if (cmd == "lin") {
         Args a(argc, argv, 2,

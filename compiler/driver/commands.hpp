@@ -61,6 +61,7 @@ struct EvalOptions {
     std::string sid;                // --sid body=file.sid,..
     double t = 0;
     bool json = true;
+    bool compiled = false; // --compiled: from the compiled code (eval_compiled.cpp)
 };
 
 /// --format of `lin`: the modes as a table (or --json), or OpenFAST's .lin files too.
@@ -161,6 +162,7 @@ struct RotorTableOptions {
 int compile(const CompileOptions& o, std::ostream& out, std::ostream& err);
 int check(const CheckOptions& o, std::ostream& out, std::ostream& err);
 int eval(const EvalOptions& o, std::ostream& out, std::ostream& err);
+int eval_compiled(const EvalOptions& o, std::ostream& out, std::ostream& err);
 int lin(const LinOptions& o, std::ostream& out, std::ostream& err);
 int trim(const TrimOptions& o, std::ostream& out, std::ostream& err);
 int sim(const SimOptions& o, std::ostream& out, std::ostream& err);

@@ -70,6 +70,14 @@ def test_turbine_evaluation_equals_eval(models, cli, model):
                          (m.forcing(q, qd, u, 0.5), ref["F"]), (m.outputs(q, qd, u, 0.5), ref["y"])):
         theirs = np.array(theirs)
         np.testing.assert_allclose(ours, theirs, rtol=0, atol=2e-14 * np.abs(theirs).max())
+    # `yamsc eval --compiled` runs the same compiled code: equal to the last bit.
+    compiled = cli("eval", models / f"{model}.mbd", "--compiled", "--q", ",".join(map(repr, q)),
+                   "--qd", ",".join(map(repr, qd)),
+                   "--u", ",".join(f"{i.name}={v!r}" for i, v in zip(m.inputs, u)), "--t", 0.5,
+                   "--json", parse_json=True)
+    assert np.array_equal(m.mass_matrix(q, u=u, t=0.5), np.array(compiled["M"]))
+    assert np.array_equal(m.forcing(q, qd, u, 0.5), np.array(compiled["F"]))
+    assert np.array_equal(m.outputs(q, qd, u, 0.5), np.array(compiled["y"]))
 
 
 def test_jacobians_agree_with_differences(pendulum):
