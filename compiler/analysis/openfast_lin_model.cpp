@@ -133,7 +133,9 @@ FreeDynamics free_dynamics(const runtime::ModelView& v, const std::vector<double
     FreeDynamics out;
     const Eigen::VectorXd a = ldlt.solve(Ff);
     out.qdd.assign(a.data(), a.data() + a.size());
-    out.B_lower = ldlt.solve(Fu);
+    // Without inputs B is empty: Eigen's triangular solve must not see a
+    // matrix without columns (it binds a reference to its null data).
+    out.B_lower = nu > 0 ? RowMajor(ldlt.solve(Fu)) : RowMajor(n, 0);
     return out;
 }
 
