@@ -4,6 +4,7 @@
 #include "analysis/rotor_modes.hpp"
 
 #include <yamsc/atomic_file.hpp>
+#include <yamsc/linear_view.hpp>
 #include <yamsc/mbc3.hpp>
 #include <yamsc/second_order.hpp>
 
@@ -233,8 +234,8 @@ LinFile lin_file(const model::Model& model, const runtime::ModelView& v, const L
     // Outputs and their derivatives (central differences of the generated outputs; the
     // held DOFs stay put).
     if (ny > 0 && v.outputs) {
-        std::vector<double> q = p.q, qd = p.qd, u = p.u, y0(static_cast<std::size_t>(ny)),
-                            yp(y0.size()), ym(y0.size());
+        const std::vector<double>&q = p.q, &qd = p.qd, &u = p.u;
+        std::vector<double> y0(static_cast<std::size_t>(ny));
         auto eval = [&](std::vector<double>& y) {
             v.outputs(0.0, q.data(), qd.data(), u.empty() ? nullptr : u.data(), y.data());
         };
@@ -247,29 +248,19 @@ LinFile lin_file(const model::Model& model, const runtime::ModelView& v, const L
             f.y.push_back({y0[static_cast<std::size_t>(r)], in_blade_triplet(name, v.output_names),
                            0, module + name + ", (" + (unit.empty() ? "-" : unit) + ")"});
         }
-        auto column = [&](double& value, std::vector<double>& out, std::size_t col,
-                          std::size_t cols) {
-            const double saved = value, h = 1e-6 * std::max(1.0, std::fabs(saved));
-            value = saved + h;
-            eval(yp);
-            value = saved - h;
-            eval(ym);
-            value = saved;
-            for (int r = 0; r < ny; ++r)
-                out[static_cast<std::size_t>(r) * cols + col] =
-                    (yp[static_cast<std::size_t>(r)] - ym[static_cast<std::size_t>(r)]) / (2 * h);
-        };
+        // C over every DOF, then the columns of the free ones (held DOFs stay put).
+        std::vector<double> x0 = q;
+        x0.insert(x0.end(), qd.begin(), qd.end());
+        const runtime::OutputMatrices cd = runtime::output_matrices(v, x0, u, 0.0);
+        const int nx_all = 2 * v.nq;
         f.C = {ny, nx, std::vector<double>(static_cast<std::size_t>(ny * nx))};
-        for (int d = 0; d < 2; ++d)
-            for (int k = 0; k < n; ++k) {
-                const auto i = static_cast<std::size_t>(free[static_cast<std::size_t>(k)]);
-                column(d == 0 ? q[i] : qd[i], f.C.data, static_cast<std::size_t>(d * n + k),
-                       static_cast<std::size_t>(nx));
-            }
-        f.D = {ny, nu, std::vector<double>(static_cast<std::size_t>(ny * nu))};
-        for (int j = 0; j < nu; ++j)
-            column(u[static_cast<std::size_t>(j)], f.D.data, static_cast<std::size_t>(j),
-                   static_cast<std::size_t>(nu));
+        for (int r = 0; r < ny; ++r)
+            for (int d = 0; d < 2; ++d)
+                for (int k = 0; k < n; ++k)
+                    f.C.data[static_cast<std::size_t>(r * nx + d * n + k)] =
+                        cd.C[static_cast<std::size_t>(r * nx_all + d * v.nq +
+                                                      free[static_cast<std::size_t>(k)])];
+        f.D = {ny, nu, cd.D};
     }
 
     // x_file = S P x: A -> S P A Pᵀ S, B -> S P B, C -> C Pᵀ S.

@@ -5,11 +5,11 @@
 #include "batch_functions.hpp"
 #include "input_table.hpp"
 #include "model_handle.hpp"
-#include "output_matrices.hpp"
 
 #include "diag/errors.hpp"
 
 #include <yamsc/dynamic_model.hpp>
+#include <yamsc/linear_view.hpp>
 #include <yamsc/modal.hpp>
 #include <yamsc/second_order.hpp>
 #include <yamsc/simulation.hpp>
@@ -107,7 +107,7 @@ py::dict linear(ModelHandle& h, const Assignments& at, const Assignments& u_give
     out["A"] = matrix(lm.A, 2 * nq, 2 * nq);
     out["B"] = matrix(lm.B, 2 * nq, nu);
     if (c.v.outputs) {
-        yamsc::python::OutputMatrices cd = yamsc::python::output_matrices(c.v, x0, u, 0.0);
+        yamsc::runtime::OutputMatrices cd = yamsc::runtime::output_matrices(c.v, x0, u, 0.0);
         out["C"] = matrix(std::move(cd.C), ny, 2 * nq);
         out["D"] = matrix(std::move(cd.D), ny, nu);
     }

@@ -33,4 +33,16 @@ LinearSystem linearize_view(const ModelView& view, const std::vector<double>& x0
 /// that are linear in the state, such as DOFs in other units).
 ModelView linear_view(const ModelView& nonlinear, const LinearSystem& system);
 
+/// The output part of a linear model, y = y0 + C (x - x0) + D (u - u0): the
+/// generated code has no output Jacobians, so C and D are central differences
+/// of the outputs routine (Python's linear(), `lin --format openfast-lin`).
+struct OutputMatrices {
+    std::vector<double> C; ///< ny x 2nq, row-major
+    std::vector<double> D; ///< ny x nu, row-major
+};
+
+/// At x0 = [q0, q0'], u0, t0. Throws std::invalid_argument without an outputs routine.
+OutputMatrices output_matrices(const runtime::ModelView& view, const std::vector<double>& x0,
+                               const std::vector<double>& u0, double t0);
+
 } // namespace yamsc::runtime
