@@ -162,7 +162,16 @@ template <class C> struct primary : p::sor<number_literal, name_or_call<C>, pare
 
 struct component_name : p::seq<p::one<'x', 'y', 'z'>, p::not_at<p::identifier_other>> {};
 struct component : p::seq<p::one<'.'>, p::must<component_name>> {};
-template <class C> struct postfix : p::seq<primary<C>, p::star<component>> {};
+// `tower.tip`, `tower.node(10)`: a section of a flexible body, for the reaction
+// loads through it (`reaction_moment(tower.node(10))`; the checker allows it there only).
+struct node_open : p::one<'('> {};
+struct node_close : p::one<')'> {};
+struct section_tip : kw_tip {};
+template <class C>
+struct section_node : p::seq<kw_node, blanks, p::must<node_open>, gap,
+                             p::must<expression<typename C::inner>>, gap, p::must<node_close>> {};
+template <class C> struct section : p::seq<p::one<'.'>, p::sor<section_tip, section_node<C>>> {};
+template <class C> struct postfix : p::seq<primary<C>, p::star<p::sor<section<C>, component>>> {};
 
 template <class C> struct pow_op : p::seq<p::one<'^'>, typename C::sep, p::must<exponent<C>>> {};
 template <class C> struct power : p::seq<postfix<C>, p::opt<typename C::sep, pow_op<C>>> {};
@@ -324,9 +333,7 @@ struct flexible_statement
 
 struct parent_body : identifier {};
 struct parent_tip : kw_tip {};
-struct node_open : p::one<'('> {};
 struct node_number : expression<bracket_context> {};
-struct node_close : p::one<')'> {};
 struct parent_node : p::seq<kw_node, blanks, p::must<node_open>, gap, p::must<node_number>, gap,
                             p::must<node_close>> {};
 struct parent_point : p::sor<parent_tip, parent_node> {};

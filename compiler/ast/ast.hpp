@@ -26,6 +26,11 @@ struct Expr {
         call,      // text: function name (sin, cos, ..., position, velocity, ...); args
         vector,    // (args[0], args[1], args[2]); also longer tuples
         component, // args[0].text  with text one of x, y, z
+        // A section of a flexible body: text "tip" (args[0], the body name) or
+        // "node" (args[0] the body name, args[1] the node number). The checker
+        // resolves it: text is then the body's name, primes the SID node's index
+        // (0-based), and args empty.
+        section,
     };
     Kind kind = Kind::number;
     Loc loc;

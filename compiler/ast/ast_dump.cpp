@@ -26,6 +26,7 @@ Level level_of(const Expr& e) {
     case Expr::Kind::pow:
         return power;
     case Expr::Kind::component:
+    case Expr::Kind::section:
         return postfix;
     case Expr::Kind::number:
     case Expr::Kind::name:
@@ -85,6 +86,11 @@ std::string bare(const Expr& e) {
         return "(" + list(e.args) + ")";
     case Expr::Kind::component:
         return arg(e, 0, postfix) + "." + e.text;
+    case Expr::Kind::section:
+        if (e.args.empty()) // checked: the body and the node's index
+            return e.text + ".node[" + std::to_string(e.primes) + "]";
+        return arg(e, 0, postfix) + "." + e.text +
+               (e.args.size() > 1 ? "(" + print(e.args[1], Level{}) + ")" : "");
     }
     return "<?>";
 }

@@ -133,4 +133,35 @@ sid::Sid make_sid(const Beam& beam) {
     return sid;
 }
 
+sid::Sid make_section_sid(const Beam& beam, int node) {
+    if (auto problem = check_beam(beam)) throw diag::InternalError("make_section_sid: " + *problem);
+    SampledBeam b = sample_beam(beam);
+    const std::vector<std::size_t>& nodes = b.grid.nodes();
+    if (node < 0 || static_cast<std::size_t>(node) >= nodes.size())
+        throw diag::InternalError("make_section_sid: no node " + std::to_string(node));
+    // The part beyond the cut is the beam with no mass inboard of it: every
+    // integral (the axial loads of the geometric stiffness too) then runs over it
+    // alone, with the positions and shapes of the whole beam.
+    const std::size_t cut = nodes[static_cast<std::size_t>(node)];
+    for (std::size_t i = 0; i < cut; ++i) b.m[i] = 0;
+    const double w = b.grid.weights()[cut];
+    if (w > 0) {
+        // ElastoDyn's gauge on an element centre (its TwHt/Spn loads): half the
+        // element is beyond the cut, moving with the node, its arm a quarter of the
+        // element along the undeformed axis.
+        b.m[cut] *= 0.5;
+        b.s0[cut][2] += 0.25 * w;
+    }
+    sid::Sid sid;
+    sid.nq = static_cast<int>(beam.modes.size());
+    for (const Mode& m : beam.modes) sid.mode_names.push_back(m.name);
+    add_inertia_integrals(b, sid);
+    add_geometric_stiffness(b, sid);
+    // Elastic forces are internal to the part: only the inertia terms are used.
+    sid.Ke = sid::Taylor::zeros(0, sid.nq, sid.nq, sid.nq, 2);
+    sid.De = sid::Taylor::zeros(0, sid.nq, sid.nq, sid.nq, 1);
+    sid.ksigma = sid::Taylor::zeros(0, sid.nq, 1, sid.nq, 0);
+    return sid;
+}
+
 } // namespace yamsc::beam

@@ -57,6 +57,14 @@ std::optional<sid::Sid> FileSource::beam_sid(const beam::Beam& beam, const std::
     return beam::make_sid(beam);
 }
 
+std::optional<sid::Sid> FileSource::section_sid(const beam::Beam& beam, int node,
+                                                const diag::Location& at,
+                                                diag::Diagnostics& diags) {
+    (void)at;
+    (void)diags;
+    return beam::make_section_sid(beam, node); // the beam passed beam_sid()
+}
+
 std::string folder_of(const std::string& model_path) {
     const auto slash = model_path.rfind('/');
     return slash == std::string::npos ? std::string() : model_path.substr(0, slash + 1);

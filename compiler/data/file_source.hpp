@@ -25,6 +25,8 @@ public:
                                         diag::Diagnostics& diags) override;
     std::optional<sid::Sid> beam_sid(const beam::Beam& beam, const std::string& body,
                                      const diag::Location& at, diag::Diagnostics& diags) override;
+    std::optional<sid::Sid> section_sid(const beam::Beam& beam, int node, const diag::Location& at,
+                                        diag::Diagnostics& diags) override;
 
     /// The paths of the files read so far, in reading order.
     const std::vector<std::string>& files_read() const { return files_read_; }

@@ -658,8 +658,67 @@ private:
             out.frame = frame_ref(o.frame, -1);
             bool ok = exprs_.scalar(o.value, ctx) && out.frame >= -1;
             out.value = o.value;
+            ok = ok && resolve_sections(out.value);
             if (ok) model_.outputs.push_back(out);
         }
+    }
+
+    /// Each `body.node(k)` / `body.tip` in a checked output becomes the body's name and
+    /// its SID node's index, and the body gets the inertia integrals of the part
+    /// beyond that node (asked of the data stage once per node).
+    bool resolve_sections(Expr& e) {
+        bool ok = true;
+        for (Expr& a : e.args) ok = resolve_sections(a) && ok;
+        if (e.kind != Expr::Kind::section || !ok) return ok;
+        const std::string name = e.args[0].text;
+        const int b = model_.body_index(name);
+        if (b < 0) return false; // reported with the body
+        Body& body = model_.bodies[static_cast<std::size_t>(b)];
+        if (!body.flex) {
+            diags_.error(Kind::WrongKind, e.loc,
+                         "'" + name + "' is a rigid body: a section cuts a flexible one; its " +
+                             "joint's load is reaction_moment(" + name + ")");
+            return false;
+        }
+        Flexible& flex = *body.flex;
+        if (!flex.beam || flex.symbolic) {
+            diags_.error(Kind::NotSupported, e.loc,
+                         "flexible body '" + name + "' cannot be cut at a section: its " +
+                             (flex.symbolic ? "shape integrals are symbolic parameters"
+                                            : "SID holds integrals over the whole body only") +
+                             "; the loads through a section need the mass distribution of a " +
+                             "`beam` block (docs/language.md)");
+            return false;
+        }
+        const auto& nodes = flex.sid->nodes;
+        int node = -1;
+        if (e.text == "tip") {
+            node = static_cast<int>(nodes.size()) - 1;
+        } else {
+            std::string why;
+            auto k = evaluate_constant(e.args[1], why);
+            for (std::size_t i = 0; k && i < nodes.size(); ++i)
+                if (nodes[i].id == *k) node = static_cast<int>(i);
+            if (node < 0) {
+                diags_.error(Kind::InvalidValue, e.args[1].loc,
+                             "flexible body '" + name + "' has no node " +
+                                 (k ? std::to_string(static_cast<long long>(*k)) : "like that") +
+                                 " (its nodes: 1 to " + std::to_string(nodes.size()) + ")");
+                return false;
+            }
+        }
+        if (!flex.sections.count(node)) {
+            auto part = data_.section_sid(*flex.beam, node, e.loc, diags_);
+            if (!part) return false;
+            flex.sections.emplace(node, std::make_shared<const sid::Sid>(std::move(*part)));
+        }
+        Expr resolved;
+        resolved.kind = Expr::Kind::section;
+        resolved.loc = e.loc;
+        resolved.text = name;
+        resolved.primes = node;
+        e = std::move(resolved);
+        return true;
     }
 
     // Every DOF must drive a mode of one flexible body, or one step in each joint it

@@ -37,6 +37,18 @@ public:
     virtual std::optional<sid::Sid> beam_sid(const beam::Beam& beam, const std::string& body,
                                              const diag::Location& at,
                                              diag::Diagnostics& diags) = 0;
+
+    /// The inertia integrals of the part of a (valid) beam beyond its SID node
+    /// `node` (0-based), for the loads through that section. nullopt after
+    /// reporting at `at` (the default: this source cannot cut beams).
+    virtual std::optional<sid::Sid> section_sid(const beam::Beam& beam, int node,
+                                                const diag::Location& at,
+                                                diag::Diagnostics& diags) {
+        (void)beam;
+        (void)node;
+        diags.error(diag::Kind::NotSupported, at, "this data source cannot cut beams");
+        return std::nullopt;
+    }
 };
 
 } // namespace yamsc::model

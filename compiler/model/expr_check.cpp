@@ -126,6 +126,16 @@ Shape ExprChecker::check_call(const Expr& e, const ExprContext& ctx) {
                          e.text + "() can only be used in an output, not in " + ctx.what);
             return Shape::invalid;
         }
+        if (e.args.size() == 1 && e.args[0].kind == K::section) {
+            if (!is_reaction_function(e.text)) {
+                diags_.error(Kind::WrongKind, e.args[0].loc,
+                             e.text + "() takes a body or point; a section (`" +
+                                 ast::to_string(e.args[0]) +
+                                 "`) is an argument of reaction_force() and reaction_moment()");
+                return Shape::invalid;
+            }
+            return check_section(e.args[0]) ? Shape::vector : Shape::invalid;
+        }
         if (e.args.size() != 1 || e.args[0].kind != K::name || e.args[0].primes != 0) {
             diags_.error(Kind::InvalidValue, e.loc,
                          e.text + "() takes the name of one body or point");
@@ -160,7 +170,8 @@ Shape ExprChecker::check_call(const Expr& e, const ExprContext& ctx) {
             diags_.error(Kind::WrongKind, target.loc,
                          e.text + "() takes a body; '" + target.text + "' is a point" +
                              (is_reaction_function(e.text)
-                                  ? " (loads through a section are not supported yet)"
+                                  ? " (a section of a flexible body is written `tower.node(10)` "
+                                    "or `tower.tip`)"
                                   : ""));
             return Shape::invalid;
         }
@@ -197,6 +208,25 @@ Shape ExprChecker::check_call(const Expr& e, const ExprContext& ctx) {
     bool ok = true;
     for (const Expr& a : e.args) ok = scalar(a, ctx) && ok;
     return ok ? Shape::scalar : Shape::invalid;
+}
+
+bool ExprChecker::check_section(const Expr& e) {
+    const Expr& body = e.args[0];
+    auto it = body.kind == K::name && body.primes == 0 ? names_.find(body.text) : names_.end();
+    if (it == names_.end() || it->second.kind != NameKind::body) {
+        diags_.error(
+            body.kind == K::name && it == names_.end() ? Kind::UnknownName : Kind::WrongKind,
+            body.loc, "a section `." + e.text + "` needs the name of a flexible body before it");
+        return false;
+    }
+    if (e.args.size() > 1) {
+        std::string why;
+        if (!evaluate_constant(e.args[1], why)) {
+            diags_.error(Kind::NotConstant, e.args[1].loc, "the node number " + why);
+            return false;
+        }
+    }
+    return true; // the checker resolves the node (checker.cpp)
 }
 
 Shape ExprChecker::check(const Expr& e, const ExprContext& ctx) {
@@ -263,6 +293,11 @@ Shape ExprChecker::check(const Expr& e, const ExprContext& ctx) {
         for (const Expr& a : e.args) ok = scalar(a, ctx) && ok;
         return ok ? Shape::vector : Shape::invalid;
     }
+    case K::section:
+        diags_.error(Kind::WrongKind, e.loc,
+                     "a section (`" + ast::to_string(e) +
+                         "`) is only an argument of reaction_force() and reaction_moment()");
+        return Shape::invalid;
     case K::component: {
         Shape s = check(e.args[0], ctx);
         if (s == Shape::invalid) return s;
@@ -395,6 +430,7 @@ std::optional<double> eval(const Expr& e, std::string& why, const NameValues* na
     }
     case K::vector:
     case K::component:
+    case K::section:
         why = "is not a scalar";
         return std::nullopt;
     }

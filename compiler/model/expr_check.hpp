@@ -39,6 +39,8 @@ public:
 private:
     Shape check_name(const Expr& e, const ExprContext& ctx);
     Shape check_call(const Expr& e, const ExprContext& ctx);
+    /// `body.node(k)` or `body.tip` as the argument of a reaction: a body and a constant.
+    bool check_section(const Expr& e);
     const SymbolTable& names_;
     const std::vector<Input>& inputs_;
     diag::Diagnostics& diags_;

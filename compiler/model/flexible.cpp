@@ -106,6 +106,7 @@ public:
             if (!beam) return std::nullopt;
             data = in_.data.beam_sid(*beam, b_.name, b_.beam->loc, in_.diags);
             if (!data) return std::nullopt;
+            flex.beam = std::make_shared<const beam::Beam>(*beam);
             flex.dofs.clear();
             for (const auto& m : beam_modes_) {
                 flex.sid_modes.push_back(static_cast<int>(flex.dofs.size()));

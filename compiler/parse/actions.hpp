@@ -80,6 +80,13 @@ YAMSC_CONTEXT_ACTION(paren_group) {
 YAMSC_ACTION(component) {
     st.wrap_top(ExprKind::component, in.position(), std::string(1, in.string_view().back()));
 }
+YAMSC_ACTION(section_tip) {
+    st.wrap_top(ExprKind::section, in.position(), "tip");
+}
+YAMSC_CONTEXT_ACTION(section_node) {
+    st.combine_top(ExprKind::section, in.position());
+    st.top().text = "node";
+}
 YAMSC_CONTEXT_ACTION(pow_op) {
     st.combine_top(ExprKind::pow, in.position());
 }

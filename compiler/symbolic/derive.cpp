@@ -191,10 +191,29 @@ private:
     }
 
     // ---- outputs ------------------------------------------------------------------------
-    Vec3 kinematic(const std::string& fn, const std::string& target, int frame) {
+    /// The frame of SID node `node` of flexible body `body`: where a joint on it
+    /// starts (elastic rotation `exact`, about x, then y, then z).
+    const FrameState& node_frame(int body, int node) {
+        auto it = node_frames_.find({body, node});
+        if (it != node_frames_.end()) return it->second;
+        model::Step step;
+        step.kind = model::Step::Kind::node;
+        step.node = node;
+        step.exact_rotation = true;
+        const auto b = static_cast<std::size_t>(body);
+        FrameState f = apply_step(frames_[b], step, sym_, &m_.bodies[b]);
+        return node_frames_.emplace(std::make_pair(body, node), std::move(f)).first->second;
+    }
+
+    Vec3 kinematic(const std::string& fn, const model::Expr& target_expr, int frame) {
+        const std::string& target = target_expr.text;
         if (model::is_reaction_function(fn)) {
             if (!reactions_) reactions_.emplace(m_, frames_, sym_, applied_wrenches());
-            const Wrench& w = reactions_->of(m_.body_index(target));
+            const int body = m_.body_index(target);
+            const Wrench& w = target_expr.kind == model::Expr::Kind::section
+                                  ? reactions_->section(body, target_expr.primes,
+                                                        node_frame(body, target_expr.primes))
+                                  : reactions_->of(body);
             const Vec3& g = fn == "reaction_force" ? w.force : w.moment;
             return frame >= 0 ? transpose_times(frames_[static_cast<std::size_t>(frame)].R, g) : g;
         }
@@ -230,7 +249,7 @@ private:
         for (const auto& d : sym_.dofs()) qdd.push_back(d.qdd);
         DependsOn uses_qdd(qdd);
         for (const auto& o : m_.outputs) {
-            KinematicsHook hook = [&](const std::string& fn, const std::string& target) {
+            KinematicsHook hook = [&](const std::string& fn, const model::Expr& target) {
                 return kinematic(fn, target, o.frame);
             };
             Output y{o.name, o.doc, to_ginac(o.value, sym_, hook), {}};
@@ -246,8 +265,9 @@ private:
     Symbols sym_;
     bool mass_matrix_;
     std::vector<FrameState> frames_;
-    std::vector<exvector> Ma_terms_;     // terms of (M a)_r
-    std::optional<Reactions> reactions_; // built when an output asks for one
+    std::vector<exvector> Ma_terms_;                        // terms of (M a)_r
+    std::optional<Reactions> reactions_;                    // built when an output asks for one
+    std::map<std::pair<int, int>, FrameState> node_frames_; // (body, node): cut sections
     Equations eq_;
 };
 

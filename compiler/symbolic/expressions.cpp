@@ -137,7 +137,7 @@ struct Converter {
             return {{scalar(e.args[0]), scalar(e.args[1]), scalar(e.args[2])}};
         case K::call: {
             if (!kin) throw diag::InternalError("kinematic function outside outputs");
-            return kin(e.text, e.args[0].text);
+            return kin(e.text, e.args[0]);
         }
         case K::neg:
             return -vec(e.args[0]);
@@ -208,6 +208,7 @@ struct Converter {
             return v[i];
         }
         case K::vector:
+        case K::section:
             throw diag::InternalError("vector where a scalar was checked");
         }
         throw diag::InternalError("unknown expression kind");

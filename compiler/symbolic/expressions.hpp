@@ -44,7 +44,7 @@ private:
 };
 
 /// Vector value of a kinematic call in an output: position(b), velocity(b), ...
-using KinematicsHook = std::function<Vec3(const std::string& function, const std::string& target)>;
+using KinematicsHook = std::function<Vec3(const std::string& function, const model::Expr& target)>;
 
 /// Converts a scalar expression (checked) to GiNaC.
 GiNaC::ex to_ginac(const model::Expr& e, const Symbols& symbols, const KinematicsHook& kin = {});

@@ -1,5 +1,6 @@
 #include "symbolic/reactions.hpp"
 
+#include "diag/errors.hpp"
 #include "symbolic/flexible_body.hpp"
 
 #include <utility>
@@ -18,7 +19,7 @@ Mat3 inertia_tensor(const model::Body& b, const Symbols& s) {
 
 Reactions::Reactions(const model::Model& m, const std::vector<FrameState>& frames,
                      const Symbols& symbols, std::vector<Wrench> applied)
-    : m_(m), frames_(frames), symbols_(symbols), loads_(std::move(applied)) {
+    : m_(m), frames_(frames), symbols_(symbols), applied_(std::move(applied)), loads_(applied_) {
     for (const auto& d : symbols.dofs()) qdd_.emplace_back(d.qdd);
     for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
         const Wrench w = load(b);
@@ -73,6 +74,51 @@ const Wrench& Reactions::of(int body) {
         total.moment = total.moment - f.R * loads_[i].moment - cross(f.r - origin, force);
     }
     return done_.emplace(body, total).first->second;
+}
+
+/// The SID node a body's joint starts at on its flexible parent, -1 for none
+/// (the parent's frame: its root).
+static int attachment_node(const model::Body& child) {
+    if (child.steps.empty() || child.steps.front().kind != model::Step::Kind::node) return -1;
+    return child.steps.front().node;
+}
+
+const Wrench& Reactions::section(int body, int node, const FrameState& cut) {
+    auto it = sections_.find({body, node});
+    if (it != sections_.end()) return it->second;
+    const auto b = static_cast<std::size_t>(body);
+    const model::Body& whole = m_.bodies[b];
+    if (!whole.flex || !whole.flex->sections.count(node))
+        throw diag::InternalError("a section without its integrals: " + whole.name);
+    // The part beyond the cut is the body with the shape integrals of that part:
+    // its momentum rate and weight by the same formulas as the whole body's.
+    model::Body part = whole;
+    part.flex->sid = whole.flex->sections.at(node);
+    const FrameState& f = frames_[b];
+    const Vec3 g = transpose_times(f.R, to_ginac(m_.gravity, symbols_));
+    auto [force, moment] = flexible_body_wrench(part, f, g, symbols_, qdd_);
+    const bool root = node == 0; // what acts on the body's frame acts on its root
+    if (root) {
+        force = force + applied_[b].force;
+        moment = moment + applied_[b].moment;
+    }
+    const Vec3& P = cut.r;
+    const Vec3 F = f.R * force;
+    Wrench total;
+    total.force = -F;
+    total.moment = -(f.R * moment) - cross(f.r - P, F);
+    // Every body attached beyond the cut (at a node at or past it, or to the
+    // frame when cutting at the root) through its joint's reaction.
+    for (std::size_t i = b + 1; i < m_.bodies.size(); ++i) {
+        const model::Body& child = m_.bodies[i];
+        if (child.parent != body) continue;
+        const int at = attachment_node(child);
+        if (!(at >= node || (root && at < 0))) continue;
+        const Wrench& w = of(static_cast<int>(i));
+        total.force = total.force + w.force;
+        total.moment = total.moment + w.moment + cross(frames_[i].r - P, w.force);
+    }
+    return sections_.emplace(std::make_pair(body, node), total).first->second;
 }
 
 } // namespace yamsc::symbolic

@@ -28,6 +28,12 @@ public:
     /// built once per body.
     const Wrench& of(int body);
 
+    /// What the part of flexible `body` inboard of its SID node `node` transmits to
+    /// the part beyond it (with every body attached there), ground axes, about the
+    /// deformed node `cut` (its frame: the node step's); built once per section.
+    /// Needs the body's section integrals (model::Flexible::sections).
+    const Wrench& section(int body, int node, const FrameState& cut);
+
 private:
     /// Gravity, inertia and applied loads of one body about its origin, its axes.
     Wrench load(std::size_t b) const;
@@ -37,8 +43,10 @@ private:
     const std::vector<FrameState>& frames_;
     const Symbols& symbols_;
     std::vector<GiNaC::ex> qdd_;
-    std::vector<Wrench> loads_; // per body: load(b)
+    std::vector<Wrench> applied_; // per body: its applied forces and torques
+    std::vector<Wrench> loads_;   // per body: applied_ + load(b)
     std::map<int, Wrench> done_;
+    std::map<std::pair<int, int>, Wrench> sections_;
 };
 
 } // namespace yamsc::symbolic

@@ -41,6 +41,8 @@ std::string sexpr(const ast::Expr& e) {
         return "(vec" + args() + ")";
     case K::component:
         return "(." + e.text + args() + ")";
+    case K::section:
+        return "(section " + e.text + args() + ")";
     }
     return "?";
 }
