@@ -82,10 +82,12 @@ YAMSC_ACTION(component) {
 }
 YAMSC_ACTION(section_tip) {
     st.wrap_top(ExprKind::section, in.position(), "tip");
+    st.top().loc = st.top().args[0].loc; // `tower.tip` is where `tower` is
 }
 YAMSC_CONTEXT_ACTION(section_node) {
     st.combine_top(ExprKind::section, in.position());
     st.top().text = "node";
+    st.top().loc = st.top().args[0].loc;
 }
 YAMSC_CONTEXT_ACTION(pow_op) {
     st.combine_top(ExprKind::pow, in.position());

@@ -138,6 +138,13 @@ TEST_CASE("calls, vectors, parentheses and components") {
     CHECK(tree("-v.x^2") == "(neg (^ (.x v) 2))");
     CHECK(tree("(1,\n  2, # second\n  3)") == "(vec 1 2 3)");
     CHECK(tree("f(a,\n b)") == "(call f a b)");
+    // Sections of a flexible body (the checker allows them in reactions only).
+    CHECK(tree("reaction_moment(tower.node(10)).y") ==
+          "(.y (call reaction_moment (section node tower 10)))");
+    CHECK(tree("reaction_force(blade.tip).x") == "(.x (call reaction_force (section tip blade)))");
+    CHECK(tree("tower.node (2 + 1).z") == "(.z (section node tower (+ 2 1)))");
+    CHECK(ast::to_string(expr_ok("reaction_moment(tower.node(10)).y")) ==
+          "reaction_moment(tower.node(10)).y");
 }
 
 TEST_CASE("numbers keep their text exactly") {
