@@ -446,7 +446,15 @@ struct output_name : identifier {};
 struct output_equals : p::one<'='> {};
 struct output_value : line_expression {};
 struct output_frame : identifier {};
-struct output_in : p::seq<kw_in, blanks, p::must<output_frame>> {};
+// `in tower.node(10)`, `in blade.tip`: the frame of a node of a flexible body (as a
+// joint on it would start), for the loads through its section.
+struct output_frame_tip : kw_tip {};
+struct output_frame_node : expression<bracket_context> {};
+struct output_frame_section
+    : p::sor<output_frame_tip, p::seq<kw_node, blanks, p::must<node_open>, gap,
+                                      p::must<output_frame_node>, gap, p::must<node_close>>> {};
+struct output_in : p::seq<kw_in, blanks, p::must<output_frame>,
+                          p::opt<p::one<'.'>, p::must<output_frame_section>>> {};
 struct output_statement
     : p::seq<kw_output, blanks, p::must<output_name>, blanks, p::must<output_equals>, blanks,
              p::must<output_value>, p::opt<blanks, output_in>> {};

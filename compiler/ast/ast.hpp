@@ -210,6 +210,7 @@ struct Output {
     Named id;
     Expr value;
     std::optional<Named> frame; // `in frame` for kinematic vectors; default ground
+    PointRef frame_point;       // `in tower.node(10)`: a node of a flexible frame
     Loc loc;
 };
 

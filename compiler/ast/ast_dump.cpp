@@ -279,8 +279,12 @@ std::string dump(const ModelFile& file) {
         }
     }
     for (const Output& o : file.outputs) {
-        out += "output " + o.id.name + " = " + to_string(o.value) + frame(o.frame) + at(o.loc) +
-               doc(o.id) + "\n";
+        std::string point;
+        if (o.frame_point.kind == PointRef::Kind::tip) point = ".tip";
+        if (o.frame_point.kind == PointRef::Kind::node && o.frame_point.node)
+            point = ".node(" + to_string(*o.frame_point.node) + ")";
+        out += "output " + o.id.name + " = " + to_string(o.value) + frame(o.frame) + point +
+               at(o.loc) + doc(o.id) + "\n";
     }
     return out;
 }

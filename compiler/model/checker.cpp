@@ -656,11 +656,56 @@ private:
             ctx.time = true;
             ctx.kinematics = true;
             out.frame = frame_ref(o.frame, -1);
-            bool ok = exprs_.scalar(o.value, ctx) && out.frame >= -1;
+            out.frame_node = frame_node(o, out.frame);
+            bool ok = exprs_.scalar(o.value, ctx) && out.frame >= -1 && out.frame_node >= -1;
             out.value = o.value;
             ok = ok && resolve_sections(out.value);
             if (ok) model_.outputs.push_back(out);
         }
+    }
+
+    /// The index of SID node `number` (null: the tip, the last node) of flexible
+    /// `body`, or -1 after reporting.
+    int section_node(const Body& body, const Expr* number, const Loc& loc) {
+        const auto& nodes = body.flex->sid->nodes;
+        if (nodes.empty()) {
+            diags_.error(Kind::InvalidValue, loc,
+                         "flexible body '" + body.name + "' has no nodes in its SID");
+            return -1;
+        }
+        if (!number) return static_cast<int>(nodes.size()) - 1;
+        std::string why;
+        auto k = evaluate_constant(*number, why);
+        for (std::size_t i = 0; k && i < nodes.size(); ++i)
+            if (nodes[i].id == *k) return static_cast<int>(i);
+        std::string ids;
+        for (const auto& n : nodes) ids += (ids.empty() ? "" : ", ") + std::to_string(n.id);
+        if (nodes.size() > 3 &&
+            nodes.back().id - nodes.front().id + 1 == static_cast<int>(nodes.size()))
+            ids = std::to_string(nodes.front().id) + " to " + std::to_string(nodes.back().id);
+        diags_.error(Kind::InvalidValue, number->loc,
+                     "flexible body '" + body.name + "' has no node " +
+                         (k ? std::to_string(static_cast<long long>(*k)) : "like that: " + why) +
+                         " (its nodes: " + ids + ")");
+        return -1;
+    }
+
+    /// `in tower.node(10)`: the node's index; -1 for a plain frame, -2 after reporting.
+    int frame_node(const ast::Output& o, int frame) {
+        if (o.frame_point.kind == ast::PointRef::Kind::origin) return -1;
+        if (frame == -1)
+            diags_.error(Kind::InvalidValue, o.frame_point.loc, "ground has no tip or nodes");
+        if (frame < 0) return -2; // else reported with the frame
+        const Body& body = model_.bodies[static_cast<std::size_t>(frame)];
+        if (!body.flex) {
+            diags_.error(Kind::WrongKind, o.frame_point.loc,
+                         "'" + body.name + "' is a rigid body: only flexible bodies have nodes");
+            return -2;
+        }
+        const int node = section_node(
+            body, o.frame_point.kind == ast::PointRef::Kind::tip ? nullptr : &*o.frame_point.node,
+            o.frame_point.loc);
+        return node < 0 ? -2 : node;
     }
 
     /// Each `body.node(k)` / `body.tip` in a checked output becomes the body's name and
@@ -690,23 +735,8 @@ private:
                              "`beam` block (docs/language.md)");
             return false;
         }
-        const auto& nodes = flex.sid->nodes;
-        int node = -1;
-        if (e.text == "tip") {
-            node = static_cast<int>(nodes.size()) - 1;
-        } else {
-            std::string why;
-            auto k = evaluate_constant(e.args[1], why);
-            for (std::size_t i = 0; k && i < nodes.size(); ++i)
-                if (nodes[i].id == *k) node = static_cast<int>(i);
-            if (node < 0) {
-                diags_.error(Kind::InvalidValue, e.args[1].loc,
-                             "flexible body '" + name + "' has no node " +
-                                 (k ? std::to_string(static_cast<long long>(*k)) : "like that") +
-                                 " (its nodes: 1 to " + std::to_string(nodes.size()) + ")");
-                return false;
-            }
-        }
+        const int node = section_node(body, e.text == "tip" ? nullptr : &e.args[1], e.loc);
+        if (node < 0) return false;
         if (!flex.sections.count(node)) {
             auto part = data_.section_sid(*flex.beam, node, e.loc, diags_);
             if (!part) return false;

@@ -93,7 +93,8 @@ std::string dump(const Model& m) {
             << ast::to_string(g.value) << "\n";
     for (const auto& o : m.outputs)
         out << "  output " << o.name << " = " << ast::to_string(o.value) << " in "
-            << frame_name(m, o.frame) << "\n";
+            << frame_name(m, o.frame)
+            << (o.frame_node >= 0 ? ".node[" + std::to_string(o.frame_node) + "]" : "") << "\n";
     return out.str();
 }
 

@@ -138,6 +138,7 @@ struct Output {
     std::string name, doc;
     Expr value;     // scalar; may use position(), velocity(), angular_velocity() of bodies/points
     int frame = -1; // frame of kinematic vectors (-1: ground)
+    int frame_node = -1; // >= 0: that SID node's frame of flexible body `frame` instead
     Loc loc;
 };
 

@@ -504,6 +504,16 @@ YAMSC_ACTION(output_value) {
 YAMSC_ACTION(output_frame) {
     st.file.outputs.back().frame = ast::Named{in.string(), st.loc(in.position()), {}};
 }
+YAMSC_ACTION(output_frame_tip) {
+    st.file.outputs.back().frame_point.kind = ast::PointRef::Kind::tip;
+    st.file.outputs.back().frame_point.loc = st.loc(in.position());
+}
+YAMSC_ACTION(output_frame_node) {
+    ast::PointRef& point = st.file.outputs.back().frame_point;
+    point.kind = ast::PointRef::Kind::node;
+    point.node = st.pop();
+    point.loc = point.node->loc;
+}
 
 YAMSC_ACTION(kw_point) {
     st.file.points.emplace_back();

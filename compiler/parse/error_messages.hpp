@@ -169,6 +169,8 @@ YAMSC_UNCLOSED_BLOCK_MESSAGE(initial_close,
                              "expected '}' to close the initial block started at {open}");
 YAMSC_ERROR_MESSAGE(output_name, "expected an output name, found {found}");
 YAMSC_ERROR_MESSAGE(output_equals, "expected '=' after the output name, found {found}");
+YAMSC_ERROR_MESSAGE(output_frame_section,
+                    "expected `tip` or `node(k)` after the frame's '.', found {found}");
 YAMSC_ERROR_MESSAGE(output_frame, "expected a frame (a body or ground) after 'in', found {found}");
 YAMSC_ERROR_MESSAGE(point_name, "expected a point name, found {found}");
 YAMSC_ERROR_MESSAGE(point_on, "expected 'on' after the point name, found {found}");

@@ -205,8 +205,14 @@ private:
         return node_frames_.emplace(std::make_pair(body, node), std::move(f)).first->second;
     }
 
-    Vec3 kinematic(const std::string& fn, const model::Expr& target_expr, int frame) {
+    Vec3 kinematic(const std::string& fn, const model::Expr& target_expr, int frame_body,
+                   int frame_node) {
         const std::string& target = target_expr.text;
+        // The axes (and, for positions, the origin) of the output's frame: a body's
+        // or one of its nodes' (`in tower.node(10)`); null for ground.
+        const FrameState* k = frame_body < 0    ? nullptr
+                              : frame_node >= 0 ? &node_frame(frame_body, frame_node)
+                                                : &frames_[static_cast<std::size_t>(frame_body)];
         if (model::is_reaction_function(fn)) {
             if (!reactions_) reactions_.emplace(m_, frames_, sym_, applied_wrenches());
             const int body = m_.body_index(target);
@@ -215,7 +221,7 @@ private:
                                                         node_frame(body, target_expr.primes))
                                   : reactions_->of(body);
             const Vec3& g = fn == "reaction_force" ? w.force : w.moment;
-            return frame >= 0 ? transpose_times(frames_[static_cast<std::size_t>(frame)].R, g) : g;
+            return k ? transpose_times(k->R, g) : g;
         }
         Vec3 r, v, w;
         int body = m_.body_index(target);
@@ -233,15 +239,9 @@ private:
             r = f.r + f.R * at;
             v = f.R * (f.v + cross(f.w, at));
         }
-        if (fn == "position") {
-            if (frame >= 0) {
-                const FrameState& k = frames_[static_cast<std::size_t>(frame)];
-                return transpose_times(k.R, r - k.r);
-            }
-            return r;
-        }
+        if (fn == "position") return k ? transpose_times(k->R, r - k->r) : r;
         const Vec3& g = fn == "velocity" ? v : w;
-        return frame >= 0 ? transpose_times(frames_[static_cast<std::size_t>(frame)].R, g) : g;
+        return k ? transpose_times(k->R, g) : g;
     }
 
     void outputs() {
@@ -250,7 +250,7 @@ private:
         DependsOn uses_qdd(qdd);
         for (const auto& o : m_.outputs) {
             KinematicsHook hook = [&](const std::string& fn, const model::Expr& target) {
-                return kinematic(fn, target, o.frame);
+                return kinematic(fn, target, o.frame, o.frame_node);
             };
             Output y{o.name, o.doc, to_ginac(o.value, sym_, hook), {}};
             // Reactions and q'' read the accelerations: the linear model needs ∂y/∂q''.

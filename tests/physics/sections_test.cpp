@@ -85,6 +85,13 @@ TEST_CASE("sections: a cantilever's mid-span moment is that of the weights beyon
     CHECK(y("My3") == doctest::Approx(expected).epsilon(1e-12));
     CHECK(y("My3_bar") == doctest::Approx(expected).epsilon(1e-12)); // bar's y is ground y
     CHECK(y("Fz3") == doctest::Approx((m * (L - s) + M) * g).epsilon(1e-12));
+    // In the deformed section's axes: the body's turned about y by the slope 2 s q / L^2
+    // (body x is ground -z, body z ground x).
+    const double th = 2 * s * q / (L * L), Fbx = -y("Fz3"), Fbz = y("Fx3");
+    CHECK(y("My3_node") == doctest::Approx(expected).epsilon(1e-12));
+    CHECK(y("Fx3_node") == doctest::Approx(std::cos(th) * Fbx - std::sin(th) * Fbz).epsilon(1e-12));
+    CHECK(y("Fz3_node") == doctest::Approx(std::sin(th) * Fbx + std::cos(th) * Fbz).epsilon(1e-12));
+    CHECK(y("x_tip_node") == doctest::Approx(1.0).epsilon(1e-14)); // z_G in the tip's axes
     // The root node is the body's root joint, the tip node the tip body's joint.
     for (auto [a, b] : {std::pair{"My1", "My"}, {"Fx1", "Fx"}, {"Fz1", "Fz"}}) {
         CAPTURE(a);
