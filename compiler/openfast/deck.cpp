@@ -2,6 +2,8 @@
 // main file, with every entry accounted for (see openfast_deck.hpp).
 #include "openfast/deck.hpp"
 
+#include "openfast/gauges.hpp"
+
 #include "beam/elastodyn_file.hpp"
 #include "driver/files.hpp"
 
@@ -211,6 +213,7 @@ private:
             }
             if (it->second == Use::ignored) ignore(f, e.key, e.line);
         }
+        keep_used_gauges(f);
         for (const std::string& flag : elastodyn_dof_flags()) {
             if (canonical(flag) == "teetdof") continue;
             if (auto v = ed.get_bool(key_of(flag), diags_)) deck_.dofs[flag] = *v;
@@ -292,6 +295,23 @@ private:
         if (deck_.num.count("GBoxEff") && deck_.num["GBoxEff"] != 100)
             warn("GBoxEff", "GBoxEff scales the generator torque, an input of the model: give "
                             "gen_torque with the losses included");
+    }
+
+    /// Gauges that exist become output channels (openfast/gauges.hpp): not ignored.
+    void keep_used_gauges(const diag::SourceFile& f) {
+        const GaugeNodes used = read_gauge_nodes(f);
+        std::vector<std::string> keys;
+        if (!used.tower.empty()) keys.insert(keys.end(), {"ntwgages:", "twrgagnd:"});
+        if (!used.blade.empty()) keys.insert(keys.end(), {"nblgages:", "bldgagnd:"});
+        auto& ignored = deck_.ignored;
+        ignored.erase(std::remove_if(ignored.begin(), ignored.end(),
+                                     [&](const auto& entry) {
+                                         const std::string key = lower(entry.second);
+                                         for (const std::string& k : keys)
+                                             if (key.rfind(k, 0) == 0) return true;
+                                         return false;
+                                     }),
+                      ignored.end());
     }
 
     void ignore(const diag::SourceFile& f, const std::string& key, int line) {

@@ -7,6 +7,8 @@
 // spins about its +x axis (clockwise seen from upwind), blade 1 along +z at azimuth 0.
 #include "openfast/model.hpp"
 
+#include "openfast/gauges.hpp"
+
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -778,6 +780,7 @@ private:
                "kN m");
         output("RotThrust", "-" + frc + ".x / 1000 in " + rotor, "kN");
         output("RotTorq", torque, "kN m");
+        out_ << gauge_outputs(d_, flexible_tower(), flexible_blades(), diags_);
     }
 
     void output(const std::string& name, const std::string& value, const std::string& unit) {

@@ -137,6 +137,46 @@ TEST_CASE("flexible blades, tower modes 2 and the drivetrain: the full 16-DOF on
         CHECK_MESSAGE(text.find(line) != std::string::npos, line);
 }
 
+TEST_CASE("ElastoDyn's strain gauges become section loads in the gauges' deflected axes") {
+    ::mkdir(work_dir.c_str(), 0755);
+    // The 16-DOF onshore deck with two tower and two blade gauges.
+    const std::string nrel = std::string(YAMSC_TEST_DATA_DIR) + "/nrel5mw/";
+    std::string ed = read(nrel + "NREL5MW_ED_Onshore.dat");
+    ed = std::regex_replace(ed, std::regex("\"NRELOffshrBsline5MW_"),
+                            "\"" + nrel + "NRELOffshrBsline5MW_");
+    ed = std::regex_replace(ed, std::regex(" 0   NTwGages"), " 2   NTwGages");
+    ed = std::regex_replace(ed, std::regex(" 10   TwrGagNd"), " 10, 19   TwrGagNd");
+    ed = std::regex_replace(ed, std::regex(" 0   NBlGages"), " 1   NBlGages");
+    const std::string path = work_dir + "/gauges_ED.dat";
+    std::ofstream(path) << ed;
+    yamsc::driver::FromOpenFastOptions o;
+    o.deck = path;
+    o.output = work_dir + "/gauges.mbd";
+    std::ostringstream out, err;
+    REQUIRE(yamsc::driver::from_openfast(o, out, err) == 0);
+    const std::string text = read(o.output);
+    // ElastoDyn's element J is the SID node J + 1; the channels are minus the
+    // sections' loads, the blade's turned by the structural twist (6.55 deg at
+    // element 9 of 17, ElastoDyn's ThetaS).
+    for (const char* line :
+         {"output TwHt1MLxt = -reaction_moment(tower.node(11)).x / 1000 in tower.node(11)",
+          "output TwHt2MLyt = -reaction_moment(tower.node(20)).y / 1000 in tower.node(20)",
+          "output TwHt2MLzt = -reaction_moment(tower.node(20)).z / 1000 in tower.node(20)",
+          "output Spn1MLzb1 = -reaction_moment(blade1.node(10)).z / 1000 in blade1.node(10)",
+          "output Spn1MLxb1 = (-0.993", "output Spn1MLyb1 = (-0.114"})
+        CHECK_MESSAGE(text.find(line) != std::string::npos, line);
+    CHECK(text.find("TwHt3") == std::string::npos);
+    CHECK(text.find("Spn2") == std::string::npos);
+    // Used, so not in the list of ignored entries.
+    CHECK(text.find("NTwGages:") == std::string::npos);
+    CHECK(text.find("BldGagNd:") == std::string::npos);
+    std::ostringstream check_out, check_err;
+    yamsc::driver::CheckOptions c;
+    c.model = o.output;
+    CHECK(yamsc::driver::check(c, check_out, check_err) == 0);
+    CHECK(check_err.str().find("error") == std::string::npos);
+}
+
 TEST_CASE("unknown and unsupported entries are warnings at their line, never dropped") {
     ::mkdir(work_dir.c_str(), 0755);
     // A copy of the land deck's ElastoDyn file with an unknown entry and furling on; its
