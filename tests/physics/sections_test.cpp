@@ -147,6 +147,37 @@ TEST_CASE("sections: ElastoDyn's lumped beam, half the gauge element beyond the 
     }
 }
 
+TEST_CASE("sections: a spinning beam's sections carry the centripetal and tangential loads") {
+    auto eq = test::derive_file("tests/physics/models/sections_spinning.mbd");
+    auto c = test::compile_model(eq);
+    const runtime::ModelView& v = c.view;
+    const double L = 20, m = 300, T = 1e5, Omega = 1.3;
+    const State s = at(v, {0.4, 0.0}, {Omega, 0.0});
+    auto y = [&](const std::string& name) { return output(v, s, name); };
+    // Undeformed, the beam turns as a rigid rod: I = m L^3 / 3, no bending.
+    const double alpha = T / (m * L * L * L / 3);
+    CHECK(s.qdd[0] == doctest::Approx(alpha).epsilon(1e-12));
+    CHECK(std::fabs(s.qdd[1]) < 1e-12);
+    // Beyond z = s the mass accelerates by (tangential α z, radial -Ω² z): the
+    // inboard part pulls it in and pushes it along; the moment about body x of the
+    // tangential force, e_z × e_y = -e_x.
+    for (const auto& [node, z0] : {std::pair{"2", 5.0}, {"4", 15.0}}) {
+        CAPTURE(node);
+        const double radial = -m * Omega * Omega * (L * L - z0 * z0) / 2;
+        const double tangential = m * alpha * (L * L - z0 * z0) / 2;
+        const double moment =
+            -m * alpha * ((L * L * L - z0 * z0 * z0) / 3 - z0 * (L * L - z0 * z0) / 2);
+        CHECK(y(std::string("Fz") + node) == doctest::Approx(radial).epsilon(1e-12));
+        CHECK(y(std::string("Fy") + node) == doctest::Approx(tangential).epsilon(1e-12));
+        CHECK(y(std::string("Mx") + node) == doctest::Approx(moment).epsilon(1e-12));
+    }
+    CHECK(std::fabs(y("Fx2")) < 1e-9);
+    // The torque on the frame acts at the root: the root node's section is the joint's.
+    CHECK(y("Mx1") == doctest::Approx(y("Mx_root")).epsilon(1e-12));
+    MESSAGE("spinning beam: section at z = 5: radial " << y("Fz2") << " N, tangential " << y("Fy2")
+                                                       << " N, moment " << y("Mx2") << " N m");
+}
+
 TEST_CASE("sections: a free-floating beam in motion, root and tip sections equal the joints'") {
     auto eq = test::derive_file("tests/physics/models/sections_free_beam.mbd");
     auto c = test::compile_model(eq);
