@@ -29,7 +29,7 @@ struct Expr {
         // A section of a flexible body: text "tip" (args[0], the body name) or
         // "node" (args[0] the body name, args[1] the node number). The checker
         // resolves it: text is then the body's name, primes the SID node's index
-        // (0-based), and args empty.
+        // (0-based), and args[0] the node's number in the SID (for dumps).
         section,
     };
     Kind kind = Kind::number;

@@ -87,8 +87,8 @@ std::string bare(const Expr& e) {
     case Expr::Kind::component:
         return arg(e, 0, postfix) + "." + e.text;
     case Expr::Kind::section:
-        if (e.args.empty()) // checked: the body and the node's index
-            return e.text + ".node[" + std::to_string(e.primes) + "]";
+        if (e.args.size() == 1 && e.args[0].kind == Expr::Kind::number) // checked
+            return e.text + ".node(" + e.args[0].text + ")";
         return arg(e, 0, postfix) + "." + e.text +
                (e.args.size() > 1 ? "(" + print(e.args[1], Level{}) + ")" : "");
     }

@@ -747,6 +747,11 @@ private:
         resolved.loc = e.loc;
         resolved.text = name;
         resolved.primes = node;
+        Expr id; // for dumps: the node's number in the SID
+        id.kind = Expr::Kind::number;
+        id.loc = e.loc;
+        id.text = std::to_string(flex.sid->nodes[static_cast<std::size_t>(node)].id);
+        resolved.args.push_back(std::move(id));
         e = std::move(resolved);
         return true;
     }
