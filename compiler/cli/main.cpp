@@ -42,7 +42,7 @@ const char* usage_text = R"(usage:
                       [--controller libdiscon.so [--controller-input DISCON.IN]]
   yamsc batch CASES.csv [-o OUTDIR] [--threads N] [--shard k/N] [-q]
   yamsc batch merge OUTDIR... [-o summary.csv]
-  yamsc from-openfast ELASTODYN.dat|DECK.fst [--dofs NAME=on|off,..] -o model.mbd
+  yamsc from-openfast ELASTODYN.dat|DECK.fst [--dofs NAME=on|off,..] [--cp-table FILE] -o model.mbd
   yamsc rotor-table Cp_Ct_Cq.txt -o rotor_table.c [--prefix NAME]
   yamsc sid --elastodyn-tower FILE | --elastodyn-blade FILE --length L [--modes fa1,ss1,..]
             [--stations N] [-o body.sid]
@@ -358,10 +358,11 @@ int run(int argc, char** argv) {
         return batch(o, std::cout, std::cerr);
     }
     if (cmd == "from-openfast") {
-        Args a(argc, argv, 2, {"--dofs", "-o"}, {});
+        Args a(argc, argv, 2, {"--dofs", "-o", "--cp-table"}, {});
         FromOpenFastOptions o;
         o.deck = a.model();
         o.output = a.get("-o");
+        o.cp_table = a.get("--cp-table");
         if (o.output.empty()) throw UsageError("from-openfast needs -o model.mbd");
         for (const std::string& item : comma_list(a.get("--dofs"))) {
             const auto eq = item.find('=');

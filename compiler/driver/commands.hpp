@@ -143,6 +143,7 @@ struct FromOpenFastOptions {
     std::string deck;                               // ElastoDyn main file or .fst
     std::vector<std::pair<std::string, bool>> dofs; // --dofs NAME=on|off (ElastoDyn flag names)
     std::string output;                             // -o model.mbd
+    std::string cp_table; // --cp-table: the rotor block's table (default: the controller's)
 };
 
 struct SidOptions {
