@@ -237,7 +237,7 @@ Definitions definitions(const Module& module, const CNames& names,
 
 EmittedFiles emit_c(const Module& module, const EmitOptions& options) {
     if (!module.externals.empty())
-        throw diag::UserError(module.externals.front().location + ": error: external function '" +
+        throw diag::UserError(module.externals.front().location + ": external function '" +
                               module.externals.front().name +
                               "': external functions are not supported in --lang c yet (use "
                               "--lang cpp)");

@@ -1,5 +1,6 @@
 #include "driver/pipeline.hpp"
 
+#include "codegen/external_wrappers.hpp"
 #include "data/file_source.hpp"
 #include "diag/errors.hpp"
 #include "driver/files.hpp"
@@ -113,6 +114,14 @@ std::vector<ir::External> system_externals(const model::Model& m) {
 }
 
 } // namespace
+
+std::string external_prototypes(const model::Model& m) {
+    codegen::Module module;
+    for (const ir::External& e : system_externals(m))
+        module.externals.push_back({e.name, e.what, e.location, e.first_input, e.results,
+                                    static_cast<int>(e.args.size()), e.user_jacobian});
+    return codegen::external_prototypes(module);
+}
 
 std::string content_digest(const diag::SourceFile& source, const model::Model& m) {
     std::string all = source.text();
