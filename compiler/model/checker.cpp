@@ -675,9 +675,13 @@ private:
             out.loc = e.function.loc;
             bool ok = true;
             std::string why = reserved_reason(out.name);
-            if (why.empty() &&
-                (out.name.rfind("yamsc", 0) == 0 || out.name.rfind("inner_", 0) == 0))
-                why = "is reserved for the generated code's own symbols";
+            // Global C symbols beside the model's namespace and the optional derivatives.
+            if (why.empty() && (out.name.rfind("yamsc", 0) == 0 || out.name == model_.name))
+                why = "is reserved for the generated code's own symbols (the model's name, "
+                      "yamsc*)";
+            for (const auto& other : file_.externals)
+                if (why.empty() && out.name == other.function.name + "_jacobian")
+                    why = "is the derivative of external function '" + other.function.name + "'";
             if (!why.empty()) {
                 diags_.error(Kind::ReservedName, e.function.loc,
                              "external function '" + out.name + "' " + why);
