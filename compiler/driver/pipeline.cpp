@@ -101,8 +101,12 @@ std::vector<ir::External> system_externals(const model::Model& m) {
         x.what = e.kind == model::External::Kind::force    ? "force on " + m.bodies[e.body].name
                  : e.kind == model::External::Kind::torque ? "torque on " + m.bodies[e.body].name
                                                            : "generalized forces";
-        x.location = (e.loc.file ? e.loc.file->path() : std::string("?")) + ":" +
-                     std::to_string(e.loc.line) + ":" + std::to_string(e.loc.col);
+        // The file's name only: compiled models are cached by content, whatever
+        // the folder they were compiled from (analysis/jit_cache.hpp).
+        std::string file = e.loc.file ? e.loc.file->path() : std::string("?");
+        if (const auto slash = file.find_last_of('/'); slash != std::string::npos)
+            file = file.substr(slash + 1);
+        x.location = file + ":" + std::to_string(e.loc.line) + ":" + std::to_string(e.loc.col);
         x.first_input = channel;
         x.results = e.results();
         channel += x.results;
