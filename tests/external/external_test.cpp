@@ -262,3 +262,15 @@ int main() {
                           "run && ./run") == 0);
     }
 }
+
+TEST_CASE("--external takes a library built beforehand") {
+    const std::string dir = scratch_dir("external", "library");
+    REQUIRE(exit_status(std::string(YAMSC_C_COMPILER) + " -shared -fPIC -O2 -o " + dir +
+                        "/libloads.so " + with_jacobians) == 0);
+    const Run r = run_yamsc("lin " + model + " --external " + dir + "/libloads.so --json");
+    REQUIRE(r.status == 0);
+    CHECK(numbers_of(r.out, "K0")[0] ==
+          doctest::Approx(2.0 * 9.81 * 1.5 + 30.0 * 1.5 * 1.5).epsilon(1e-12));
+    CHECK(r.err.find("central differences") == std::string::npos);
+    CHECK(run_yamsc("lin " + model + " --external " + dir + "/missing.so").status == 1);
+}
