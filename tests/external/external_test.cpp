@@ -204,11 +204,12 @@ TEST_CASE("errors of external functions are located and end with exit status 1 o
         CHECK(r.status == 2);
         CHECK(read_file(dir + "/loads.c") == read_file(with_jacobians));
     }
-    SUBCASE("--lang c and --jacobians tangent refuse models with externals") {
+    SUBCASE("--lang c, --jacobians tangent and --sensitivities refuse models with externals") {
         const Run c = run_yamsc(model + " --lang c -o " + dir + "/m.c");
         CHECK(c.status == 1);
         CHECK(c.err.find("not supported in --lang c yet") != std::string::npos);
         CHECK(run_yamsc(model + " --jacobians tangent -o " + dir + "/m.cpp").status == 2);
+        CHECK(run_yamsc(model + " --sensitivities k -o " + dir + "/m.cpp").status == 2);
     }
 }
 
