@@ -61,6 +61,7 @@ struct kw_linearize : TAO_PEGTL_KEYWORD("linearize") {};
 struct kw_initial : TAO_PEGTL_KEYWORD("initial") {};
 struct kw_output : TAO_PEGTL_KEYWORD("output") {};
 struct kw_point : TAO_PEGTL_KEYWORD("point") {};
+struct kw_external : TAO_PEGTL_KEYWORD("external") {};
 
 struct kw_order : TAO_PEGTL_KEYWORD("order") {};
 struct kw_deg : TAO_PEGTL_KEYWORD("deg") {};
@@ -83,7 +84,7 @@ struct kw_damping : TAO_PEGTL_KEYWORD("damping") {};
 struct statement_keyword
     : p::sor<kw_model, kw_param, kw_input, kw_dof, kw_gravity, kw_rigid, kw_flexible, kw_joint,
              kw_force, kw_torque, kw_spring, kw_genforce, kw_approx, kw_linearize, kw_initial,
-             kw_output, kw_point> {};
+             kw_output, kw_point, kw_external> {};
 
 struct digits : p::plus<p::digit> {};
 struct mantissa
@@ -469,14 +470,57 @@ struct point_statement
     : p::seq<kw_point, blanks, p::must<point_name>, blanks, p::must<point_on>, blanks,
              p::must<point_body>, blanks, p::must<point_at>, blanks, p::must<point_value>> {};
 
+// ---------------------------------------------------------------- external functions
+
+/// `external force on B at (..) in F = name(arg [in FRAME], ...) [without jacobian]`: a load
+/// computed by a C function the user provides (docs/language.md). The target words are their
+/// own rules so that the actions of `force`, `torque` and `genforce` statements stay apart.
+struct ext_force_word : TAO_PEGTL_KEYWORD("force") {};
+struct ext_torque_word : TAO_PEGTL_KEYWORD("torque") {};
+struct ext_genforce_word : TAO_PEGTL_KEYWORD("genforce") {};
+struct ext_on : kw_on {};
+struct ext_body : identifier {};
+struct ext_at_value : line_expression {};
+struct ext_at : p::seq<kw_at, blanks, p::must<ext_at_value>, blanks> {};
+struct ext_frame : identifier {};
+struct ext_in : p::seq<kw_in, blanks, p::must<ext_frame>, blanks> {};
+struct ext_force_target : p::seq<ext_force_word, blanks, p::must<ext_on>, blanks, p::must<ext_body>,
+                                 blanks, p::opt<ext_at>, p::opt<ext_in>> {};
+struct ext_torque_target : p::seq<ext_torque_word, blanks, p::must<ext_on>, blanks,
+                                  p::must<ext_body>, blanks, p::opt<ext_in>> {};
+struct ext_dof : identifier {};
+struct ext_dof_close : p::one<')'> {};
+struct ext_dof_list
+    : p::seq<p::one<'('>, gap, p::must<ext_dof>, gap,
+             p::star<p::one<','>, gap, p::must<ext_dof>, gap>, p::must<ext_dof_close>> {};
+struct ext_dofs : p::sor<ext_dof_list, ext_dof> {};
+struct ext_genforce_target : p::seq<ext_genforce_word, blanks, p::must<ext_dofs>, blanks> {};
+struct ext_target : p::sor<ext_force_target, ext_torque_target, ext_genforce_target> {};
+struct ext_equals : p::one<'='> {};
+struct ext_function : identifier {};
+struct ext_args_open : p::one<'('> {};
+struct ext_arg_value : expression<bracket_context> {};
+struct ext_arg_frame : identifier {};
+struct ext_arg_in : p::seq<kw_in, blanks, p::must<ext_arg_frame>> {};
+struct ext_arg : p::seq<ext_arg_value, p::opt<gap, ext_arg_in>> {};
+struct ext_args_close : p::one<')'> {};
+struct ext_call
+    : p::seq<ext_function, blanks, p::must<ext_args_open>, gap, p::must<ext_arg>, gap,
+             p::star<p::one<','>, gap, p::must<ext_arg>, gap>, p::must<ext_args_close>> {};
+struct ext_jacobian_word : TAO_PEGTL_KEYWORD("jacobian") {};
+struct ext_without : p::seq<TAO_PEGTL_KEYWORD("without"), blanks, p::must<ext_jacobian_word>> {};
+struct external_statement : p::seq<kw_external, blanks, p::must<ext_target>, p::must<ext_equals>,
+                                   blanks, p::must<ext_call>, p::opt<blanks, ext_without>> {};
+
 // ---------------------------------------------------------------- the file
 
 struct unknown_statement {};
-struct statement : p::sor<model_statement, param_statement, input_statement, dof_statement,
-                          gravity_statement, rigid_statement, flexible_statement, joint_statement,
-                          force_statement, torque_statement, spring_statement, genforce_statement,
-                          approx_statement, linearize_statement, initial_statement,
-                          output_statement, point_statement, p::raise<unknown_statement>> {};
+struct statement
+    : p::sor<model_statement, param_statement, input_statement, dof_statement, gravity_statement,
+             rigid_statement, flexible_statement, joint_statement, force_statement,
+             torque_statement, spring_statement, genforce_statement, approx_statement,
+             linearize_statement, initial_statement, output_statement, point_statement,
+             external_statement, p::raise<unknown_statement>> {};
 struct statement_line : p::seq<statement, p::must<end_of_statement>> {};
 struct top_separator : p::plus<item_separator> {};
 struct model_file

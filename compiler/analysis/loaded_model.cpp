@@ -1,5 +1,6 @@
 #include "analysis/loaded_model.hpp"
 
+#include "analysis/external_library.hpp"
 #include "analysis/jit.hpp"
 #include "driver/bindings.hpp"
 #include "driver/sid_values.hpp"
@@ -46,8 +47,9 @@ std::vector<std::string> primed(const std::vector<std::string>& names) {
 std::optional<Loaded> load(const std::string& path, const std::vector<Assignment>& set,
                            const std::string& sid_spec, bool verbose, std::ostream& err,
                            const std::vector<NamedFile>& outputs,
-                           const std::vector<std::string>& routines) {
-    std::optional<Loaded> l = load_unbound(path, sid_spec, verbose, err, outputs, routines);
+                           const std::vector<std::string>& routines, const std::string& external) {
+    std::optional<Loaded> l =
+        load_unbound(path, sid_spec, verbose, err, outputs, routines, external);
     if (l) bind_parameters(*l, set);
     return l;
 }
@@ -55,7 +57,8 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
 std::optional<Loaded> load_unbound(const std::string& path, const std::string& sid_spec,
                                    bool verbose, std::ostream& err,
                                    const std::vector<NamedFile>& outputs,
-                                   const std::vector<std::string>& routines) {
+                                   const std::vector<std::string>& routines,
+                                   const std::string& external) {
     // One model at a time per process: the derivation (GiNaC) shares global
     // state, and the JIT names its temporary files by process id. Python
     // threads (yamsc.load, a Dask worker's batch tasks) can load at once.
@@ -73,6 +76,15 @@ std::optional<Loaded> load_unbound(const std::string& path, const std::string& s
     JitOptions jit;
     jit.progress = progress;
     jit.notice = [&](const std::string& s) { err << "yamsc: " << s << std::endl; };
+    // The external functions first: the model's library binds to them when it loads.
+    diag::Diagnostics missing;
+    const std::optional<ExternalLibrary> externals =
+        load_external_library(*fe.model, external, jit, missing);
+    err << missing.render();
+    if (!externals) return std::nullopt;
+    for (const std::string& note : externals->notes)
+        if (verbose || note.find("central differences") != std::string::npos)
+            err << "yamsc: note: " << note << "\n";
     const ModelIdentity id{fe.model->name, content_digest(*fe.source, *fe.model), routines};
     // Reported as located diagnostics (exit 1), like the checker's errors.
     struct NotDerived {};

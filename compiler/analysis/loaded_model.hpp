@@ -33,17 +33,21 @@ struct Loaded {
 /// `routines`: those the command calls (jit.hpp); a cached library of the same
 /// model and routines is loaded without deriving the equations. nullopt when the
 /// model has errors (already printed to `err`).
+/// `external`: the implementation of the model's external functions (--external
+/// lib.so|file.c|file.cpp, analysis/external_library.hpp); required when it declares any.
 std::optional<Loaded> load(const std::string& path, const std::vector<Assignment>& set,
                            const std::string& sid_spec, bool verbose, std::ostream& err,
                            const std::vector<NamedFile>& outputs,
-                           const std::vector<std::string>& routines);
+                           const std::vector<std::string>& routines,
+                           const std::string& external = "");
 
 /// `load` without binding the parameters (`params` and `view` empty): for
 /// commands that bind them per case with bind_parameters.
 std::optional<Loaded> load_unbound(const std::string& path, const std::string& sid_spec,
                                    bool verbose, std::ostream& err,
                                    const std::vector<NamedFile>& outputs,
-                                   const std::vector<std::string>& routines);
+                                   const std::vector<std::string>& routines,
+                                   const std::string& external = "");
 
 /// Binds the parameters again: the model's defaults, the --sid values, then
 /// `set` (as `load` does); a view of the same library with those values.

@@ -130,12 +130,13 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     inputs.push_back({"--aero", o.aero});
     inputs.push_back({"--controller", o.controller});
     inputs.push_back({"--controller-input", o.controller_input});
+    inputs.push_back({"--external", o.external});
     if (wind_file(o.wind)) inputs.push_back({"--wind", o.wind});
     check_outputs(inputs, outputs);
     // A bad reference fails before anything is simulated or written.
     std::optional<Table> reference;
     if (!o.compare.empty()) reference = read_table(o.compare);
-    auto loaded = load(o.model, o.set, o.sid, o.verbose, err, outputs, sim_routines(o));
+    auto loaded = load(o.model, o.set, o.sid, o.verbose, err, outputs, sim_routines(o), o.external);
     if (!loaded) return 1;
     const SimRun run = simulate_case(*loaded, o, out, err);
     const runtime::SimulationResult& result = run.result;
@@ -171,11 +172,12 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     }
     std::vector<NamedFile> inputs = sid_files_of(o.sid);
     inputs.push_back({"the model", o.model});
+    inputs.push_back({"--external", o.external});
     check_outputs(inputs, outputs);
     // The second-order model (M, F and its Jacobians) and, for the modes, A.
     std::vector<std::string> routines = linear_model_routines();
     if (!o.aero.empty() || lin_files) routines.push_back("outputs");
-    auto loaded = load(o.model, o.set, o.sid, false, err, outputs, routines);
+    auto loaded = load(o.model, o.set, o.sid, false, err, outputs, routines, o.external);
     if (!loaded) return 1;
     if (o.sweep) return campbell(*loaded, o, out);
     const runtime::ModelView v = o.aero.empty() ? loaded->view : close_rotor_aero(*loaded, o.aero);

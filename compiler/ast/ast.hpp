@@ -222,6 +222,29 @@ struct Point {
     Expr at;
 };
 
+/// One argument of an external function: a scalar expression, `in FRAME` for the
+/// components of position(), velocity() and angular_velocity() (default ground).
+struct ExternalArg {
+    Expr value;
+    std::optional<Named> frame;
+};
+
+/// `external force on B at (x, y, z) in F = name(args...)`, `external torque on B in F = ...`
+/// or `external genforce (q1, q2) = ...`: a load computed by a C function the user provides.
+struct External {
+    enum class Kind { force, torque, genforce };
+    Kind kind = Kind::force;
+    std::string body; // force, torque
+    Loc body_loc;
+    std::optional<Expr> at;     // force: the point, body axes
+    std::optional<Named> frame; // force, torque: components' frame (default: the body)
+    std::vector<Named> dofs;    // genforce
+    Named function;
+    std::vector<ExternalArg> args;
+    bool without_jacobian = false; // `without jacobian`: derivatives by central differences
+    Loc loc;
+};
+
 struct ModelFile {
     std::shared_ptr<const diag::SourceFile> source;
     std::optional<Named> model; // the model's name
@@ -243,6 +266,7 @@ struct ModelFile {
     std::optional<Linearize> linearize;
     std::optional<Initial> initial;
     std::vector<Output> outputs;
+    std::vector<External> externals;
 };
 
 /// A readable dump of the tree, for `yamsc --dump=ast` and tests.

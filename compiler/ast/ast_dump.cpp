@@ -286,6 +286,22 @@ std::string dump(const ModelFile& file) {
         out += "output " + o.id.name + " = " + to_string(o.value) + frame(o.frame) + point +
                at(o.loc) + doc(o.id) + "\n";
     }
+    for (const External& e : file.externals) {
+        out += "external ";
+        if (e.kind == External::Kind::genforce) {
+            out += "genforce (";
+            for (std::size_t i = 0; i < e.dofs.size(); ++i)
+                out += (i > 0 ? ", " : "") + e.dofs[i].name;
+            out += ")";
+        } else {
+            out += std::string(e.kind == External::Kind::force ? "force" : "torque") + " on " +
+                   e.body + (e.at ? " at " + to_string(*e.at) : "") + frame(e.frame);
+        }
+        out += " = " + e.function.name + "(";
+        for (std::size_t i = 0; i < e.args.size(); ++i)
+            out += (i > 0 ? ", " : "") + to_string(e.args[i].value) + frame(e.args[i].frame);
+        out += ")" + std::string(e.without_jacobian ? " without jacobian" : "") + at(e.loc) + "\n";
+    }
     return out;
 }
 

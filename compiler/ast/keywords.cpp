@@ -6,7 +6,7 @@ const std::vector<std::string>& statement_keywords() {
     static const std::vector<std::string> words{
         "model",    "param",     "input",   "dof",    "gravity", "rigid",
         "flexible", "joint",     "force",   "torque", "spring",  "genforce",
-        "approx",   "linearize", "initial", "output", "point"};
+        "approx",   "linearize", "initial", "output", "point",   "external"};
     return words;
 }
 

@@ -24,7 +24,7 @@ const char* usage_text = R"(usage:
                   [--jacobians auto|unrolled|tangent] [--sensitivities p1,p2,..]
   yamsc check MODEL.mbd [--json]
   yamsc eval MODEL.mbd [--q v,..] [--qd v,..] [--u name=v,..] [--set name=v,..] [--t T]
-                       [--compiled] --json
+                       [--compiled] [--external lib.so|file.c|file.cpp] --json
   yamsc lin MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--json]
                       [--trim [--hold dof,..] [--adjust input,..]]
                       [--mbc3 [--azimuths N] [--azimuth dof]]
@@ -42,11 +42,13 @@ const char* usage_text = R"(usage:
                       [--controller libdiscon.so [--controller-input DISCON.IN]]
   yamsc batch CASES.csv [-o OUTDIR] [--threads N] [--shard k/N] [-q]
   yamsc batch merge OUTDIR... [-o summary.csv]
-  yamsc from-openfast ELASTODYN.dat|DECK.fst [--dofs NAME=on|off,..] -o model.mbd
+  yamsc from-openfast ELASTODYN.dat|DECK.fst [--dofs NAME=on|off,..] [--cp-table FILE] -o model.mbd
   yamsc rotor-table Cp_Ct_Cq.txt -o rotor_table.c [--prefix NAME]
   yamsc sid --elastodyn-tower FILE | --elastodyn-blade FILE --length L [--modes fa1,ss1,..]
             [--stations N] [-o body.sid]
   yamsc --version | --help
+eval, lin, trim and sim take --external lib.so|file.c|file.cpp: the model's external
+functions (a library exporting them, or a source compiled with the model; docs/cli.md).
 eval, lin, trim and sim take --sid body=file.sid: the shape integrals of a flexible body
 declared with `symbolic modes`, read from a SID file. Values accept `deg`: --set theta_t=5deg.
 sim starts from the model's `initial` block (zeros without one); --ic overrides single values.
@@ -178,7 +180,7 @@ int run(int argc, char** argv) {
         return check({a.model(), a.has("--json")}, std::cout, std::cerr);
     }
     if (cmd == "eval") {
-        Args a(argc, argv, 2, {"--q", "--qd", "--u", "--set", "--sid", "--t"},
+        Args a(argc, argv, 2, {"--q", "--qd", "--u", "--set", "--sid", "--t", "--external"},
                {"--json", "--compiled"});
         EvalOptions o;
         o.model = a.model();
@@ -188,13 +190,15 @@ int run(int argc, char** argv) {
         o.set = a.assignments("--set");
         o.sid = a.get("--sid");
         o.t = a.number("--t", 0.0);
-        o.compiled = a.has("--compiled");
+        o.external = a.get("--external");
+        o.compiled = a.has("--compiled") || !o.external.empty();
         return o.compiled ? eval_compiled(o, std::cout, std::cerr) : eval(o, std::cout, std::cerr);
     }
     if (cmd == "lin") {
         Args a(argc, argv, 2,
                {"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot", "--hold", "--azimuths",
-                "--azimuth", "--aero", "--wind", "--adjust", "--schedule", "--format"},
+                "--azimuth", "--aero", "--wind", "--adjust", "--schedule", "--format",
+                "--external"},
                {"--json", "--trim", "--mbc3"});
         LinOptions o;
         o.format = choice(a, "--format", LinFormat::table,
@@ -230,6 +234,7 @@ int run(int argc, char** argv) {
         o.u = a.assignments("--u");
         o.set = a.assignments("--set");
         o.sid = a.get("--sid");
+        o.external = a.get("--external");
         o.json = a.has("--json");
         o.aero = a.get("--aero");
         o.wind = a.get("--wind");
@@ -242,7 +247,8 @@ int run(int argc, char** argv) {
     }
     if (cmd == "trim") {
         Args a(argc, argv, 2,
-               {"--at", "--u", "--set", "--sid", "--hold", "--adjust", "--aero", "--wind"},
+               {"--at", "--u", "--set", "--sid", "--hold", "--adjust", "--aero", "--wind",
+                "--external"},
                {"--json"});
         TrimOptions o;
         o.model = a.model();
@@ -254,6 +260,7 @@ int run(int argc, char** argv) {
         o.adjust = comma_list(a.get("--adjust"));
         o.aero = a.get("--aero");
         o.wind = a.get("--wind");
+        o.external = a.get("--external");
         o.json = a.has("--json");
         return trim(o, std::cout, std::cerr);
     }
@@ -282,9 +289,26 @@ int run(int argc, char** argv) {
     }
     if (cmd == "sim") {
         Args a(argc, argv, 2,
-               {"--tmax", "--dt", "--ic", "--u", "--set", "--sid", "--method", "-o", "--rtol",
-                "--atol", "--channels", "--compare", "--plot", "--plot-channels", "--at", "--aero",
-                "--wind", "--controller", "--controller-input"},
+               {"--tmax",
+                "--dt",
+                "--ic",
+                "--u",
+                "--set",
+                "--sid",
+                "--method",
+                "-o",
+                "--rtol",
+                "--atol",
+                "--channels",
+                "--compare",
+                "--plot",
+                "--plot-channels",
+                "--at",
+                "--aero",
+                "--wind",
+                "--controller",
+                "--controller-input",
+                "--external"},
                {"-v", "--linear"});
         SimOptions o;
         o.model = a.model();
@@ -296,6 +320,7 @@ int run(int argc, char** argv) {
         o.u = a.assignments("--u");
         o.set = a.assignments("--set");
         o.sid = a.get("--sid");
+        o.external = a.get("--external");
         o.method = choice(a, "--method", SimMethod::rk4,
                           {{"rk4", SimMethod::rk4}, {"cvode", SimMethod::cvode}});
         o.rtol = a.number("--rtol", o.rtol);
@@ -358,10 +383,11 @@ int run(int argc, char** argv) {
         return batch(o, std::cout, std::cerr);
     }
     if (cmd == "from-openfast") {
-        Args a(argc, argv, 2, {"--dofs", "-o"}, {});
+        Args a(argc, argv, 2, {"--dofs", "-o", "--cp-table"}, {});
         FromOpenFastOptions o;
         o.deck = a.model();
         o.output = a.get("-o");
+        o.cp_table = a.get("--cp-table");
         if (o.output.empty()) throw UsageError("from-openfast needs -o model.mbd");
         for (const std::string& item : comma_list(a.get("--dofs"))) {
             const auto eq = item.find('=');

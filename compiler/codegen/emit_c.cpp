@@ -10,6 +10,7 @@
 #include "codegen/header_comment.hpp"
 #include "codegen/text.hpp"
 #include "diag/diagnostics.hpp"
+#include "diag/errors.hpp"
 
 #include <fmt/format.h>
 
@@ -235,6 +236,11 @@ Definitions definitions(const Module& module, const CNames& names,
 } // namespace
 
 EmittedFiles emit_c(const Module& module, const EmitOptions& options) {
+    if (!module.externals.empty())
+        throw diag::UserError(module.externals.front().location + ": external function '" +
+                              module.externals.front().name +
+                              "': external functions are not supported in --lang c yet (use "
+                              "--lang cpp)");
     CNames names;
     names.prefix = options.namespace_name.empty() ? module.model.name : options.namespace_name;
     names.single_precision = options.real == EmitOptions::Real::single_precision;

@@ -3,6 +3,7 @@
 // runtime's from_generated<NS::Model> takes (docs/generated-api.md).
 #include "codegen/body.hpp"
 #include "codegen/emit.hpp"
+#include "codegen/external_wrappers.hpp"
 #include "codegen/functions.hpp"
 #include "codegen/header_comment.hpp"
 #include "codegen/text.hpp"
@@ -105,7 +106,11 @@ std::string declarations(const Module& module, const std::string& ns,
     for (const ParamInfo& p : m.params) params.push_back(p.name);
     for (const NamedDoc& y : m.outputs) outputs.push_back(y.name);
 
-    std::string out = fmt::format("namespace {} {{\n\n", ns);
+    std::string out;
+    if (!module.externals.empty())
+        out += "// The model's external functions: the user provides them.\n" +
+               external_prototypes(module) + "\n";
+    out += fmt::format("namespace {} {{\n\n", ns);
     out += fmt::format("inline constexpr int nq = {}, nu = {}, np = {}, ny = {};\n", m.nq(), m.nu(),
                        m.np(), m.ny());
     out += fmt::format("inline constexpr const char* model_name = {};\n", c_string_literal(m.name));
@@ -173,7 +178,9 @@ Definitions definitions(const Module& module, const std::vector<FunctionPlan>& p
     d.text = params_functions(module.model);
     for (const FunctionPlan& plan : plans) {
         d.text += "\n// " + plan.routine->summary + "\n" + signature(plan) + " {\n";
-        if (plan.forwards_to_short) {
+        if (!module.externals.empty() && wrapped_routine(plan.routine->name)) {
+            d.text += external_wrapper_body(module, plan.routine->name);
+        } else if (plan.forwards_to_short) {
             for (const Argument* a : plan.parameters)
                 if (a->name == "t" || a->name == "u") d.text += "    (void)" + a->name + ";\n";
             d.text += "    mass_matrix(q, p, M);\n";
@@ -204,29 +211,37 @@ EmittedFiles emit_cpp(const Module& module, const EmitOptions& options) {
 
     const std::vector<FunctionPlan> plans = function_plans(module);
     CalleeCosts callee_costs;
-    const Definitions internal =
-        internal_definitions(module, options.max_function_statements, callee_costs);
+    const bool externals = !module.externals.empty();
+    const Module inner = externals ? with_inner_routines(module) : Module{};
+    Definitions internal = internal_definitions(externals ? inner : module,
+                                                options.max_function_statements, callee_costs);
+    if (externals) internal.helpers += external_support(module) + "\n";
     Definitions defs = definitions(module, plans, options.max_function_statements, callee_costs);
     defs.helpers = internal.helpers + defs.helpers;
     defs.costs.insert(defs.costs.end(), internal.costs.begin(), internal.costs.end());
-    const std::string comment = header_comment(module, options, "C++17", ns, defs.costs);
+    const std::string comment =
+        header_comment(module, options, "C++17", ns, defs.costs) + external_comment(module);
     const std::string limits = any_param_without_default(module.model) ? "#include <limits>\n" : "";
     const std::string decls = declarations(module, ns, plans);
 
-    std::string body = fmt::format("namespace {} {{\n", ns);
+    std::string body = externals ? external_weak_declarations(module) + "\n" : "";
+    body += fmt::format("namespace {} {{\n", ns);
     std::string helpers = uses_solver(module) ? solver_helpers_text(cpp_syntax(), "") : "";
     if (!defs.helpers.empty()) helpers += (helpers.empty() ? "" : "\n") + defs.helpers;
     if (!helpers.empty()) body += "namespace {\n\n" + helpers + "\n} // namespace\n";
     body += "\n" + defs.text + "\n" + fmt::format("}} // namespace {}\n", ns);
 
+    const std::string includes =
+        externals ? "#include <cmath>\n#include <cstdio>\n#include <stdexcept>\n#include <string>\n"
+                  : "#include <cmath>\n";
     EmittedFiles files;
     if (options.header_name.empty()) {
-        files.source = comment + "\n#include <cmath>\n" + limits + "\n" + decls + "\n" + body;
+        files.source = comment + "\n" + includes + limits + "\n" + decls + "\n" + body;
     } else {
         files.header =
             comment + "\n#pragma once\n\n" + limits + (limits.empty() ? "" : "\n") + decls;
         files.source =
-            comment + "\n#include \"" + options.header_name + "\"\n\n#include <cmath>\n\n" + body;
+            comment + "\n#include \"" + options.header_name + "\"\n\n" + includes + "\n" + body;
     }
     return files;
 }

@@ -143,7 +143,7 @@ void add_linear_routines(Graph& graph, const ir::System& s, const LinearSources&
 void add_operating_point(Module& module, const ir::System& s) {
     const ir::OperatingPoint& op = s.point;
     if (op.q.size() != s.dofs.size() || op.qd.size() != s.dofs.size() ||
-        op.u.size() != s.inputs.size())
+        op.u.size() != static_cast<std::size_t>(s.declared_nu()))
         throw diag::InternalError("code generation: the operating point does not match the model");
     // Only parameters: the checker allows nothing else in the point.
     RoutineBuilder b(

@@ -180,8 +180,26 @@ struct ModelInfo {
     int ny() const { return static_cast<int>(outputs.size()); }
 };
 
+/// An external function (ir::External): what the emitters need to call it.
+struct ExternalInfo {
+    std::string name, what, location;
+    int first_input = 0; // its first result's channel in the routines' u
+    int results = 0;
+    int args = 0;
+    bool user_jacobian = true;
+};
+
 struct Module {
-    ModelInfo model;
+    ModelInfo model; // with externals: the declared inputs only
+    /// With externals, the routines read u of channels() entries, the declared
+    /// ones then every external's results; the emitters wrap them
+    /// (codegen/external_wrappers.hpp) into the API, whose u is the declared one.
+    std::vector<ExternalInfo> externals;
+    int channels() const {
+        int n = model.nu();
+        for (const ExternalInfo& e : externals) n += e.results;
+        return n;
+    }
     Options options;
     /// M depends on q and the parameters only: `mass_matrix(q, p, M)` exists
     /// besides the full `mass_matrix(t, q, u, p, M)`.

@@ -53,13 +53,14 @@ void check_shapes(const ir::System& s, const Options& options) {
 }
 
 ModelInfo model_info(const ir::System& s) {
+    const int declared = s.declared_nu();
     ModelInfo m;
     m.name = s.model_name;
     m.title = s.title;
     m.source_path = s.source_path;
     m.source_digest = s.source_digest;
     for (const ir::Dof& d : s.dofs) m.dofs.push_back({d.name, d.doc});
-    for (const ir::InputChannel& u : s.inputs) m.inputs.push_back({u.name, u.doc});
+    for (int i = 0; i < declared; ++i) m.inputs.push_back({s.inputs[i].name, s.inputs[i].doc});
     for (const ir::Parameter& p : s.params) m.params.push_back({p.name, p.doc, p.value});
     for (const ir::Output& y : s.outputs) m.outputs.push_back({y.name, y.doc});
     return m;
@@ -178,6 +179,72 @@ Routine rhs_jacobian_routine(Graph& g, const ImportedEquations& in, int nq,
     return std::move(b).finish(options);
 }
 
+// The externals' internal routines (codegen/external_wrappers.hpp calls them):
+// their arguments, the arguments' derivatives, and M^-1 dF/dw for rhs_jacobian.
+Argument arg(const char* name, ArgumentKind kind) {
+    return argument(name, kind);
+}
+
+Routine internal(Routine r) {
+    r.internal = true;
+    return r;
+}
+
+void add_external_routines(Graph& g, const ir::System& s, const ImportedEquations& in,
+                           const Options& options, Module& m) {
+    const int nq = s.nq(), nu = s.declared_nu();
+    const std::vector<Argument> q_form{
+        arg("t", ArgumentKind::scalar), arg("q", ArgumentKind::input_array),
+        arg("qd", ArgumentKind::input_array), arg("u", ArgumentKind::input_array),
+        arg("p", ArgumentKind::params)};
+    auto with = [&](std::vector<const char*> outs) {
+        std::vector<Argument> a = q_form;
+        for (const char* o : outs) a.push_back(arg(o, ArgumentKind::output_array));
+        return a;
+    };
+    {
+        RoutineBuilder b(g, "external_args", "the externals' arguments a(t, q, q', u)", with({"a"}),
+                         bind({}));
+        int k = 0;
+        for (const ir::External& e : s.externals)
+            for (NodeId a : e.args) b.assign("a", k++, a);
+        m.routines.push_back(internal(std::move(b).finish(options)));
+    }
+    {
+        RoutineBuilder b(g, "external_args_jacobian",
+                         "da/dq, da/dq', da/du of the externals' arguments (na x nq, na x nq, "
+                         "na x nu)",
+                         with({"da_dq", "da_dqd", "da_du"}), bind({}));
+        int k = 0;
+        for (const ir::External& e : s.externals)
+            for (std::size_t i = 0; i < e.args.size(); ++i, ++k) {
+                for (int j = 0; j < nq; ++j) b.assign("da_dq", k * nq + j, e.dargs_dq[i][j]);
+                for (int j = 0; j < nq; ++j) b.assign("da_dqd", k * nq + j, e.dargs_dqd[i][j]);
+                for (int j = 0; j < nu; ++j) b.assign("da_du", k * nu + j, e.dargs_du[i][j]);
+            }
+        m.routines.push_back(internal(std::move(b).finish(options)));
+    }
+    {
+        const int nw = s.nu() - nu;
+        RoutineBuilder b(g, "external_qdd_dw",
+                         "dq''/dw = M^-1 dF/dw for the externals' results w (nq x nw)",
+                         {arg("t", ArgumentKind::scalar), arg("x", ArgumentKind::input_array),
+                          arg("u", ArgumentKind::input_array), arg("p", ArgumentKind::params),
+                          arg("B", ArgumentKind::output_array)},
+                         bind(SymbolSource::state_vector(nq)));
+        b.local("M", nq * nq);
+        assign_lower_triangle(b, "M", in.M);
+        b.factor("M", nq);
+        for (int i = 0; i < nq; ++i)
+            for (int k = 0; k < nw; ++k) b.assign("B", i * nw + k, in.dF_du[i][nu + k]);
+        b.solve("M", nq, "B", 0, nw);
+        m.routines.push_back(internal(std::move(b).finish(options)));
+    }
+    for (const ir::External& e : s.externals)
+        m.externals.push_back({e.name, e.what, e.location, e.first_input, e.results,
+                               static_cast<int>(e.args.size()), e.user_jacobian});
+}
+
 } // namespace
 
 Module build_module(const ir::System& s, const Options& options) {
@@ -216,6 +283,11 @@ Module build_module(const ir::System& s, const Options& options) {
     const LinearSources sources{in.M, in.F, in.dF_dq, in.dF_dqd, in.dF_du, in.dMa_dq};
     if (options.linear_model) add_linear_routines(graph, s, sources, options, m.routines);
     add_sensitivity_routine(graph, s, sources, options, m.routines); // only with sensitivity_params
+    if (!s.externals.empty()) {
+        if (!options.sensitivity_params.empty())
+            throw diag::InternalError("code generation: sensitivities of a model with externals");
+        add_external_routines(graph, s, in, options, m);
+    }
     return m;
 }
 

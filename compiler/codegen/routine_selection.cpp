@@ -31,6 +31,14 @@ void keep_routines(Module& module, const std::vector<std::string>& wanted) {
         if (r.internal) throw diag::InternalError("code generation: '" + name + "' is internal");
         if (keep.insert(name).second) pending.push_back(name);
     }
+    // The externals' wrappers (external_wrappers.hpp) call these.
+    if (!module.externals.empty()) {
+        keep.insert("external_args");
+        for (const char* r :
+             {"jacobians", "rhs_jacobian", "linear", "state_space", "output_matrices"})
+            if (keep.count(r)) keep.insert("external_args_jacobian");
+        if (keep.count("rhs_jacobian")) keep.insert("external_qdd_dw");
+    }
     // Everything a kept routine calls is kept too, transitively.
     while (!pending.empty()) {
         const std::string name = pending.back();

@@ -133,6 +133,14 @@ std::vector<double> solve(std::vector<std::vector<double>> A, std::vector<double
 int eval(const EvalOptions& o, std::ostream& out, std::ostream& err) {
     diag::Diagnostics diags;
     FrontEnd fe = run_front_end(o.model, Until::system, diags);
+    // The interpreter cannot call the user's functions: `--external` runs the
+    // compiled code (eval_compiled), which the CLI chooses then.
+    if (fe.model && !fe.model->externals.empty())
+        for (const model::External& e : fe.model->externals)
+            diags.error(diag::Kind::Io, e.loc,
+                        "external function '" + e.name +
+                            "' has no implementation: give --external lib.so or --external "
+                            "file.c (eval then runs the compiled code)");
     err << diags.render();
     if (diags.has_errors() || !fe.system) return 1;
     const ir::System& sys = *fe.system;

@@ -59,6 +59,7 @@ struct EvalOptions {
     std::vector<double> q, qd;      // empty: zeros
     std::vector<Assignment> u, set; // --u, --set
     std::string sid;                // --sid body=file.sid,..
+    std::string external;           // --external lib.so|file.c|file.cpp: runs the compiled code
     double t = 0;
     bool json = true;
     bool compiled = false; // --compiled: from the compiled code (eval_compiled.cpp)
@@ -79,6 +80,7 @@ struct LinOptions {
     LinFormat format = LinFormat::table; // --format openfast-lin: .lin files at -o
     std::string azimuth;                 // --azimuth: the DOF that turns the rotor
     std::string sid;                     // --sid body=file.sid,..
+    std::string external;                // --external lib.so|file.c|file.cpp
     bool json = false;
     std::optional<Sweep> sweep; // --sweep NAME=FROM:STEP:TO: a Campbell diagram
     std::string schedule;       // --schedule FILE: what moves with the swept value
@@ -92,6 +94,7 @@ struct TrimOptions {
     std::string model;
     std::vector<Assignment> at, set, u; // the starting point, as for lin
     std::string sid;
+    std::string external;            // --external, as for lin
     std::vector<std::string> hold;   // DOFs kept as given (besides those with a rate)
     std::vector<std::string> adjust; // inputs trimmed so that nothing holds the spinning DOFs
     std::string aero;                // --aero TABLE, as for lin
@@ -103,7 +106,8 @@ struct SimOptions {
     std::string model;
     double tmax = 0, dt = 0;
     std::vector<Assignment> ic, u, set;
-    std::string sid; // --sid body=file.sid,..
+    std::string sid;      // --sid body=file.sid,..
+    std::string external; // --external lib.so|file.c|file.cpp
     SimMethod method = SimMethod::rk4;
     std::string output; // CSV path; empty: summary only
     double rtol = 1e-8, atol = 1e-10;
@@ -143,6 +147,7 @@ struct FromOpenFastOptions {
     std::string deck;                               // ElastoDyn main file or .fst
     std::vector<std::pair<std::string, bool>> dofs; // --dofs NAME=on|off (ElastoDyn flag names)
     std::string output;                             // -o model.mbd
+    std::string cp_table; // --cp-table: the rotor block's table (default: the controller's)
 };
 
 struct SidOptions {

@@ -118,6 +118,9 @@ const char* derivatives_name(Derivatives d) {
 codegen::Options module_options(const CompileOptions& o, ir::System& s) {
     codegen::Options options;
     std::vector<std::size_t> indices;
+    if (!o.sensitivities.empty() && !s.externals.empty())
+        throw UsageError("--sensitivities: the model declares external functions, whose "
+                         "parameter derivatives are not supported yet");
     for (const std::string& name : o.sensitivities) {
         std::size_t i = 0;
         while (i < s.params.size() && s.params[i].name != name) ++i;

@@ -1,5 +1,6 @@
 #include "driver/pipeline.hpp"
 
+#include "codegen/external_wrappers.hpp"
 #include "data/file_source.hpp"
 #include "diag/errors.hpp"
 #include "driver/files.hpp"
@@ -88,7 +89,43 @@ bool approximate(const model::Model& m, ir::System& s, diag::Diagnostics& diags)
     return true;
 }
 
+/// The externals as the IR keeps them: their input channels follow every
+/// declared one; `args` holds placeholders until passes::separate_externals.
+std::vector<ir::External> system_externals(const model::Model& m) {
+    int channel = 0;
+    for (const model::Input& in : m.inputs) channel += in.order + 1;
+    std::vector<ir::External> out;
+    for (const model::External& e : m.externals) {
+        ir::External x;
+        x.name = e.name;
+        x.what = e.kind == model::External::Kind::force    ? "force on " + m.bodies[e.body].name
+                 : e.kind == model::External::Kind::torque ? "torque on " + m.bodies[e.body].name
+                                                           : "generalized forces";
+        // The file's name only: compiled models are cached by content, whatever
+        // the folder they were compiled from (analysis/jit_cache.hpp).
+        std::string file = e.loc.file ? e.loc.file->path() : std::string("?");
+        if (const auto slash = file.find_last_of('/'); slash != std::string::npos)
+            file = file.substr(slash + 1);
+        x.location = file + ":" + std::to_string(e.loc.line) + ":" + std::to_string(e.loc.col);
+        x.first_input = channel;
+        x.results = e.results();
+        channel += x.results;
+        x.args.assign(e.args.size(), 0);
+        x.user_jacobian = !e.without_jacobian;
+        out.push_back(std::move(x));
+    }
+    return out;
+}
+
 } // namespace
+
+std::string external_prototypes(const model::Model& m) {
+    codegen::Module module;
+    for (const ir::External& e : system_externals(m))
+        module.externals.push_back({e.name, e.what, e.location, e.first_input, e.results,
+                                    static_cast<int>(e.args.size()), e.user_jacobian});
+    return codegen::external_prototypes(module);
+}
 
 std::string content_digest(const diag::SourceFile& source, const model::Model& m) {
     std::string all = source.text();
@@ -131,18 +168,30 @@ void continue_front_end(FrontEnd& fe, const std::string& path, Until until,
     // Only the Jacobian stage can use the tangent form; `approx` and outputs that
     // read q'' (reaction loads) need M itself.
     const bool accelerations = outputs_read_accelerations(*fe.model);
+    // The externals' chain rule is written for the unrolled Jacobians.
+    const bool externals = !fe.model->externals.empty();
+    if (externals && derivatives == Derivatives::tangent && until == Until::jacobians)
+        throw diag::UsageError("--jacobians tangent: the model declares external functions, "
+                               "whose chain rule needs the unrolled Jacobians (use auto or "
+                               "unrolled)");
     const bool tangent =
         until == Until::jacobians && fe.model->approximations.empty() && !accelerations &&
+        !externals &&
         (derivatives == Derivatives::tangent ||
          (derivatives == Derivatives::automatic && fe.model->dofs.size() >= tangent_form_min_dofs));
-    fe.equations = symbolic::derive(*fe.model, diags, !tangent);
+    const model::Model derived = model::with_external_channels(*fe.model);
+    fe.equations = symbolic::derive(derived, diags, !tangent);
     if (!fe.equations || diags.has_errors()) return;
     fe.equations->source_path = path;
     // The digest covers the data files too: generated code changes when they do.
     fe.equations->source_digest = content_digest(*fe.source, *fe.model);
     say(timed("derived the equations of motion", clock.seconds()));
     if (until == Until::equations) return;
-    fe.system = lower::lower(*fe.equations, symbolic::operating_point(*fe.model, *fe.equations));
+    fe.system = lower::lower(*fe.equations, symbolic::operating_point(derived, *fe.equations));
+    if (externals) {
+        fe.system->externals = system_externals(*fe.model);
+        passes::separate_externals(*fe.system);
+    }
     say(timed("imported the equations into the IR", clock.seconds()));
     if (!fe.model->approximations.empty()) {
         if (!approximate(*fe.model, *fe.system, diags)) return;
@@ -155,6 +204,7 @@ void continue_front_end(FrontEnd& fe, const std::string& path, Until until,
     } else {
         passes::derive_jacobians(*fe.system);
         passes::output_jacobians(*fe.system);
+        if (externals) passes::external_jacobians(*fe.system);
         say(timed("derived the Jacobians", clock.seconds()));
     }
 }

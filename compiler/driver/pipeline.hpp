@@ -41,6 +41,11 @@ void continue_front_end(FrontEnd& fe, const std::string& path, Until until,
                         const std::function<void(const std::string&)>& progress = {},
                         Derivatives derivatives = Derivatives::automatic);
 
+/// The C prototypes of the model's external functions, as the generated code
+/// declares them (codegen::external_prototypes); "" without any. The user's
+/// source given as `--external file.c` is compiled against them.
+std::string external_prototypes(const model::Model& m);
+
 /// The digest of a model by content: its text and every data file it read, in
 /// order (not their paths). Generated code records it; the JIT's cache keys on it.
 std::string content_digest(const diag::SourceFile& source, const model::Model& m);

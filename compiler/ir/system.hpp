@@ -58,6 +58,23 @@ struct ParameterDerivatives {
     Row F;
 };
 
+/// An external function of the model (`external ...`, docs/language.md): the
+/// generated code evaluates `args`, calls the user's C function `name(args,
+/// result)` and passes its results as the input channels first_input ..
+/// first_input + results - 1 (after the declared channels) to the rest of the
+/// code. Jacobians compose by the chain rule through dargs_*.
+struct External {
+    std::string name;
+    std::string what;     // "force on nacelle", for comments
+    std::string location; // "model.mbd:12:10" of the declaration, for messages
+    int first_input = 0;
+    int results = 0;
+    Row args;                   // functions of t, q, q', the declared u and p
+    bool user_jacobian = true;  // false: `without jacobian`, central differences only
+    Matrix dargs_dq, dargs_dqd; // passes::external_jacobians: nargs x nq
+    Matrix dargs_du;            // nargs x (declared channels)
+};
+
 struct System {
     std::string model_name;
     std::string title;
@@ -101,10 +118,19 @@ struct System {
 
     OperatingPoint point;
 
+    /// The external functions; their results are the last input channels.
+    std::vector<External> externals;
+
     int nq() const { return static_cast<int>(dofs.size()); }
     int nu() const { return static_cast<int>(inputs.size()); }
     int np() const { return static_cast<int>(params.size()); }
     int ny() const { return static_cast<int>(outputs.size()); }
+    /// The input channels a caller gives (nu() less the externals' results).
+    int declared_nu() const {
+        int n = nu();
+        for (const External& e : externals) n -= e.results;
+        return n;
+    }
     /// Whether an output reads q'' (reaction loads): its code solves M q'' = F.
     bool outputs_read_accelerations() const {
         for (const Output& y : outputs)

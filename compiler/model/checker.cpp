@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <map>
 #include <set>
 
 namespace yamsc::model {
@@ -50,6 +51,7 @@ public:
         build_bodies();
         check_loads();
         check_outputs();
+        check_externals();
         check_dof_usage();
         check_linearize();
         check_initial_state();
@@ -754,6 +756,90 @@ private:
         resolved.args.push_back(std::move(id));
         e = std::move(resolved);
         return true;
+    }
+
+    // An external function: its name is a C symbol of the user's library, its
+    // arguments are what an output may read except q'' and reaction loads (they
+    // would need the accelerations the function's own result changes).
+    void check_externals() {
+        std::map<std::string, Loc> seen;
+        for (const auto& e : file_.externals) {
+            External out;
+            out.name = e.function.name;
+            out.loc = e.function.loc;
+            bool ok = true;
+            std::string why = reserved_reason(out.name);
+            // Global C symbols beside the model's namespace and the optional derivatives.
+            if (why.empty() && (out.name.rfind("yamsc", 0) == 0 || out.name == model_.name))
+                why = "is reserved for the generated code's own symbols (the model's name, "
+                      "yamsc*)";
+            for (const auto& other : file_.externals)
+                if (why.empty() && out.name == other.function.name + "_jacobian")
+                    why = "is the derivative of external function '" + other.function.name + "'";
+            if (!why.empty()) {
+                diags_.error(Kind::ReservedName, e.function.loc,
+                             "external function '" + out.name + "' " + why);
+                ok = false;
+            }
+            auto [it, inserted] = seen.emplace(out.name, e.function.loc);
+            if (!inserted) {
+                diags_.error(Kind::DuplicateName, e.function.loc,
+                             "external function '" + out.name + "' is already declared at " +
+                                 std::to_string(it->second.line) + ":" +
+                                 std::to_string(it->second.col));
+                ok = false;
+            }
+            const std::string what = "an argument of external function '" + out.name + "'";
+            switch (e.kind) {
+            case ast::External::Kind::force:
+            case ast::External::Kind::torque: {
+                const bool force = e.kind == ast::External::Kind::force;
+                out.kind = force ? External::Kind::force : External::Kind::torque;
+                out.body = body_ref(e.body, e.body_loc, force ? "a force" : "a torque");
+                out.frame = frame_ref(e.frame, out.body);
+                out.at = zero_vec(e.loc);
+                if (e.at) {
+                    if (auto v = exprs_.vector(*e.at,
+                                               constant_ctx("the point of application of a force")))
+                        out.at = *v;
+                    else
+                        ok = false;
+                }
+                ok = ok && out.body >= 0 && out.frame >= -1;
+                break;
+            }
+            case ast::External::Kind::genforce: {
+                out.kind = External::Kind::genforce;
+                std::set<int> dofs;
+                for (const ast::Named& d : e.dofs) {
+                    const int i = dof_ref(d, "an external genforce");
+                    if (i >= 0 && !dofs.insert(i).second) {
+                        diags_.error(Kind::DuplicateName, d.loc,
+                                     "DOF '" + d.name + "' is listed twice");
+                        ok = false;
+                    }
+                    ok = ok && i >= 0;
+                    out.dofs.push_back(i);
+                }
+                break;
+            }
+            }
+            for (const auto& a : e.args) {
+                ExprContext ctx{what};
+                ctx.dofs = true;
+                ctx.dof_primes = 1; // not q'': the result changes the accelerations
+                ctx.inputs = true;
+                ctx.time = true;
+                ctx.kinematics = true;
+                ctx.reactions = false;
+                const int frame = frame_ref(a.frame, -1);
+                ok = exprs_.scalar(a.value, ctx) && frame >= -1 && ok;
+                out.args.push_back(a.value);
+                out.arg_frames.push_back(frame);
+            }
+            out.without_jacobian = e.without_jacobian;
+            if (ok) model_.externals.push_back(out);
+        }
     }
 
     // Every DOF must drive a mode of one flexible body, or one step in each joint it

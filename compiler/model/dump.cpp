@@ -94,7 +94,34 @@ std::string dump(const Model& m) {
     for (const auto& o : m.outputs)
         out << "  output " << o.name << " = " << ast::to_string(o.value) << " in "
             << frame_name(m, o.frame)
-            << (o.frame_node >= 0 ? ".node[" + std::to_string(o.frame_node) + "]" : "") << "\n";
+            << (o.frame_node >= 0
+                    ? ".node(" +
+                          std::to_string(
+                              m.bodies[static_cast<std::size_t>(o.frame)]
+                                  .flex->sid->nodes[static_cast<std::size_t>(o.frame_node)]
+                                  .id) +
+                          ")"
+                    : "")
+            << "\n";
+    for (const auto& e : m.externals) {
+        out << "  external ";
+        if (e.kind == External::Kind::genforce) {
+            out << "genforce (";
+            for (std::size_t i = 0; i < e.dofs.size(); ++i)
+                out << (i > 0 ? ", " : "") << m.dofs[static_cast<std::size_t>(e.dofs[i])].name;
+            out << ")";
+        } else {
+            out << (e.kind == External::Kind::force ? "force" : "torque") << " on "
+                << frame_name(m, e.body);
+            if (e.kind == External::Kind::force) out << " at " << vec(e.at);
+            out << " in " << frame_name(m, e.frame);
+        }
+        out << " = " << e.name << "(";
+        for (std::size_t i = 0; i < e.args.size(); ++i)
+            out << (i > 0 ? ", " : "") << ast::to_string(e.args[i]) << " in "
+                << frame_name(m, e.arg_frames[i]);
+        out << ")" << (e.without_jacobian ? " without jacobian" : "") << "\n";
+    }
     return out.str();
 }
 

@@ -141,6 +141,10 @@ Shape ExprChecker::check_call(const Expr& e, const ExprContext& ctx) {
                          e.text + "() takes the name of one body or point");
             return Shape::invalid;
         }
+        if (is_reaction_function(e.text) && !ctx.reactions) {
+            diags_.error(Kind::WrongKind, e.loc, e.text + "() cannot be used in " + ctx.what);
+            return Shape::invalid;
+        }
         const Expr& target = e.args[0];
         if (target.text == "ground") {
             if (!is_reaction_function(e.text)) return Shape::vector;

@@ -19,6 +19,7 @@ struct ExprContext {
     int input_extra_order = 0; // inputs here need this many more derivatives than used
     bool time = false;         // t
     bool kinematics = false;   // position(b), velocity(b), angular_velocity(b)
+    bool reactions = true;     // with kinematics: reaction_force(b), reaction_moment(b)
 };
 
 enum class Shape { scalar, vector, invalid };

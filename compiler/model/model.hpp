@@ -142,6 +142,25 @@ struct Output {
     Loc loc;
 };
 
+/// `external force|torque|genforce ... = name(args)`: a load a C function of the
+/// user computes from the arguments (docs/language.md). with_external_channels()
+/// turns it into hidden inputs (the results) and hidden outputs (the arguments).
+struct External {
+    enum class Kind { force, torque, genforce };
+    std::string name; // the C function
+    Kind kind = Kind::force;
+    int body = -1;               // force, torque
+    Vec at;                      // force: point of application, body axes
+    int frame = -1;              // force, torque: components' frame (-1: ground)
+    std::vector<int> dofs;       // genforce: one result per DOF
+    std::vector<Expr> args;      // scalars of t, q, q', u, p and kinematics
+    std::vector<int> arg_frames; // frame of each argument's kinematic vectors (-1: ground)
+    bool without_jacobian = false;
+    Loc loc; // the function's name in the declaration
+
+    int results() const { return kind == Kind::genforce ? static_cast<int>(dofs.size()) : 3; }
+};
+
 /// `linearize { q = 0; psi' = Omega }`: the operating point of the linear model.
 /// One value per DOF, per DOF rate and per input channel (an input of order 2 has
 /// the channels u, u', u''), in the order of Model::dofs and of the channels;
@@ -190,6 +209,7 @@ struct Model {
     std::vector<Spring> springs;
     std::vector<GenForce> genforces;
     std::vector<Output> outputs;
+    std::vector<External> externals;
     std::optional<OperatingPoint> operating_point; // the `linearize` block, if any
     std::optional<InitialState> initial_state;     // the `initial` block, if any
     std::vector<Approximation> approximations;     // `approx` groups, in file order
@@ -197,6 +217,12 @@ struct Model {
     int body_index(const std::string& name) const;
     int point_index(const std::string& name) const;
 };
+
+/// The model the derivation sees: each external's results appended to the inputs
+/// (channels named `name[i]`, after every declared channel), its load applied with
+/// them, and its arguments appended to the outputs (named `name(i)`). The
+/// pipeline moves those outputs into ir::System::externals after lowering.
+Model with_external_channels(const Model& model);
 
 /// A readable dump, for `yamsc --dump=model`.
 std::string dump(const Model& model);

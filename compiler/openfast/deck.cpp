@@ -46,7 +46,10 @@ bool is_key(const Token& t) {
 }
 
 // How `from-openfast` treats each entry of the ElastoDyn main file.
-enum class Use { dof, number, file, ignored, two_bladed, furling, optional_number };
+// `off_by_default`: features of newer ElastoDyn files that the model does not have
+// (pitch DOF, platform reference offsets, yaw friction): without effect at their
+// default 0 or False, a warning otherwise.
+enum class Use { dof, number, file, ignored, two_bladed, furling, optional_number, off_by_default };
 
 /// The numeric entries of the ElastoDyn main file that the model uses, in ElastoDyn's
 /// spelling (without "()"): the one list both the classification of the entries
@@ -89,6 +92,14 @@ const std::map<std::string, Use>& elastodyn_keys() {
                               "BldNd_BlOutNd", "OutList_Nodal", "BldNd_Blades",
                               "BldNd_Nodes"})
             k[canonical(n)] = Use::ignored;
+        for (const char* n : {"PitchDOF", "PtfmRefxt", "PtfmRefyt", "YawFrctMod", "PBrIner1",
+                              "PBrIner2", "PBrIner3", "BlPIner1", "BlPIner2", "BlPIner3"})
+            k[canonical(n)] = Use::off_by_default;
+        // Yaw friction coefficients: used only with YawFrctMod != 0 (warned above).
+        for (const char* n : {"M_CSmax", "M_FCSmax", "M_MCSmax", "M_CD", "M_FCD", "M_MCD", "sig_v",
+                              "sig_v2", "OmgCut"})
+            k[canonical(n)] = Use::ignored;
+        k[canonical("HubIner_Teeter")] = Use::two_bladed;
         for (const char* n : {"TeetDefl", "UndSling", "Delta3", "TeetMod", "TeetDmpP", "TeetDmp",
                               "TeetCDmp", "TeetSStP", "TeetHStP", "TeetSSSp", "TeetHSSp"})
             k[canonical(n)] = Use::two_bladed;
@@ -163,6 +174,13 @@ private:
                 if (auto v = beam::parse_number(e.value))
                     (key == "tmax" ? deck_.tmax : deck_.dt) = v;
                 ignore(f, e.key, e.line);
+            } else if (key == "airdens") {
+                deck_.fst_air_density = beam::parse_number(e.value);
+                deck_.fst_air_density_at = file_line(f, e.line);
+                ignore(f, e.key, e.line);
+            } else if (key == "inflowfile" || key == "aerofile" || key == "servofile") {
+                deck_.module_files[e.key] = resolve(e.value, f);
+                ignore(f, e.key, e.line);
             } else if (key == "compelast") {
                 if (e.value != "1")
                     diags_.warning(Kind::NotSupported, at,
@@ -174,7 +192,12 @@ private:
                 for (const auto& [name, what] : fst_modules())
                     if (key == canonical(name)) {
                         module = true;
-                        if (e.value != "0")
+                        deck_.modules[name] = e;
+                        // Wind, rotor aerodynamics and control become the rotor block
+                        // (openfast/operation.cpp), which says what it converts.
+                        const bool operation =
+                            name == "CompInflow" || name == "CompAero" || name == "CompServo";
+                        if (e.value != "0" && !operation)
                             diags_.warning(Kind::NotSupported, at,
                                            name + " = " + e.value + ": " + what +
                                                " are not converted; the model declares the "
@@ -212,6 +235,16 @@ private:
                 continue;
             }
             if (it->second == Use::ignored) ignore(f, e.key, e.line);
+            if (it->second == Use::off_by_default) {
+                const std::string value = lower(e.value);
+                const auto number = beam::parse_number(e.value);
+                if (value == "false" || value == "f" || (number && *number == 0))
+                    ignore(f, e.key, e.line);
+                else
+                    diags_.warning(Kind::NotSupported, {deck_.ed, e.line, e.col},
+                                   e.key + " = " + e.value + ": not converted (the model has " +
+                                       "no pitch DOF, platform reference offset or yaw friction)");
+            }
         }
         keep_used_gauges(f);
         for (const std::string& flag : elastodyn_dof_flags()) {

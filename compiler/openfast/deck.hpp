@@ -32,10 +32,18 @@ struct OpenFastDeck {
     std::map<std::string, std::string> text; ///< numeric entries as written, for comments
     int blades = 3;
     int tower_nodes = 50, blade_nodes = 50;
-    std::string tower_file;               ///< paths as resolved from the ElastoDyn file
-    std::vector<std::string> blade_files; ///< one per blade
-    std::optional<double> tmax, dt;       ///< the `.fst` run, for the model's comment
-    std::optional<double> fst_gravity;    ///< newer decks give gravity in the `.fst`
+    std::string tower_file;                ///< paths as resolved from the ElastoDyn file
+    std::vector<std::string> blade_files;  ///< one per blade
+    std::optional<double> tmax, dt;        ///< the `.fst` run, for the model's comment
+    std::optional<double> fst_gravity;     ///< newer decks give gravity in the `.fst`
+    std::optional<double> fst_air_density; ///< likewise the air density (AirDens)
+    std::string fst_air_density_at;        ///< "file:line" of it
+    /// The `.fst`'s module switches (CompInflow, CompAero, CompServo, ...) as written,
+    /// with where they are, and the module files it names (InflowFile, AeroFile,
+    /// ServoFile), resolved: what `from-openfast` turns into the rotor block
+    /// (openfast/operation.hpp).
+    std::map<std::string, DeckEntry> modules;
+    std::map<std::string, std::string> module_files;
     /// Entries read but without effect on the structural model (outputs, simulation
     /// control, glue-code settings, two-bladed rotors): (file name, "Key:line").
     std::vector<std::pair<std::string, std::string>> ignored;

@@ -6,6 +6,7 @@
 #include "model/names.hpp"
 #include "openfast/deck.hpp"
 #include "openfast/model.hpp"
+#include "openfast/operation.hpp"
 #include "openfast/rotor.hpp"
 #include "parse/parser.hpp"
 
@@ -63,6 +64,7 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
     for (const std::string& blade : deck->blade_files)
         deck_files.push_back({"a blade file of the deck", blade});
     check_outputs(deck_files, output);
+    const fs::path folder = fs::absolute(o.output).lexically_normal().parent_path();
     OpenFastModelInput in;
     in.deck = &*deck;
     in.dofs = deck->dofs;
@@ -91,7 +93,6 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
     }
     in.source += switched + " -o " + fs::path(o.output).filename().string();
     in.name = model_name(o.output);
-    const fs::path folder = fs::absolute(o.output).lexically_normal().parent_path();
     in.tower_path = path_from(folder, deck->tower_file);
     for (const std::string& b : deck->blade_files) in.blade_paths.push_back(path_from(folder, b));
     const bool blades_rigid = !in.dofs["FlapDOF1"] && !in.dofs["FlapDOF2"] && !in.dofs["EdgeDOF"];
@@ -102,6 +103,23 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
     else if (auto tips = blade_tip_shapes(*deck, diags))
         in.blade_tips = *tips;
     if (tower_rigid) in.tower = rigid_tower(*deck, diags);
+    in.operation = read_operation(*deck, o.cp_table, diags);
+    in.output_file = fs::path(o.output).filename().string();
+    if (in.operation) {
+        // The run's files as the model's folder sees them; none may be the output.
+        Operation& op = *in.operation;
+        std::vector<NamedFile> run_files;
+        for (auto [path, what] : {std::pair{&op.table, "the Cp/Ct/Cq table"},
+                                  {&op.controller, "the controller library"},
+                                  {&op.controller_input, "the controller input"},
+                                  {&op.wind, "the wind file"}}) {
+            if (path->empty() || (path == &op.wind && op.wind_speed)) continue;
+            run_files.push_back({what, *path});
+            *path = path_from(folder, *path);
+        }
+        check_outputs(run_files, output);
+        if (op.wind_speed) op.wind = mbd_number(*op.wind_speed);
+    }
     if (diags.has_errors()) {
         err << diags.render();
         return 1;

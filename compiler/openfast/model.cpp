@@ -64,6 +64,7 @@ public:
         outputs();
         displacement_outputs();
         load_outputs();
+        operation_outputs();
         return out_.str();
     }
 
@@ -133,6 +134,7 @@ private:
         if (d_.tmax && d_.dt)
             out_ << "# The OpenFAST run: TMax = " << mbd_number(*d_.tmax)
                  << " s, DT = " << mbd_number(*d_.dt) << " s.\n";
+        if (in_.operation) operation_header(*in_.operation);
         std::string enabled, disabled;
         for (const std::string& flag : elastodyn_dof_flags()) {
             if (flag == "TeetDOF") continue;
@@ -253,6 +255,7 @@ private:
                   "rotor azimuth at t = 0 (Azimuth - AzimB1Up)");
             param("Omega0", rpm(v("RotSpeed")), "fixed rotor speed (RotSpeed, GenDOF off) [rad/s]");
         }
+        if (in_.operation) operation_parameters(*in_.operation);
     }
 
     static std::string rpm(double value) {
@@ -261,8 +264,13 @@ private:
 
     void inputs() {
         out_ << "\n# ---- loads (inputs; 0 unless given, e.g. `yamsc sim --u thrust=8e5`)\n";
-        input("thrust", "rotor thrust at the apex along the shaft [N]");
-        input("aero_torque", "aerodynamic torque on the rotor about the shaft [N m]");
+        if (in_.operation) {
+            input("V_wind", "hub-height wind speed [m/s] (`--wind`)");
+            input("pitch", "collective blade pitch of the rotor block [rad] (the controller's)");
+        }
+        const std::string added = in_.operation ? " (`--aero` adds the table's)" : "";
+        input("thrust", "rotor thrust at the apex along the shaft [N]" + added);
+        input("aero_torque", "aerodynamic torque on the rotor about the shaft [N m]" + added);
         input("gen_torque", "generator torque on the high-speed shaft [N m]");
         if (platform())
             for (const char* c : {"x", "y", "z"}) {
@@ -454,15 +462,16 @@ private:
         const std::string rotor = flexible_blades() ? "hub" : "rotor";
         const std::string gen = on("DrTrDOF") ? "gen_shaft" : rotor;
         out_ << "force  on " << rotor << " in " << rotor << " = (thrust, 0, 0)\n";
+        const std::string tq = generator_torque();
         if (gen == rotor) {
-            out_ << "torque on " << rotor << " in " << rotor
-                 << " = (aero_torque - GBRatio * gen_torque, 0, 0)\n";
+            out_ << "torque on " << rotor << " in " << rotor << " = (aero_torque - GBRatio * " << tq
+                 << ", 0, 0)\n";
         } else {
             out_ << "torque on " << rotor << " in " << rotor << " = (aero_torque, 0, 0)\n";
-            out_ << "torque on " << gen << " in " << gen << " = (-GBRatio * gen_torque, 0, 0)\n";
+            out_ << "torque on " << gen << " in " << gen << " = (-GBRatio * " << tq << ", 0, 0)\n";
         }
-        out_ << "torque on nacelle in " << gen
-             << " = (GBRatio * gen_torque, 0, 0)     # the generator's reaction\n";
+        out_ << "torque on nacelle in " << gen << " = (GBRatio * " << tq
+             << ", 0, 0)     # the generator's reaction\n";
         if (platform()) {
             out_ << "force  on platform in ground = (hydro_fx, hydro_fy, hydro_fz)\n";
             out_ << "torque on platform in ground = (hydro_mx, hydro_my, hydro_mz)\n";
@@ -769,9 +778,9 @@ private:
                           frc = "reaction_force(" + rotor + ")";
         std::string generator;
         if (!on("DrTrDOF"))
-            generator = on("GenDOF")
-                            ? " + (GBRatio * gen_torque + GenIner * GBRatio^2 * psi'') / 1000"
-                            : " + GBRatio * gen_torque / 1000";
+            generator = on("GenDOF") ? " + (GBRatio * " + generator_torque() +
+                                           " + GenIner * GBRatio^2 * psi'') / 1000"
+                                     : " + GBRatio * " + generator_torque() + " / 1000";
         const std::string torque = "-" + mom + ".x / 1000" + generator + " in " + rotor;
         output("LSShftMxa", torque, "kN m");
         output("LSSGagMya", "-(" + mom + ".y + ShftGagL * " + frc + ".z) / 1000 in " + rotor,
@@ -781,6 +790,82 @@ private:
         output("RotThrust", "-" + frc + ".x / 1000 in " + rotor, "kN");
         output("RotTorq", torque, "kN m");
         out_ << gauge_outputs(d_, flexible_tower(), flexible_blades(), diags_);
+    }
+
+    /// The generator torque on the high-speed shaft: the input, plus ServoDyn's simple
+    /// region-2 law k w^2 when the deck runs in wind (VS_Rgn2K, 0 under a controller).
+    std::string generator_torque() const {
+        if (!in_.operation) return "gen_torque";
+        const std::string speed = on("GenDOF") ? "psi'" : "Omega0";
+        return "(gen_torque + VS_Rgn2K * (GBRatio * " + speed + ")^2)";
+    }
+
+    /// The command that runs the model in the deck's wind under its controller.
+    void operation_header(const Operation& op) {
+        out_ << "# In wind (docs/openfast.md, \"A full deck\"): AeroDyn becomes the quasi-steady\n"
+                "# rotor block of a Cp/Ct/Cq table, InflowWind the hub-height wind, ServoDyn's\n"
+                "# controller the DISCON library it names:\n";
+        std::vector<std::string> options{"--aero " + (op.table.empty() ? "TABLE" : op.table),
+                                         "--wind " + (op.wind.empty() ? "SPEED" : op.wind)};
+        if (!op.controller.empty()) {
+            options.push_back("--controller " + op.controller);
+            if (!op.controller_input.empty())
+                options.push_back("--controller-input " + op.controller_input);
+        }
+        if (d_.tmax && d_.dt)
+            options.push_back("--tmax " + mbd_number(*d_.tmax) + " --dt " + mbd_number(*d_.dt));
+        if (v("BlPitch1") != 0)
+            options.push_back("--u pitch=" + mbd_number(v("BlPitch1") * std::acos(-1.0) / 180));
+        // One option a line, as a shell command continued with backslashes.
+        out_ << "#   yamsc sim " << in_.output_file;
+        for (const std::string& option : options) out_ << " \\\n#     " << option;
+        out_ << "\n";
+    }
+
+    void operation_parameters(const Operation& op) {
+        out_ << "\n# ---- the rotor block, the generator and the actuators (AeroDyn, ServoDyn)\n";
+        param("rotor_radius", op.rotor_radius,
+              "radius of the Cp/Ct/Cq table [m] (" + where("TipRad") + ")");
+        param("air_density", op.air_density, "AirDens [kg/m^3] (" + op.air_density_from + ")");
+        param("GenEff", op.gen_efficiency,
+              "generator efficiency [%]" +
+                  (op.gen_efficiency_from.empty() ? "" : " (" + op.gen_efficiency_from + ")"));
+        param("VS_Rgn2K", op.region2_k,
+              "region-2 law k w^2 added to gen_torque (w: generator speed [rad/s]) [N m s^2]" +
+                  (op.region2_k_from.empty()
+                       ? std::string(" (0: the controller's)")
+                       : " (ServoDyn's VS_Rgn2K * (30/pi)^2, " + op.region2_k_from + ")"));
+        param("pitch_actuator_tau", 0,
+              "pitch actuator under `sim --controller`: first-order time constant, 0: ideal [s]");
+        param("torque_actuator_tau", 0, "generator torque actuator: likewise [s]");
+    }
+
+    /// What the rotor block and the controller read (docs/cli.md), in OpenFAST's names.
+    void operation_outputs() {
+        if (!in_.operation) return;
+        const std::string rotor = flexible_blades() ? "hub" : "rotor";
+        const std::string gen_speed = on("GenDOF") ? "psi'" : "Omega0";
+        std::string speed = on("GenDOF") ? "psi'" : "Omega0";
+        if (on("DrTrDOF")) speed = "(" + speed + " + drtr')";
+        out_ << "\n# ---- what the rotor block (`--aero`) reads: the rotor speed and the hub's\n"
+                "# velocity along the shaft (downwind), which gives the tower its aerodynamic\n"
+                "# damping; the generator and pitch channels a controller sees\n";
+        output("rotor_speed", speed, "rad/s");
+        output("hub_shaft_velocity", "velocity(" + rotor + ").x in " + rotor, "m/s");
+        output("GenTq", generator_torque() + " / 1000", "kN m");
+        output("GenPwr",
+               "GenEff / 100 * GBRatio * " + gen_speed + " * " + generator_torque() + " / 1000",
+               "kW");
+        output("BldPitch1", "pitch * 180 / pi", "deg");
+        // DISCON records 53 and 54: the tower-top accelerations, the modes' tip
+        // accelerations (each mode's shape is 1 at the top) from the solved q''.
+        std::string fa, ss;
+        for (const char* m : {"fa1", "fa2"})
+            if (tower_mode_on(m)) fa += (fa.empty() ? "q_" : " + q_") + std::string(m) + "''";
+        for (const char* m : {"ss1", "ss2"})
+            if (tower_mode_on(m)) ss += (ss.empty() ? "q_" : " + q_") + std::string(m) + "''";
+        if (!fa.empty()) output("YawBrTAxp", fa, "m/s^2");
+        if (!ss.empty()) output("YawBrTAyp", ss, "m/s^2");
     }
 
     void output(const std::string& name, const std::string& value, const std::string& unit) {

@@ -3,6 +3,7 @@
 // bodies, joints and DOFs follow ElastoDyn's flags and whose loads are inputs.
 #include "openfast/blade_deflection.hpp"
 #include "openfast/deck.hpp"
+#include "openfast/operation.hpp"
 #include "openfast/rotor.hpp"
 
 #include <map>
@@ -23,6 +24,9 @@ struct OpenFastModelInput {
     /// Tip values of the blades' twisted shapes (flexible blades): ElastoDyn's mapping
     /// of OoPDefl and IPDefl onto the blade DOFs.
     std::vector<BladeTipShapes> blade_tips;
+    /// A full deck's wind, rotor block and controller (paths as the model names them).
+    std::optional<Operation> operation;
+    std::string output_file; ///< the model's file name, for the command in its header
 };
 
 /// The model text. Warnings about approximated initial conditions go to `diags`.

@@ -448,6 +448,46 @@ YAMSC_ACTION(genforce_value) {
     st.file.genforces.back().value = st.pop();
 }
 
+// ---------------------------------------------------------------- external functions
+
+YAMSC_ACTION(kw_external) {
+    st.file.externals.emplace_back().loc = st.loc(in.position());
+}
+YAMSC_ACTION(ext_force_word) {
+    st.file.externals.back().kind = ast::External::Kind::force;
+}
+YAMSC_ACTION(ext_torque_word) {
+    st.file.externals.back().kind = ast::External::Kind::torque;
+}
+YAMSC_ACTION(ext_genforce_word) {
+    st.file.externals.back().kind = ast::External::Kind::genforce;
+}
+YAMSC_ACTION(ext_body) {
+    st.file.externals.back().body = in.string();
+    st.file.externals.back().body_loc = st.loc(in.position());
+}
+YAMSC_ACTION(ext_at_value) {
+    st.file.externals.back().at = st.pop();
+}
+YAMSC_ACTION(ext_frame) {
+    st.file.externals.back().frame = ast::Named{in.string(), st.loc(in.position()), {}};
+}
+YAMSC_ACTION(ext_dof) {
+    st.file.externals.back().dofs.push_back(ast::Named{in.string(), st.loc(in.position()), {}});
+}
+YAMSC_ACTION(ext_function) {
+    st.file.externals.back().function = ast::Named{in.string(), st.loc(in.position()), {}};
+}
+YAMSC_ACTION(ext_arg_value) {
+    st.file.externals.back().args.push_back(ast::ExternalArg{st.pop(), std::nullopt});
+}
+YAMSC_ACTION(ext_arg_frame) {
+    st.file.externals.back().args.back().frame = ast::Named{in.string(), st.loc(in.position()), {}};
+}
+YAMSC_ACTION(ext_without) {
+    st.file.externals.back().without_jacobian = true;
+}
+
 // ---------------------------------------------------------------- analysis
 
 YAMSC_ACTION(kw_approx) {

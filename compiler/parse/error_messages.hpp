@@ -156,6 +156,25 @@ YAMSC_ERROR_MESSAGE(spring_terms,
 YAMSC_ERROR_MESSAGE(genforce_dof, "expected a DOF name after 'genforce', found {found}");
 YAMSC_ERROR_MESSAGE(genforce_equals, "expected '=' after the DOF name, found {found}");
 
+YAMSC_ERROR_MESSAGE(
+    ext_target, "expected 'force on', 'torque on' or 'genforce' after 'external', found {found}");
+YAMSC_ERROR_MESSAGE(ext_on, "expected 'on' after 'force' or 'torque', found {found}");
+YAMSC_ERROR_MESSAGE(ext_body, "expected a body name after 'on', found {found}");
+YAMSC_ERROR_MESSAGE(ext_frame, "expected a frame (a body or ground) after 'in', found {found}");
+YAMSC_ERROR_MESSAGE(ext_dofs, "expected a DOF name or a list of DOFs (q1, q2), found {found}");
+YAMSC_ERROR_MESSAGE(ext_dof, "expected a DOF name, found {found}");
+YAMSC_ERROR_MESSAGE(ext_dof_close, "expected ',' or ')' to close the list of DOFs, found {found}");
+YAMSC_ERROR_MESSAGE(ext_equals,
+                    "expected 'at', 'in' or '=' in the external statement, found {found}");
+YAMSC_ERROR_MESSAGE(ext_call,
+                    "expected the function's name and its arguments, name(a, b), found {found}");
+YAMSC_ERROR_MESSAGE(ext_args_open,
+                    "expected '(' and the arguments after the function's name, found {found}");
+YAMSC_ERROR_MESSAGE(ext_arg, "expected an argument (an expression), found {found}");
+YAMSC_ERROR_MESSAGE(ext_arg_frame, "expected a frame (a body or ground) after 'in', found {found}");
+YAMSC_ERROR_MESSAGE(ext_args_close, "expected ',' or ')' to close the arguments, found {found}");
+YAMSC_ERROR_MESSAGE(ext_jacobian_word, "expected 'jacobian' after 'without', found {found}");
+
 // ---- analysis
 YAMSC_ERROR_MESSAGE(approx_symbol, "expected a name to approximate, found {found}");
 YAMSC_ERROR_MESSAGE(assignment_equals, "expected '=' after the name, found {found}");

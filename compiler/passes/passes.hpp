@@ -28,6 +28,15 @@ void derive_tangent(ir::System& s);
 /// C = [∂y/∂q, ∂y/∂q'] and D = ∂y/∂u: the linear model's output matrices.
 void output_jacobians(ir::System& s);
 
+/// Moves the last outputs, the arguments of the externals (model::with_external_channels
+/// appends them), into `s.externals[k].args`; each external's `args` holds how
+/// many it takes on entry (placeholders). Drops the operating point's values of the
+/// externals' input channels. Run right after lowering.
+void separate_externals(ir::System& s);
+
+/// The arguments' derivatives dargs_dq, dargs_dqd, dargs_du of every external.
+void external_jacobians(ir::System& s);
+
 /// The derivatives of M, F and the Jacobians with respect to each parameter of
 /// `params` (indices into s.params, in that order; sensitivities of the linear
 /// model, docs/linearization.md). Needs derive_jacobians.

@@ -33,12 +33,13 @@ template <class Item> const Item* named(const std::vector<Item>& items, const st
 
 ModelHandle ModelHandle::from_source(const std::string& path, const std::string& sid,
                                      const std::vector<driver::Assignment>& set,
-                                     std::vector<std::string> routines) {
+                                     std::vector<std::string> routines,
+                                     const std::string& external) {
     if (routines.empty()) routines = all_routines();
     std::ostringstream err;
     std::optional<driver::Loaded> loaded;
     try {
-        loaded = driver::load(path, set, sid, false, err, {}, routines);
+        loaded = driver::load(path, set, sid, false, err, {}, routines, external);
     } catch (const std::exception& e) {
         // UserError (a --set name that does not exist), a failed compile, ...
         throw LoadError(err.str() + e.what());

@@ -29,10 +29,12 @@ class ModelHandle {
 public:
     /// Checks and compiles a model file like `yamsc sim`: `routines` of the ABI
     /// (empty: every one) in one cached library, shared with the commands that
-    /// compile the same routines. Throws LoadError with the diagnostics.
+    /// compile the same routines. `external`: the model's external functions
+    /// (a library or a C/C++ source, as `--external`). Throws LoadError with the diagnostics.
     static ModelHandle from_source(const std::string& path, const std::string& sid,
                                    const std::vector<driver::Assignment>& set,
-                                   std::vector<std::string> routines);
+                                   std::vector<std::string> routines,
+                                   const std::string& external = "");
     /// A library exporting a model (abi_export.hpp), bound to its defaults and `set`.
     static ModelHandle from_library(const std::string& path,
                                     const std::vector<driver::Assignment>& set);

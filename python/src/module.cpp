@@ -325,12 +325,13 @@ PYBIND11_MODULE(_yamsc, mod) {
     mod.def(
         "load",
         [](const std::string& path, const std::string& sid, const Assignments& set,
-           const std::vector<std::string>& routines) {
+           const std::vector<std::string>& routines, const std::string& external) {
             const auto a = assignments(set);
             py::gil_scoped_release released; // compiling can take seconds
-            return ModelHandle::from_source(path, sid, a, routines);
+            return ModelHandle::from_source(path, sid, a, routines, external);
         },
-        py::arg("path"), py::arg("sid"), py::arg("set"), py::arg("routines"));
+        py::arg("path"), py::arg("sid"), py::arg("set"), py::arg("routines"),
+        py::arg("external") = std::string());
     mod.def(
         "load_library",
         [](const std::string& path, const Assignments& set) {

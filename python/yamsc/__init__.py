@@ -228,16 +228,18 @@ ROUTINES = ("rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outpu
 SIMULATE = ("rhs", "outputs")
 
 
-def load(path, sid=None, set=None, routines=None):
+def load(path, sid=None, set=None, routines=None, external=None):
     """Checks and compiles a model file (cached like `yamsc sim`).
 
     sid: "body=file.sid,..." or {"body": "file.sid"} (as --sid); set: {name:
     value} over the parameters' defaults (as --set); routines: those to
-    compile (default: all of ROUTINES; fewer compile faster for large models).
+    compile (default: all of ROUTINES; fewer compile faster for large models);
+    external: the model's external functions, a shared library or a C/C++
+    source (as --external; one implementation per function name and process).
     Raises yamsc.Error with the located diagnostics when the model has errors.
     """
     return Model(_yamsc.load(str(path), _sid_spec(sid), _assignments(set, "set"),
-                             list(routines or ())))
+                             list(routines or ()), str(external or "")))
 
 
 def load_library(path, set=None):

@@ -26,7 +26,10 @@ WindSignal read_wind_csv(const std::string& path) {
     int line_no = 0;
     while (std::getline(in, line)) {
         ++line_no;
-        if (line.find_first_not_of(" \t\r") == std::string::npos || line[0] == '#') continue;
+        // '#' comments, and '!' ones of OpenFAST's uniform wind files (InflowWind
+        // WindType 2: time, speed, then direction, shear and gust columns).
+        const auto first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#' || line[first] == '!') continue;
         std::replace(line.begin(), line.end(), ',', ' ');
         std::istringstream s(line);
         s.imbue(std::locale::classic());

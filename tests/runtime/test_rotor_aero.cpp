@@ -236,6 +236,15 @@ TEST_CASE("--wind: steady, a step and a table of time and speed") {
     CHECK(w(5.0) == doctest::Approx(9.0));
     CHECK(w(15.0) == doctest::Approx(9.5));
     CHECK(w(30.0) == 9.0);
+    // An OpenFAST uniform wind file: '!' comments, the speed in the second column.
+    const std::string wnd = std::string(YAMSC_TEST_BINARY_DIR) + "/wind_test.wnd";
+    std::ofstream(wnd) << "! Uniform wind file\n! Time WindSpeed WindDir VertSpeed\n"
+                          "   0.0  8.0  0.0  0.0\n  60.0  8.0  0.0  0.0\n"
+                          "  60.00625  14.0  0.0  0.0\n";
+    const WindSignal uniform = parse_wind(wnd);
+    CHECK(uniform(30.0) == 8.0);
+    CHECK(uniform(61.0) == 14.0);
+    CHECK(uniform(60.003125) == doctest::Approx(11.0));
     CHECK_THROWS_AS(parse_wind("step:8:14"), std::invalid_argument);
     CHECK_THROWS_AS(parse_wind("no_such_file.csv"), std::runtime_error);
 }

@@ -264,6 +264,34 @@ TEST_CASE("the NREL 5-MW baseline controller in the loop (sim --controller)") {
     CHECK(tail_mean(t, "BldPitch1", 50) == 0.0);
 }
 
+TEST_CASE("a wind step from 8 to 14 m/s under the baseline controller settles to steady 14 m/s") {
+    // The reference deck's own uniform wind file (OpenFAST format, InflowWind
+    // WindType 2): 8 m/s, then 14 m/s from t = 60 s.
+    const std::string wnd = reference_dir + "/operating/deck/step_8_14.wnd";
+    const Table step = run("baseline_step_8_14", wnd, "", "", 160, YAMSC_BASELINE_DISCON);
+    // The same controller in steady 14 m/s, from rated speed and a pitch near its own.
+    const Table steady = run("baseline_14mps", "14", "", "pitch=8deg,gen_torque=43094", 160,
+                             YAMSC_BASELINE_DISCON, "psi'=1.267109");
+    // Stable: the rotor never overspeeds by more than the step's transient allows.
+    const int rpm_column = step.find("RotSpeed");
+    REQUIRE(rpm_column >= 0);
+    double peak = 0;
+    for (double rpm : step.data[static_cast<std::size_t>(rpm_column)]) peak = std::max(peak, rpm);
+    MESSAGE("wind step 8 -> 14 m/s: peak rotor speed "
+            << peak << " rpm; last 30 s: " << tail_mean(step, "RotSpeed", 30) << " rpm, pitch "
+            << tail_mean(step, "BldPitch1", 30) << " deg (steady "
+            << tail_mean(steady, "BldPitch1", 30) << ")");
+    CHECK(peak < 12.1 * 1.2);
+    // Settled: 70 s after the step its last 30 s equal the steady run's.
+    for (const char* channel : {"RotSpeed", "GenPwr", "aero_thrust", "TTDspFA"})
+        CHECK_MESSAGE(tail_mean(step, channel, 30) ==
+                          doctest::Approx(tail_mean(steady, channel, 30)).epsilon(0.001),
+                      channel);
+    CHECK(tail_mean(step, "BldPitch1", 30) ==
+          doctest::Approx(tail_mean(steady, "BldPitch1", 30)).epsilon(0.001));
+    CHECK(tail_mean(step, "RotSpeed", 30) == doctest::Approx(12.1).epsilon(0.005));
+}
+
 TEST_CASE("actuators: a first-order pitch lag between the controller's demand and the blades") {
     // 16 m/s from the model's initial state: the baseline controller's first
     // demand d0 is the same with and without the lag (same measurements at

@@ -1,0 +1,167 @@
+#include "analysis/external_library.hpp"
+
+#include "analysis/jit_cache.hpp"
+#include "diag/errors.hpp"
+#include "driver/files.hpp"
+#include "driver/pipeline.hpp"
+
+#include <yamsc/atomic_file.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <dlfcn.h>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <unistd.h>
+
+namespace yamsc::driver {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& tail) {
+    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+/// The language of a source, or "" for a library.
+std::string source_language(const std::string& spec) {
+    if (ends_with(spec, ".c")) return "c";
+    for (const char* ext : {".cpp", ".cc", ".cxx", ".C"})
+        if (ends_with(spec, ext)) return "c++";
+    return "";
+}
+
+std::string shell_quote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+std::string read_all(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw diag::UserError("--external: cannot read '" + path + "'");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::string folder_of(const std::string& path) {
+    const auto slash = path.find_last_of('/');
+    return slash == std::string::npos ? "." : path.substr(0, slash);
+}
+
+const char* const flags = "-O2 -shared -fPIC";
+
+/// The user's source compiled against the prototypes, from the cache when it is there.
+std::string compiled_source(const model::Model& m, const std::string& spec,
+                            const std::string& language, const JitOptions& o) {
+    const std::string source = read_all(spec);
+    const std::string prototypes = external_prototypes(m);
+    const std::string compiler = compiler_of(o.compiler);
+    const ModelCache cache(cache_folder(o.cache_dir));
+    const std::string key = digest(language + "\n" + source + "\n" + prototypes + "\n" + flags +
+                                   "\n" + compiler_identity(compiler));
+    const std::string library = cache.library_path(m.name + "_external", key);
+    if (::access(library.c_str(), R_OK) == 0) {
+        if (o.progress) o.progress("using the external functions cached in " + library);
+        return library;
+    }
+    if (o.notice) o.notice("compiling the external functions of " + spec + " with " + compiler);
+    const std::string tmp = library + ".tmp." + std::to_string(::getpid());
+    runtime::write_file_atomically(tmp + ".h", prototypes);
+    const std::string log = tmp + ".log";
+    const std::string cmd = shell_quote(compiler) + " -x " + language +
+                            (language == "c++" ? " -std=c++17 " : " ") + flags + " -include " +
+                            shell_quote(tmp + ".h") + " -I" + shell_quote(folder_of(spec)) +
+                            " -o " + shell_quote(tmp + ".so") + " " + shell_quote(spec) + " > " +
+                            shell_quote(log) + " 2>&1";
+    const int status = std::system(cmd.c_str());
+    std::remove((tmp + ".h").c_str());
+    std::string messages;
+    {
+        std::ifstream in(log);
+        std::stringstream text;
+        text << in.rdbuf();
+        messages = text.str();
+    }
+    std::remove(log.c_str());
+    if (status != 0) {
+        std::remove((tmp + ".so").c_str());
+        throw diag::UserError(
+            "--external " + spec + " does not compile against the model's prototypes (" + compiler +
+            "):\n" + messages.substr(0, 4000) + "the prototypes are:\n" + prototypes);
+    }
+    if (std::rename((tmp + ".so").c_str(), library.c_str()) != 0) {
+        std::remove((tmp + ".so").c_str());
+        throw diag::UserError("cannot store the compiled external functions in '" + library + "'");
+    }
+    return library;
+}
+
+} // namespace
+
+std::optional<ExternalLibrary> load_external_library(const model::Model& m, const std::string& spec,
+                                                     const JitOptions& o,
+                                                     diag::Diagnostics& diags) {
+    if (m.externals.empty()) {
+        if (spec.empty()) return ExternalLibrary{};
+        throw diag::UsageError("--external " + spec + ": the model declares no external function");
+    }
+    if (spec.empty()) {
+        for (const model::External& e : m.externals)
+            diags.error(diag::Kind::Io, e.loc,
+                        "external function '" + e.name +
+                            "' has no implementation: give --external lib.so (a library "
+                            "exporting it) or --external file.c (its source)");
+        return std::nullopt;
+    }
+    ExternalLibrary lib;
+    const std::string language = source_language(spec);
+    lib.path = language.empty() ? spec : compiled_source(m, spec, language, o);
+    // A name without a slash would be searched on the library path instead.
+    const std::string open_path =
+        lib.path.find('/') == std::string::npos ? "./" + lib.path : lib.path;
+    // Never closed: the model's library binds to it and lives as long as its views.
+    void* handle = ::dlopen(open_path.c_str(), RTLD_NOW | RTLD_GLOBAL);
+    if (!handle) {
+        const char* why = ::dlerror();
+        throw diag::UserError("--external: cannot load '" + lib.path +
+                              "': " + (why ? why : "unknown reason"));
+    }
+    bool ok = true;
+    for (const model::External& e : m.externals) {
+        ::dlerror();
+        if (!::dlsym(handle, e.name.c_str())) {
+            diags.error(diag::Kind::UnknownName, e.loc,
+                        "external function '" + e.name + "' is not in " + spec + " (no symbol '" +
+                            e.name + "': is it declared extern \"C\" and exported?)");
+            ok = false;
+            continue;
+        }
+        // The model's library binds to the first definition in the global scope:
+        // one in the program or a library loaded before (libc's `send`) would win.
+        void* mine = ::dlsym(handle, e.name.c_str());
+        void* first = ::dlsym(RTLD_DEFAULT, e.name.c_str());
+        if (first != mine) {
+            Dl_info info{};
+            const bool known = ::dladdr(first, &info) != 0 && info.dli_fname;
+            diags.error(diag::Kind::DuplicateName, e.loc,
+                        "external function '" + e.name + "' is also a symbol of " +
+                            (known ? std::string(info.dli_fname) : std::string("the program")) +
+                            ", which would be called instead: rename it (e.g. with the model's "
+                            "name as a prefix)");
+            ok = false;
+            continue;
+        }
+        if (e.without_jacobian)
+            lib.notes.push_back(e.name + ": derivatives by central differences (without jacobian)");
+        else if (!::dlsym(handle, (e.name + "_jacobian").c_str()))
+            lib.notes.push_back(e.name + ": derivatives by central differences (no " + e.name +
+                                "_jacobian in " + spec + ")");
+        else
+            lib.notes.push_back(e.name + ": derivatives from " + e.name + "_jacobian");
+    }
+    if (!ok) return std::nullopt;
+    return lib;
+}
+
+} // namespace yamsc::driver

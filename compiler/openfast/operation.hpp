@@ -1,0 +1,44 @@
+#pragma once
+// What a full OpenFAST deck's InflowWind, AeroDyn and ServoDyn become in a yamsc
+// model (docs/openfast.md, "A full deck: wind, rotor block, controller"): the
+// runtime's quasi-steady rotor block (`yamsc sim --aero TABLE`: rotor radius, air
+// density, a Cp/Ct/Cq table), the hub-height wind (`--wind`), the generator
+// (efficiency, ServoDyn's simple region-2 law) and the controller hookup
+// (`--controller LIB --controller-input FILE`). Each value keeps where it came
+// from, for the model's comments.
+#include "diag/diagnostics.hpp"
+#include "openfast/deck.hpp"
+
+#include <optional>
+#include <string>
+
+namespace yamsc::driver {
+
+struct Operation {
+    double rotor_radius = 0; ///< TipRad (ElastoDyn) [m]
+    double air_density = 0;  ///< AirDens (.fst, else AeroDyn) [kg/m^3]
+    std::string air_density_from;
+    /// `--wind`'s argument: a hub-height speed, or a uniform wind file (resolved
+    /// path); empty when InflowWind's wind type is not converted.
+    std::string wind;
+    std::optional<double> wind_speed; ///< when steady
+    std::string wind_from;
+    double gen_efficiency = 100; ///< GenEff [%]
+    std::string gen_efficiency_from;
+    /// ServoDyn's VS_Rgn2K (VSContrl = 1) converted to k w^2 in the generator's speed
+    /// in rad/s [N m s^2]; 0 otherwise.
+    double region2_k = 0;
+    std::string region2_k_from;
+    std::string controller, controller_input; ///< resolved paths; empty without a DLL
+    std::string table;                        ///< the Cp/Ct/Cq table (resolved), or empty
+    std::string table_from;
+};
+
+/// The operation of a deck whose `.fst` switches on AeroDyn (CompAero != 0), else
+/// nullopt. `cp_table` is `from-openfast --cp-table` (empty: the controller input's
+/// PerfFileName, as ROSCO reads it). What cannot be converted (BEM, dynamic inflow,
+/// unsteady aerodynamics, other wind types, yaw control) is a warning at its line.
+std::optional<Operation> read_operation(const OpenFastDeck& deck, const std::string& cp_table,
+                                        diag::Diagnostics& diags);
+
+} // namespace yamsc::driver
