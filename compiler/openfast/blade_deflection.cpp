@@ -23,23 +23,37 @@ double mass_at(const beam::Beam& b, double s) {
     return st.back().mass_per_length;
 }
 
-/// See BladeTipShapes::spin_inertia. The SID's nodes 1..N are the element centres.
-std::array<std::array<double, 3>, 3> spin_inertia(const beam::Beam& b, const sid::Sid& sid,
-                                                  double hub_radius, double cone) {
-    std::array<std::array<double, 3>, 3> c{};
+/// See BladeTipShapes::spin_inertia and ::shortening_coriolis. The SID's nodes 1..N are
+/// the element centres; its shapes are in the pitched blade axes, turned here into the
+/// coned axes (x out of plane, y in plane: the blade's direction of rotation is -y).
+void second_order_inertia(const beam::Beam& b, const sid::Sid& sid, double hub_radius, double cone,
+                          double pitch, BladeTipShapes& t) {
+    auto& c = t.spin_inertia;
+    auto& d = t.shortening_coriolis;
+    c = {};
+    d = {};
     const double dr = b.length / b.elements, sb = std::sin(cone), cb = std::cos(cone);
+    const double sp = std::sin(pitch), cp = std::cos(pitch);
     for (int e = 0; e < b.elements; ++e) {
         const double r = (e + 0.5) * dr;
         const double m = mass_at(b, r / b.length) * dr;
         const sid::Node& n = sid.nodes[static_cast<std::size_t>(e + 1)];
-        for (int j = 0; j < 3; ++j)
-            for (int k = 0; k < 3; ++k)
-                c[static_cast<std::size_t>(j)][static_cast<std::size_t>(k)] +=
-                    m * (n.phi.at0(1, j) * n.phi.at0(1, k) +
-                         sb * sb * n.phi.at0(0, j) * n.phi.at0(0, k) +
-                         cb * cb * (hub_radius + r) * n.phi.at1(2, j, k));
+        std::array<double, 3> x{}, y{}; // coned-frame shape components per DOF
+        for (std::size_t j = 0; j < 3; ++j) {
+            const double px = n.phi.at0(0, static_cast<int>(j)),
+                         py = n.phi.at0(1, static_cast<int>(j));
+            x[j] = cp * px + sp * py;
+            y[j] = -sp * px + cp * py;
+        }
+        for (std::size_t j = 0; j < 3; ++j)
+            for (std::size_t k = 0; k < 3; ++k) {
+                // AxRedBld_jk: the shortening along the blade, -phi1_z.
+                const double axred = -n.phi.at1(2, static_cast<int>(j), static_cast<int>(k));
+                c[j][k] +=
+                    m * (y[j] * y[k] + sb * sb * x[j] * x[k] - cb * cb * (hub_radius + r) * axred);
+                for (std::size_t i = 0; i < 3; ++i) d[i][j][k] += m * cb * y[i] * axred;
+            }
     }
-    return c;
 }
 
 } // namespace
@@ -67,8 +81,9 @@ std::optional<std::vector<BladeTipShapes>> blade_tip_shapes(const OpenFastDeck& 
                 t.axial[static_cast<std::size_t>(j)][static_cast<std::size_t>(k)] =
                     tip.phi.at1(2, j, k);
         const int k = static_cast<int>(out.size()) + 1;
-        t.spin_inertia = spin_inertia(*blade, sid, deck["HubRad"],
-                                      deck["PreCone" + std::to_string(k)] * std::acos(-1.0) / 180);
+        const double deg = std::acos(-1.0) / 180;
+        second_order_inertia(*blade, sid, deck["HubRad"], deck["PreCone" + std::to_string(k)] * deg,
+                             deck["BlPitch" + std::to_string(k)] * deg, t);
         out.push_back(t);
     }
     return out;

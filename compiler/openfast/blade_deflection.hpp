@@ -24,6 +24,13 @@ struct BladeTipShapes {
     /// sum over ElastoDyn's elements of m [Phi_y Phi_y + sin^2 b Phi_x Phi_x
     /// - cos^2 b (HubRad + r) AxRedBld]. The SID's inertia is first order in q.
     std::array<std::array<double, 3>, 3> spin_inertia{};
+    /// Coriolis coefficients of the blade's radial shortening, per DOF i and q_j q_k:
+    /// sum over the elements of m cos b Phi_y,i AxRedBld_jk (Phi_y in plane, coned axes).
+    /// The shortening's rate is radial; the spin turns it into an in-plane Coriolis
+    /// force on every DOF with an in-plane shape (the edge mode), and the Coriolis force
+    /// of the in-plane velocities into a radial force on the shortening (the flaps).
+    /// ElastoDyn's kinematics (AxRedBld in PLinVelES) hold both; the SID does not.
+    std::array<std::array<std::array<double, 3>, 3>, 3> shortening_coriolis{};
 };
 
 /// The tip shapes (and the second-order spin inertia) of every blade of the deck, from its blade

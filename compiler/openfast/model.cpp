@@ -526,6 +526,39 @@ private:
         out_ << "torque on hub in hub = (-((" << strip(j2dot) << ") * " << omega;
         if (!omega_dot.empty()) out_ << " + (" << strip(j2) << ") * " << omega_dot;
         out_ << "), 0, 0)\n";
+        shortening_coriolis_forces(omega);
+    }
+
+    /// The Coriolis forces of the blades' radial shortening (BladeTipShapes::
+    /// shortening_coriolis, D): the spin Omega and the shortening rate give an in-plane
+    /// force on the edge mode, the in-plane velocities a radial one on the shortening:
+    /// Q_i = 2 Omega sum_jk (D_jik - D_ijk) q_k q_j', gyroscopic (no power). Their moment
+    /// about the shaft is already in the spin-inertia torque, which acts on the hub; without
+    /// these the blades' share of it is missing and the drivetrain-edge mode (1.7 Hz) is
+    /// driven at twice the flap frequency with the wrong sign (docs/openfast.md).
+    void shortening_coriolis_forces(const std::string& omega) {
+        out_ << "# The Coriolis forces of the blades' radial shortening on their modes\n"
+                "# (ElastoDyn's AxRedBld in the partial velocities; docs/openfast.md).\n";
+        for (int k = 1; k <= d_.blades; ++k) {
+            const auto& d = in_.blade_tips[static_cast<std::size_t>(k - 1)].shortening_coriolis;
+            for (std::size_t i = 0; i < 3; ++i) {
+                if (!on(blade_modes[i][0])) continue;
+                std::string sum;
+                for (std::size_t j = 0; j < 3; ++j) {
+                    if (!on(blade_modes[j][0])) continue;
+                    for (std::size_t l = 0; l < 3; ++l) {
+                        if (!on(blade_modes[l][0])) continue;
+                        const double c = 2 * (d[j][i][l] - d[i][j][l]);
+                        if (std::fabs(c) < 1e-12) continue;
+                        sum += term(c, blade_dof(k, blade_modes[l][1]) + " * " +
+                                           blade_dof(k, blade_modes[j][1]) + "'");
+                    }
+                }
+                if (!sum.empty())
+                    out_ << "genforce " << blade_dof(k, blade_modes[i][1]) << " = " << omega
+                         << " * (" << strip(sum) << ")\n";
+            }
+        }
     }
 
     void initial_state() {
