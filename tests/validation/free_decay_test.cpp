@@ -140,7 +140,7 @@ TEST_CASE("land-based 16 DOF (every ElastoDyn DOF, 30 s): DOF channels against O
     // blades with flap 1, edge 1, flap 2 (issue 13), nonlinear only (the generated
     // model compiles in about a minute). Bounds: what yamsc achieves today
     // (docs/validation.md) with a little room; the issue's target, 1 % on every
-    // channel, is met (the yaw angle, 0.98 %, is the closest).
+    // channel, is met (the yaw angle, 0.95 %, is the closest).
     const Case& c = land_16dof_case;
     convert(c);
     const Table sim = simulate(c, false);
@@ -153,38 +153,38 @@ TEST_CASE("land-based 16 DOF (every ElastoDyn DOF, 30 s): DOF channels against O
         // the DOFs
         {"Q_TFA1_[m]", 0.0003},
         {"Q_TSS1_[m]", 0.001},
-        {"Q_TFA2_[m]", 0.009},
-        {"Q_TSS2_[m]", 0.006},
+        {"Q_TFA2_[m]", 0.004},
+        {"Q_TSS2_[m]", 0.0012},
         {"NacYaw_[deg]", 0.0099},
-        {"RotSpeed_[rpm]", 0.0065},
-        {"Q_DrTr_[rad]", 0.009},
-        {"Q_B1F1_[m]", 0.0045},
-        {"Q_B1E1_[m]", 0.0042},
-        {"Q_B1F2_[m]", 0.009},
-        {"Q_B2F1_[m]", 0.006},
-        {"Q_B2E1_[m]", 0.0045},
-        {"Q_B2F2_[m]", 0.009},
-        {"Q_B3F1_[m]", 0.004},
-        {"Q_B3E1_[m]", 0.004},
-        {"Q_B3F2_[m]", 0.009},
+        {"RotSpeed_[rpm]", 0.0013},
+        {"Q_DrTr_[rad]", 0.0006},
+        {"Q_B1F1_[m]", 0.0033},
+        {"Q_B1E1_[m]", 0.0014},
+        {"Q_B1F2_[m]", 0.0033},
+        {"Q_B2F1_[m]", 0.003},
+        {"Q_B2E1_[m]", 0.0011},
+        {"Q_B2F2_[m]", 0.003},
+        {"Q_B3F1_[m]", 0.0028},
+        {"Q_B3E1_[m]", 0.0013},
+        {"Q_B3F2_[m]", 0.003},
         // ElastoDyn's displacement channels (docs/openfast.md)
         {"TTDspFA_[m]", 0.0003},
         {"TTDspSS_[m]", 0.001},
-        {"OoPDefl1_[m]", 0.0045},
-        {"IPDefl1_[m]", 0.0045},
-        {"OoPDefl2_[m]", 0.0065},
-        {"IPDefl2_[m]", 0.0045},
-        {"OoPDefl3_[m]", 0.004},
-        {"IPDefl3_[m]", 0.0035},
-        {"TipDzc1_[m]", 0.005}};
-    // ElastoDyn's load channels from the joints' reactions (measured 0.03-0.81 %);
+        {"OoPDefl1_[m]", 0.0033},
+        {"IPDefl1_[m]", 0.0014},
+        {"OoPDefl2_[m]", 0.0032},
+        {"IPDefl2_[m]", 0.001},
+        {"OoPDefl3_[m]", 0.003},
+        {"IPDefl3_[m]", 0.0012},
+        {"TipDzc1_[m]", 0.003}};
+    // ElastoDyn's load channels from the joints' reactions (measured 0.02-0.68 %);
     // the target of issue 13 for these is 2 %.
     const std::map<std::string, double> load_bounds{
-        {"TwrBsMxt_[kN-m]", 0.0015}, {"TwrBsMyt_[kN-m]", 0.0005}, {"TwrBsMzt_[kN-m]", 0.0025},
-        {"YawBrMxp_[kN-m]", 0.008},  {"YawBrMyp_[kN-m]", 0.008},  {"RootMxc1_[kN-m]", 0.004},
-        {"RootMyc1_[kN-m]", 0.004},  {"RootMzc1_[kN-m]", 0.009},  {"LSShftMxa_[kN-m]", 0.01},
-        {"LSSGagMya_[kN-m]", 0.006}, {"LSSGagMza_[kN-m]", 0.006}, {"RotThrust_[kN]", 0.0015},
-        {"RotTorq_[kN-m]", 0.01}};
+        {"TwrBsMxt_[kN-m]", 0.001},  {"TwrBsMyt_[kN-m]", 0.0005},  {"TwrBsMzt_[kN-m]", 0.0017},
+        {"YawBrMxp_[kN-m]", 0.0012}, {"YawBrMyp_[kN-m]", 0.004},   {"RootMxc1_[kN-m]", 0.0016},
+        {"RootMyc1_[kN-m]", 0.003},  {"RootMzc1_[kN-m]", 0.009},   {"LSShftMxa_[kN-m]", 0.0006},
+        {"LSSGagMya_[kN-m]", 0.003}, {"LSSGagMza_[kN-m]", 0.0025}, {"RotThrust_[kN]", 0.0015},
+        {"RotTorq_[kN-m]", 0.0006}};
     auto score = [&](const std::string& channel) {
         const ChannelScore* s = nullptr;
         for (const ChannelScore& x : cmp.channels)
@@ -204,6 +204,20 @@ TEST_CASE("land-based 16 DOF (every ElastoDyn DOF, 30 s): DOF channels against O
         const double error = score(channel);
         CHECK(error < bound);
         CHECK(error < 0.02); // the target of issue 13 for loads
+    }
+    // R^2 (target 0.99): the drivetrain chain, which the Coriolis forces of the blades'
+    // radial shortening brought from 0.985 to 0.9999 (docs/validation.md), and the rest.
+    const std::map<std::string, double> r2_bounds{
+        {"Q_DrTr_[rad]", 0.9999},    {"QD_DrTr_[rad/s]", 0.9998},  {"LSShftMxa_[kN-m]", 0.9999},
+        {"RotSpeed_[rpm]", 0.99995}, {"QD_GeAz_[rad/s]", 0.99995}, {"Q_B1E1_[m]", 0.9999},
+        {"NacYaw_[deg]", 0.998},     {"RootMzc1_[kN-m]", 0.993}};
+    for (const auto& [channel, bound] : r2_bounds) {
+        CAPTURE(channel);
+        const ChannelScore* s = nullptr;
+        for (const ChannelScore& x : cmp.channels)
+            if (x.name == channel) s = &x;
+        REQUIRE(s);
+        CHECK(s->r2 > bound);
     }
     // ElastoDyn's initial blade deflection: OoPDefl = 2 m on the twisted blade.
     const int f1 = sim.find("Q_B1F1_[m]"), e1 = sim.find("Q_B1E1_[m]");

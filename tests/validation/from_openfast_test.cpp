@@ -122,6 +122,11 @@ TEST_CASE("flexible blades, tower modes 2 and the drivetrain: the full 16-DOF on
     CHECK(text.find("elements = 17") != std::string::npos); // BldNodes
     // The blades' second-order spin inertia on the hub, and the tip deflections.
     CHECK(text.find("torque on hub in hub = (-((") != std::string::npos);
+    // The Coriolis forces of the radial shortening: gyroscopic, so the flap-1 force of the
+    // edge rate and the edge force of the flap rate have opposite coefficients,
+    // 2 (D_e,11 - D_1,e1) with D_i,jk = sum over the elements of m cos(cone) Phi_y,i AxRedBld_jk.
+    CHECK(text.find("genforce q_b1_flap1 = (psi' + drtr') * (42.6455576654") != std::string::npos);
+    CHECK(text.find("genforce q_b1_edge1 = (psi' + drtr') * (-42.6455576654") != std::string::npos);
     CHECK(text.find("output OoPDefl1 = ") != std::string::npos);
     CHECK(text.find("output TTDspSS = position(nacelle).y in tower") != std::string::npos);
     CHECK(param(text, "GenIner") == 534.116);
