@@ -186,16 +186,19 @@ void write_table_csv(const Table& table, std::ostream& out) {
     for (std::size_t j = 0; j < table.columns.size(); ++j)
         out << (j ? "," : "") << table.columns[j];
     out << '\n';
-    std::string line;
+    std::string text; // written out about every 64 kB
     for (std::size_t row = 0; row < table.rows(); ++row) {
-        line.clear();
         for (std::size_t j = 0; j < table.columns.size(); ++j) {
-            if (j) line += ',';
-            line += runtime::format_csv_value(table.data[j][row]);
+            if (j) text += ',';
+            runtime::append_csv_value(text, table.data[j][row]);
         }
-        line += '\n';
-        out << line;
+        text += '\n';
+        if (text.size() > 65536) {
+            out << text;
+            text.clear();
+        }
     }
+    out << text;
 }
 
 void write_table_csv(const Table& table, const std::string& path) {

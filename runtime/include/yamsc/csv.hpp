@@ -16,6 +16,9 @@ inline constexpr int csv_significant_digits = 10;
 /// One value as written in the CSV (shortest of fixed/scientific, like %.10g,
 /// independent of the C locale).
 std::string format_csv_value(double value);
+/// The same text appended to `out` without a temporary string: what the CSV
+/// writers call once per value.
+void append_csv_value(std::string& out, double value);
 
 void write_csv(const SimulationResult& result, std::ostream& out);
 /// Writes atomically (see atomic_file.hpp); throws std::runtime_error on failure.
