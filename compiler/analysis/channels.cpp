@@ -186,19 +186,12 @@ void write_table_csv(const Table& table, std::ostream& out) {
     for (std::size_t j = 0; j < table.columns.size(); ++j)
         out << (j ? "," : "") << table.columns[j];
     out << '\n';
-    std::string text; // written out about every 64 kB
+    runtime::CsvBuffer text(out);
     for (std::size_t row = 0; row < table.rows(); ++row) {
-        for (std::size_t j = 0; j < table.columns.size(); ++j) {
-            if (j) text += ',';
-            runtime::append_csv_value(text, table.data[j][row]);
-        }
-        text += '\n';
-        if (text.size() > 65536) {
-            out << text;
-            text.clear();
-        }
+        for (std::size_t j = 0; j < table.columns.size(); ++j)
+            text.value(table.data[j][row], j ? ',' : 0);
+        text.end_line();
     }
-    out << text;
 }
 
 void write_table_csv(const Table& table, const std::string& path) {

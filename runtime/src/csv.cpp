@@ -69,10 +69,21 @@ char* write_value(char* out, double value) {
         digits = 1000000000ULL;
         ++e;
     }
+    // The 10 digits, two at a time.
+    static constexpr char pairs[] = "00010203040506070809101112131415161718192021222324"
+                                    "25262728293031323334353637383940414243444546474849"
+                                    "50515253545556575859606162636465666768697071727374"
+                                    "75767778798081828384858687888990919293949596979899";
     char d[10];
-    for (int i = 9; i >= 0; --i) {
-        d[i] = static_cast<char>('0' + digits % 10);
-        digits /= 10;
+    auto halves = {static_cast<std::uint32_t>(digits / 100000),
+                   static_cast<std::uint32_t>(digits % 100000)};
+    int at = 0;
+    for (std::uint32_t half : halves) {
+        d[at] = static_cast<char>('0' + half / 10000);
+        const std::uint32_t rest = half % 10000;
+        std::memcpy(d + at + 1, pairs + 2 * (rest / 100), 2);
+        std::memcpy(d + at + 3, pairs + 2 * (rest % 100), 2);
+        at += 5;
     }
     int count = 10; // significant digits left after dropping trailing zeros
     while (count > 1 && d[count - 1] == '0') --count;
@@ -108,6 +119,10 @@ char* write_value(char* out, double value) {
 
 } // namespace
 
+char* write_csv_value(char* out, double value) {
+    return write_value(out, value);
+}
+
 std::string format_csv_value(double value) {
     char buffer[64];
     return std::string(buffer, write_value(buffer, value));
@@ -122,28 +137,17 @@ void write_csv(const SimulationResult& result, std::ostream& out) {
     for (std::size_t j = 0; j < result.columns.size(); ++j)
         out << (j ? "," : "") << result.columns[j];
     out << '\n';
-    // Rows are formatted into one buffer, written out about every 64 kB.
-    std::string text;
+    // Rows are formatted into one buffer, written out when it is nearly full.
+    CsvBuffer text(out);
     const auto nx = static_cast<std::size_t>(result.nx), ny = static_cast<std::size_t>(result.ny);
     for (std::size_t row = 0; row < result.rows(); ++row) {
-        append_csv_value(text, result.time[row]);
+        text.value(result.time[row]);
         const double* x = result.state_row(row);
-        for (std::size_t j = 0; j < nx; ++j) {
-            text += ',';
-            append_csv_value(text, x[j]);
-        }
+        for (std::size_t j = 0; j < nx; ++j) text.value(x[j], ',');
         const double* y = ny ? result.output_row(row) : nullptr;
-        for (std::size_t j = 0; j < ny; ++j) {
-            text += ',';
-            append_csv_value(text, y[j]);
-        }
-        text += '\n';
-        if (text.size() > 65536) {
-            out << text;
-            text.clear();
-        }
+        for (std::size_t j = 0; j < ny; ++j) text.value(y[j], ',');
+        text.end_line();
     }
-    out << text;
 }
 
 void write_csv(const SimulationResult& result, const std::string& path) {
