@@ -157,15 +157,32 @@ void write_csv(const SimulationResult& result, const std::string& path) {
 std::vector<ChannelSummary> summarize(const SimulationResult& result) {
     std::vector<ChannelSummary> channels;
     if (result.rows() == 0) return channels;
-    for (std::size_t j = 1; j < result.column_count(); ++j) {
-        ChannelSummary channel{result.columns[j], result.value(0, j), result.value(0, j),
-                               result.value(result.rows() - 1, j)};
-        for (std::size_t row = 1; row < result.rows(); ++row) {
-            const double v = result.value(row, j);
-            channel.min = std::min(channel.min, v);
-            channel.max = std::max(channel.max, v);
+    for (std::size_t j = 1; j < result.column_count(); ++j)
+        channels.push_back({result.columns[j], result.value(0, j), result.value(0, j),
+                            result.value(result.rows() - 1, j)});
+    // Row by row through the stored arrays (not value(), which decides per call
+    // whether a column is a state or an output).
+    const auto nx = static_cast<std::size_t>(result.nx), ny = static_cast<std::size_t>(result.ny);
+    if (channels.size() != nx + ny) { // a table not in simulate()'s shape
+        for (std::size_t j = 1; j < result.column_count(); ++j)
+            for (std::size_t row = 1; row < result.rows(); ++row) {
+                const double v = result.value(row, j);
+                channels[j - 1].min = std::min(channels[j - 1].min, v);
+                channels[j - 1].max = std::max(channels[j - 1].max, v);
+            }
+        return channels;
+    }
+    for (std::size_t row = 1; row < result.rows(); ++row) {
+        const double* x = result.state_row(row);
+        for (std::size_t j = 0; j < nx; ++j) {
+            channels[j].min = std::min(channels[j].min, x[j]);
+            channels[j].max = std::max(channels[j].max, x[j]);
         }
-        channels.push_back(channel);
+        const double* y = ny ? result.output_row(row) : nullptr;
+        for (std::size_t j = 0; j < ny; ++j) {
+            channels[nx + j].min = std::min(channels[nx + j].min, y[j]);
+            channels[nx + j].max = std::max(channels[nx + j].max, y[j]);
+        }
     }
     return channels;
 }
