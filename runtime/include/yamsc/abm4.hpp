@@ -2,8 +2,7 @@
 // Fixed-step Adams-Bashforth-Moulton, fourth order (ABM4): the integrator of
 // OpenFAST's ElastoDyn (Method = 3). Two right-hand sides per step instead of
 // RK4's four, so at the same step it costs half as much; its stability region
-// is smaller than RK4's (about a third along the imaginary axis), enough for
-// the step sizes the aeroelastic decks use.
+// is smaller than RK4's, enough for the step sizes the aeroelastic decks use.
 #include "yamsc/integration.hpp"
 #include "yamsc/model_view.hpp"
 #include "yamsc/rk4.hpp"
