@@ -139,11 +139,12 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     if (!loaded) return 1;
     const SimRun run = simulate_case(*loaded, o, out, err);
     const runtime::SimulationResult& result = run.result;
-    // The table (a copy of every column) only for what reads it.
-    const bool need_table = reference || !o.plot.empty();
+    // The table (a copy of the columns) only for what reads it; OpenFAST's
+    // channels always, which also checks that the model has them.
+    const bool need_table = reference || !o.plot.empty() || o.channels == Channels::openfast;
     const Table table = need_table ? sim_table(run, o.channels) : Table{};
     if (!o.output.empty()) {
-        if (need_table && o.channels == Channels::openfast)
+        if (o.channels == Channels::openfast)
             write_table_csv(table, o.output);
         else
             write_sim_csv(run, o.channels, o.output);
