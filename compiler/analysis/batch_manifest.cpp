@@ -228,8 +228,10 @@ BatchCase case_of(const Manifest& m, const ManifestRow& row) {
         } else if (column == "method") {
             if (f.text == "cvode")
                 c.sim.method = SimMethod::cvode;
+            else if (f.text == "abm4")
+                c.sim.method = SimMethod::abm4;
             else if (!f.text.empty() && f.text != "rk4")
-                throw CaseError(at(f), "method must be rk4 or cvode, not '" + f.text + "'");
+                throw CaseError(at(f), "method must be rk4, abm4 or cvode, not '" + f.text + "'");
         } else if (column == "aero") {
             if (!f.text.empty()) {
                 c.sim.aero = resolved(m, f.text);

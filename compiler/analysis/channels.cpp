@@ -134,12 +134,12 @@ Table openfast_table(const runtime::SimulationResult& result, int first_output_c
     Table all = table_of(result);
     Table t;
     t.columns.push_back("Time_[s]");
-    t.data.push_back(all.data.front());
+    t.data.push_back(std::move(all.data.front()));
     for (std::size_t j = static_cast<std::size_t>(first_output_column); j < all.columns.size();
          ++j) {
         const OpenFastChannel* c = openfast_channel(all.columns[j]);
         if (!c) continue;
-        std::vector<double> values = all.data[j];
+        std::vector<double> values = std::move(all.data[j]); // each column is taken once
         if (c->wrap_360)
             for (double& v : values) {
                 v = std::fmod(v, 360.0);
@@ -186,15 +186,11 @@ void write_table_csv(const Table& table, std::ostream& out) {
     for (std::size_t j = 0; j < table.columns.size(); ++j)
         out << (j ? "," : "") << table.columns[j];
     out << '\n';
-    std::string line;
+    runtime::CsvBuffer text(out);
     for (std::size_t row = 0; row < table.rows(); ++row) {
-        line.clear();
-        for (std::size_t j = 0; j < table.columns.size(); ++j) {
-            if (j) line += ',';
-            line += runtime::format_csv_value(table.data[j][row]);
-        }
-        line += '\n';
-        out << line;
+        for (std::size_t j = 0; j < table.columns.size(); ++j)
+            text.value(table.data[j][row], j ? ',' : 0);
+        text.end_line();
     }
 }
 

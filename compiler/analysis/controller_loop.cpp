@@ -4,6 +4,7 @@
 
 #include <yamsc/discon.hpp>
 #include <yamsc/integration.hpp>
+#include <yamsc/stepper.hpp>
 
 #include <cmath>
 #include <stdexcept>
@@ -76,8 +77,9 @@ simulate_with_controller(const runtime::ModelView& v, const runtime::SimulationO
         options.u_of_t ? options.u_of_t : runtime::constant_input(options.u);
     const auto nq = static_cast<std::size_t>(v.nq);
     const runtime::TimeGrid grid(options.t_start, options.t_end, options.dt);
+    const std::size_t stride = runtime::output_stride(options.dt, options.dt_out);
     std::vector<double> x = options.x0, u(static_cast<std::size_t>(v.nu)),
-                        y(static_cast<std::size_t>(v.ny));
+                        u_stage(static_cast<std::size_t>(v.nu)), y(static_cast<std::size_t>(v.ny));
     // What the actuators apply (the model's inputs), from --u at the start.
     runtime::ControllerDemands applied;
     {
@@ -85,14 +87,45 @@ simulate_with_controller(const runtime::ModelView& v, const runtime::SimulationO
         applied.pitch = u[static_cast<std::size_t>(pitch)];
         applied.gen_torque = u[static_cast<std::size_t>(torque)];
     }
+    // The step in progress: from t_step, the demands `to` held through the
+    // actuators, which stood at `from`.
+    double t_step = options.t_start;
+    runtime::ControllerDemands from, to;
+    const Actuators a = actuators;
+    auto step_inputs = [&](double time, double* out) {
+        base(time, out);
+        out[pitch] = actuator_lag(from.pitch, to.pitch, time - t_step, a.pitch_tau);
+        out[torque] = actuator_lag(from.gen_torque, to.gen_torque, time - t_step, a.torque_tau);
+    };
+    runtime::FixedStepper stepper(
+        options.method,
+        [&](double time, const double* xs, double* xdot) {
+            step_inputs(time, u_stage.data());
+            v.rhs(time, xs, u_stage.data(), xdot);
+        },
+        x.size());
+
     runtime::SimulationResult result;
-    for (std::size_t k = 0; k + 1 < grid.size(); ++k) {
+    result.columns = runtime::column_names(v);
+    result.nx = v.nx();
+    result.ny = v.ny;
+    auto store = [&](double t, const double* outputs) {
+        result.time.push_back(t);
+        result.states.insert(result.states.end(), x.begin(), x.end());
+        result.outputs.insert(result.outputs.end(), outputs, outputs + v.ny);
+    };
+    const std::size_t last = grid.size() - 1;
+    for (std::size_t k = 0;; ++k) {
         const double t = grid[k];
-        // measurements at t, with the actuators' inputs in force
+        // measurements at t, with the actuators' inputs in force: the outputs of row k
         base(t, u.data());
         u[static_cast<std::size_t>(pitch)] = applied.pitch;
         u[static_cast<std::size_t>(torque)] = applied.gen_torque;
         v.outputs(t, x.data(), x.data() + nq, u.data(), y.data());
+        if (k == last) {
+            store(t, y.data());
+            break;
+        }
         runtime::ControllerMeasurements m;
         m.time = t;
         m.step = grid.step();
@@ -113,36 +146,24 @@ simulate_with_controller(const runtime::ModelView& v, const runtime::SimulationO
         } catch (const std::runtime_error& e) {
             throw diag::UserError(e.what());
         }
-        // one step with the demands held
-        runtime::SimulationOptions step = options;
-        step.t_start = t;
-        step.t_end = grid[k + 1];
-        step.dt = grid[k + 1] - t;
-        step.x0 = x;
-        // The demands held over the step, through the actuators.
-        const runtime::ControllerDemands from = applied, to = demand;
-        const Actuators a = actuators;
-        step.u_of_t = [&base, from, to, a, t, pitch, torque](double time, double* out) {
-            base(time, out);
-            out[pitch] = actuator_lag(from.pitch, to.pitch, time - t, a.pitch_tau);
-            out[torque] = actuator_lag(from.gen_torque, to.gen_torque, time - t, a.torque_tau);
-        };
-        applied.pitch = actuator_lag(from.pitch, to.pitch, step.dt, a.pitch_tau);
-        applied.gen_torque = actuator_lag(from.gen_torque, to.gen_torque, step.dt, a.torque_tau);
-        runtime::SimulationResult r = runtime::simulate(v, step);
-        const std::size_t first = k == 0 ? 0 : 1; // the start row is the previous end
+        // One step with the demands held, through the actuators.
+        from = applied;
+        to = demand;
+        t_step = t;
         if (k == 0) {
-            result.columns = r.columns;
-            result.nx = r.nx;
-            result.ny = r.ny;
+            // The first row shows the inputs of the first step at its start
+            // (the demand, for ideal actuators), not the measurement's.
+            step_inputs(t, u_stage.data());
+            std::vector<double> y0(y.size());
+            v.outputs(t, x.data(), x.data() + nq, u_stage.data(), y0.data());
+            store(t, y0.data());
+        } else if (k % stride == 0) {
+            store(t, y.data());
         }
-        for (std::size_t row = first; row < r.rows(); ++row) {
-            result.time.push_back(r.time[row]);
-            result.states.insert(result.states.end(), r.state_row(row), r.state_row(row) + r.nx);
-            result.outputs.insert(result.outputs.end(), r.output_row(row),
-                                  r.output_row(row) + r.ny);
-        }
-        x.assign(r.state_row(r.rows() - 1), r.state_row(r.rows() - 1) + r.nx);
+        const double dt = grid[k + 1] - t;
+        applied.pitch = actuator_lag(from.pitch, to.pitch, dt, a.pitch_tau);
+        applied.gen_torque = actuator_lag(from.gen_torque, to.gen_torque, dt, a.torque_tau);
+        stepper.step(t, dt, x.data());
     }
     return result;
 }

@@ -106,6 +106,18 @@ std::string program_identity() {
     return id;
 }
 
+std::string cpu_identity() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string id;
+    for (std::string line;
+         std::getline(in, line) && line.find_first_not_of(" \t") != std::string::npos;) {
+        // The first processor's block: its model and what it can execute.
+        for (const char* key : {"vendor_id", "model name", "flags", "Features", "CPU part"})
+            if (line.rfind(key, 0) == 0) id += line + "\n";
+    }
+    return id;
+}
+
 ModelCache::ModelCache(std::string folder) : folder_(std::move(folder)) {
     make_dirs(folder_);
 }

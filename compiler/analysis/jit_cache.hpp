@@ -25,6 +25,10 @@ std::string compiler_identity(const std::string& compiler);
 /// running executable, so a rebuilt yamsc never loads another build's models.
 std::string program_identity();
 
+/// The CPU that -march=native compiles for: its model and feature flags
+/// (/proc/cpuinfo; empty where that cannot be read).
+std::string cpu_identity();
+
 struct CompileEstimate {
     double seconds = 0;
     bool measured_here = false; // from this cache's record, else a built-in rate

@@ -55,7 +55,10 @@ SimRun simulate_case(const Loaded& l, const SimOptions& o, std::ostream& out, st
     runtime::SimulationOptions s;
     s.t_end = o.tmax;
     s.dt = o.dt;
-    s.method = o.method == SimMethod::cvode ? runtime::Method::cvode : runtime::Method::rk4;
+    s.dt_out = o.dt_out;
+    s.method = o.method == SimMethod::cvode  ? runtime::Method::cvode
+               : o.method == SimMethod::abm4 ? runtime::Method::abm4
+                                             : runtime::Method::rk4;
     s.rtol = o.rtol;
     s.atol = o.atol;
     s.x0 = q;

@@ -35,7 +35,8 @@ const char* usage_text = R"(usage:
   yamsc trim MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--hold dof,..]
                        [--adjust input,..] [--aero Cp_Ct_Cq.txt] [--wind V] [--json]
   yamsc sim MODEL.mbd --tmax T --dt DT [--ic name=v,..] [--u name=v,..] [--set name=v,..]
-                      [--method rk4|cvode] [--rtol R] [--atol A] [-o out.csv] [-v]
+                      [--method rk4|abm4|cvode] [--rtol R] [--atol A] [-o out.csv]
+                      [--dt-out DT_OUT] [-v]
                       [--channels all|openfast] [--compare ref.csv] [--plot out.svg]
                       [--plot-channels a,b,..] [--linear [--at name=v,..]]
                       [--aero Cp_Ct_Cq.txt] [--wind V|step:V0:V1:t=T|wind.csv]
@@ -289,25 +290,10 @@ int run(int argc, char** argv) {
     }
     if (cmd == "sim") {
         Args a(argc, argv, 2,
-               {"--tmax",
-                "--dt",
-                "--ic",
-                "--u",
-                "--set",
-                "--sid",
-                "--method",
-                "-o",
-                "--rtol",
-                "--atol",
-                "--channels",
-                "--compare",
-                "--plot",
-                "--plot-channels",
-                "--at",
-                "--aero",
-                "--wind",
-                "--controller",
-                "--controller-input",
+               {"--tmax",    "--dt",       "--dt-out",  "--ic",         "--u",
+                "--set",     "--sid",      "--method",  "-o",           "--rtol",
+                "--atol",    "--channels", "--compare", "--plot",       "--plot-channels",
+                "--at",      "--aero",     "--wind",    "--controller", "--controller-input",
                 "--external"},
                {"-v", "--linear"});
         SimOptions o;
@@ -316,13 +302,22 @@ int run(int argc, char** argv) {
         o.tmax = a.number("--tmax", 0);
         o.dt = a.number("--dt", 0);
         if (!(o.tmax > 0) || !(o.dt > 0)) throw UsageError("--tmax and --dt must be positive");
+        o.dt_out = a.number("--dt-out", 0);
+        if (a.has("--dt-out")) {
+            // As runtime::output_stride checks it (the CLI does not link the runtime).
+            const double steps = o.dt_out / o.dt;
+            if (!(o.dt_out > 0) || std::round(steps) < 1 ||
+                std::fabs(steps - std::round(steps)) > 1e-9 * std::round(steps))
+                throw UsageError("--dt-out must be a positive multiple of --dt");
+        }
         o.ic = a.assignments("--ic");
         o.u = a.assignments("--u");
         o.set = a.assignments("--set");
         o.sid = a.get("--sid");
         o.external = a.get("--external");
-        o.method = choice(a, "--method", SimMethod::rk4,
-                          {{"rk4", SimMethod::rk4}, {"cvode", SimMethod::cvode}});
+        o.method = choice(
+            a, "--method", SimMethod::rk4,
+            {{"rk4", SimMethod::rk4}, {"abm4", SimMethod::abm4}, {"cvode", SimMethod::cvode}});
         o.rtol = a.number("--rtol", o.rtol);
         o.atol = a.number("--atol", o.atol);
         o.output = a.get("-o");
@@ -344,7 +339,7 @@ int run(int argc, char** argv) {
         if (o.controller.empty() && !o.controller_input.empty())
             throw UsageError("--controller-input needs --controller");
         if (!o.controller.empty() && (o.linear || o.method == SimMethod::cvode))
-            throw UsageError("--controller runs with RK4 on the nonlinear model");
+            throw UsageError("--controller runs with RK4 or ABM4 on the nonlinear model");
         return sim(o, std::cout, std::cerr);
     }
     if (cmd == "batch" && argc > 2 && std::string(argv[2]) == "merge") {

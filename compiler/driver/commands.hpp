@@ -31,7 +31,7 @@ enum class Real { double_precision, single_precision };
 enum class Derivatives { automatic, unrolled, tangent };
 inline constexpr std::size_t tangent_form_min_dofs = 25;
 
-enum class SimMethod { rk4, cvode };
+enum class SimMethod { rk4, abm4, cvode };
 /// --channels: outputs as the model names them, or as OpenFAST's channels.
 enum class Channels { all, openfast };
 
@@ -105,6 +105,7 @@ struct TrimOptions {
 struct SimOptions {
     std::string model;
     double tmax = 0, dt = 0;
+    double dt_out = 0; // --dt-out: the time between rows (a multiple of dt); 0: every step
     std::vector<Assignment> ic, u, set;
     std::string sid;      // --sid body=file.sid,..
     std::string external; // --external lib.so|file.c|file.cpp

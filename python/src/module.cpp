@@ -164,7 +164,7 @@ py::dict simulate(ModelHandle& h, double t_end, double dt, const OptArray& x0, c
     s.t_end = t_end;
     s.dt = dt;
     const auto m = yamsc::runtime::parse_method(method);
-    if (!m) throw py::value_error("method must be 'rk4' or 'cvode', not '" + method + "'");
+    if (!m) throw py::value_error("method must be 'rk4', 'abm4' or 'cvode', not '" + method + "'");
     s.method = *m;
     s.rtol = rtol;
     s.atol = atol;

@@ -187,7 +187,7 @@ class Model:
         ic: {"dof": v, "dof'": v} over the `initial` block, or x0 (2 nq values).
         u: None (zeros), {input: value} or nu values (constant), a table (rows of
         t and nu values, linear in t) or a callable u(t) returning nu values.
-        dt: the step of rk4, the output step of cvode; rtol and atol: cvode's
+        dt: the step of rk4 and abm4, the output step of cvode; rtol and atol: cvode's
         tolerances, by default those of `yamsc sim` (1e-8, 1e-10). The GIL is released
         while the model runs (a callable u takes it back for each call).
         Returns a pandas DataFrame (columns as `yamsc sim -o` writes them) when

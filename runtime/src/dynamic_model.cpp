@@ -4,7 +4,9 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace yamsc::runtime {
 
@@ -21,6 +23,12 @@ struct SharedModel::Library {
     yamsc_forcing_fn forcing = nullptr;
     yamsc_jacobians_fn jacobians = nullptr;
     yamsc_outputs_fn outputs = nullptr;
+    // Optional: the parameters converted once per view (abi_export.hpp).
+    yamsc_params_bytes_fn params_bytes = nullptr;
+    yamsc_params_bind_fn params_bind = nullptr;
+    yamsc_rhs_bound_fn rhs_bound = nullptr;
+    yamsc_rhs_jacobian_bound_fn rhs_jacobian_bound = nullptr;
+    yamsc_outputs_bound_fn outputs_bound = nullptr;
 
     Library() = default;
     Library(const Library&) = delete;
@@ -91,6 +99,14 @@ SharedModel::SharedModel(const std::string& path) : path_(path) {
     library->forcing = optional_routine<yamsc_forcing_fn>(h, "yamsc_forcing");
     library->jacobians = optional_routine<yamsc_jacobians_fn>(h, "yamsc_jacobians");
     library->outputs = optional_routine<yamsc_outputs_fn>(h, "yamsc_outputs");
+    library->params_bytes = optional_routine<yamsc_params_bytes_fn>(h, "yamsc_params_bytes");
+    library->params_bind = optional_routine<yamsc_params_bind_fn>(h, "yamsc_params_bind");
+    if (library->params_bytes && library->params_bind) {
+        library->rhs_bound = optional_routine<yamsc_rhs_bound_fn>(h, "yamsc_rhs_bound");
+        library->rhs_jacobian_bound =
+            optional_routine<yamsc_rhs_jacobian_bound_fn>(h, "yamsc_rhs_jacobian_bound");
+        library->outputs_bound = optional_routine<yamsc_outputs_bound_fn>(h, "yamsc_outputs_bound");
+    }
     if (!library->rhs)
         throw SharedModelError("'" + path + "' is not a yamsc model: symbol yamsc_rhs is missing");
 
@@ -151,11 +167,29 @@ ModelView SharedModel::view(std::vector<double> params) const {
     // Each function holds the library and its own copy of the parameters.
     const auto lib = library_;
     const auto p = std::make_shared<const std::vector<double>>(std::move(params));
-    v.rhs = [lib, p](double t, const double* x, const double* u, double* xdot) {
-        lib->rhs(t, x, u, p->data(), xdot);
-    };
+    // The model's Params built once from p, for the routines that take them bound.
+    std::shared_ptr<const std::vector<std::max_align_t>> bound;
+    if (lib->params_bytes && lib->params_bind) {
+        const auto bytes = static_cast<std::size_t>(std::max(lib->params_bytes(), 1));
+        auto storage = std::make_shared<std::vector<std::max_align_t>>(
+            (bytes + sizeof(std::max_align_t) - 1) / sizeof(std::max_align_t));
+        lib->params_bind(p->data(), storage->data());
+        bound = std::move(storage);
+    }
+    if (bound && lib->rhs_bound)
+        v.rhs = [lib, bound](double t, const double* x, const double* u, double* xdot) {
+            lib->rhs_bound(t, x, u, bound->data(), xdot);
+        };
+    else
+        v.rhs = [lib, p](double t, const double* x, const double* u, double* xdot) {
+            lib->rhs(t, x, u, p->data(), xdot);
+        };
     // Routines the library was compiled without stay empty (ModelView's contract).
-    if (lib->rhs_jacobian)
+    if (bound && lib->rhs_jacobian_bound)
+        v.rhs_jacobian = [lib, bound](double t, const double* x, const double* u, double* J) {
+            lib->rhs_jacobian_bound(t, x, u, bound->data(), J);
+        };
+    else if (lib->rhs_jacobian)
         v.rhs_jacobian = [lib, p](double t, const double* x, const double* u, double* J) {
             lib->rhs_jacobian(t, x, u, p->data(), J);
         };
@@ -171,7 +205,10 @@ ModelView SharedModel::view(std::vector<double> params) const {
                                double* dF_dq, double* dF_dqd, double* dF_du) {
             lib->jacobians(t, q, qd, u, p->data(), dF_dq, dF_dqd, dF_du);
         };
-    if (lib->outputs)
+    if (bound && lib->outputs_bound)
+        v.outputs = [lib, bound](double t, const double* q, const double* qd, const double* u,
+                                 double* y) { lib->outputs_bound(t, q, qd, u, bound->data(), y); };
+    else if (lib->outputs)
         v.outputs = [lib, p](double t, const double* q, const double* qd, const double* u,
                              double* y) { lib->outputs(t, q, qd, u, p->data(), y); };
     return v;

@@ -1,20 +1,31 @@
 #include "yamsc/simulation.hpp"
 
+#include "yamsc/abm4.hpp"
 #include "yamsc/cvode.hpp"
 #include "yamsc/rk4.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace yamsc::runtime {
 
 std::optional<Method> parse_method(const std::string& name) {
     if (name == "rk4") return Method::rk4;
+    if (name == "abm4") return Method::abm4;
     if (name == "cvode") return Method::cvode;
     return std::nullopt;
 }
 
 const char* method_name(Method method) {
-    return method == Method::rk4 ? "rk4" : "cvode";
+    switch (method) {
+    case Method::rk4:
+        return "rk4";
+    case Method::abm4:
+        return "abm4";
+    case Method::cvode:
+        break;
+    }
+    return "cvode";
 }
 
 double SimulationResult::value(std::size_t row, std::size_t column) const {
@@ -63,27 +74,43 @@ void check_view(const ModelView& view) {
 
 } // namespace
 
+std::size_t output_stride(double dt, double dt_out) {
+    if (dt_out == 0.0) return 1;
+    const double ratio = dt_out / dt;
+    const double stride = std::round(ratio);
+    if (!std::isfinite(ratio) || stride < 1.0 || std::abs(ratio - stride) > 1e-9 * stride)
+        throw std::invalid_argument("the output step must be a multiple of the time step");
+    return static_cast<std::size_t>(stride);
+}
+
 SimulationResult simulate(const ModelView& view, const SimulationOptions& options,
                           const ProgressCallback& progress) {
     check_view(view);
     check_initial_state(view, options.x0);
     if (!options.u_of_t) check_input_size(view, options.u);
     const TimeGrid grid(options.t_start, options.t_end, options.dt);
+    const std::size_t stride = output_stride(options.dt, options.dt_out);
     const InputFunction inputs = options.u_of_t ? options.u_of_t : constant_input(options.u);
 
     SimulationResult result;
     result.columns = column_names(view);
     result.nx = view.nx();
     result.ny = view.ny;
-    result.time.reserve(grid.size());
-    result.states.reserve(grid.size() * static_cast<std::size_t>(result.nx));
-    result.outputs.reserve(grid.size() * static_cast<std::size_t>(result.ny));
+    const std::size_t rows = (grid.size() - 1) / stride + 2;
+    result.time.reserve(rows);
+    result.states.reserve(rows * static_cast<std::size_t>(result.nx));
+    result.outputs.reserve(rows * static_cast<std::size_t>(result.ny));
 
     const auto nq = static_cast<std::size_t>(view.nq);
     std::vector<double> u(static_cast<std::size_t>(view.nu));
     std::vector<double> y(static_cast<std::size_t>(view.ny));
     ProgressReporter reporter(progress, options.t_start, options.t_end);
+    std::size_t step = 0; // of the grid, counted by the observer
     const StateObserver record = [&](double t, const double* x) {
+        // Rows every `stride` steps and the last one: the outputs (as costly as
+        // a right-hand side) only where they are stored.
+        const bool store = step++ % stride == 0 || step == grid.size();
+        if (!store) return result.completed = reporter.report(t);
         result.time.push_back(t);
         result.states.insert(result.states.end(), x, x + result.nx);
         if (view.ny > 0) {
@@ -97,6 +124,8 @@ SimulationResult simulate(const ModelView& view, const SimulationOptions& option
 
     if (options.method == Method::rk4) {
         simulate_rk4(view, options.x0, inputs, options.t_end, options.dt, record, options.t_start);
+    } else if (options.method == Method::abm4) {
+        simulate_abm4(view, options.x0, inputs, options.t_end, options.dt, record, options.t_start);
     } else {
         CvodeOptions cvode;
         cvode.rtol = options.rtol;

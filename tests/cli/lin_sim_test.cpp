@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <sys/wait.h>
+#include <vector>
 
 namespace {
 
@@ -57,4 +59,38 @@ TEST_CASE("sim: writes the CSV header of cli.md and the initial state") {
     int rows = 1;
     for (std::string line; std::getline(in, line);) ++rows;
     CHECK(rows == 11);
+}
+
+TEST_CASE("sim: --method abm4 and --dt-out, rows every --dt-out from the same run") {
+    const std::string model = std::string(YAMSC_SOURCE_DIR) + "/models/double_pendulum.mbd";
+    const std::string dir = std::string(YAMSC_TEST_BINARY_DIR) + "/";
+    auto lines = [](const std::string& path) {
+        std::ifstream in(path);
+        std::vector<std::string> out;
+        for (std::string line; std::getline(in, line);) out.push_back(line);
+        return out;
+    };
+    for (const char* method : {"rk4", "abm4"}) {
+        CAPTURE(method);
+        const std::string every = dir + "dp_every.csv", sparse = dir + "dp_sparse.csv";
+        const std::string run =
+            "sim " + model + " --tmax 0.5 --dt 0.01 --ic th1=30deg --method " + method + " -o ";
+        capture(run + every);
+        capture(run + sparse + " --dt-out 0.05");
+        const auto all = lines(every), some = lines(sparse);
+        REQUIRE(all.size() == 52); // header and 51 rows
+        REQUIRE(some.size() == 12);
+        CHECK(some[0] == all[0]); // the header
+        for (std::size_t i = 1; i < some.size(); ++i) CHECK(some[i] == all[5 * (i - 1) + 1]);
+    }
+    // ABM4 differs from RK4 after its three RK4 steps only by its truncation error.
+    const std::string summary_rk4 = capture("sim " + model + " --tmax 1 --dt 0.001 --ic th1=30deg");
+    const std::string summary_abm4 =
+        capture("sim " + model + " --tmax 1 --dt 0.001 --ic th1=30deg --method abm4");
+    CHECK(summary_rk4 != summary_abm4);
+    CHECK(number_after(summary_abm4, "\nth1 ") ==
+          doctest::Approx(number_after(summary_rk4, "\nth1 ")).epsilon(1e-9));
+    const std::string bad = std::string(YAMSC_EXE) + " sim " + model +
+                            " --tmax 1 --dt 0.01 --dt-out 0.015 > /dev/null 2>&1";
+    CHECK(WEXITSTATUS(std::system(bad.c_str())) == 2);
 }

@@ -7,10 +7,15 @@
 
 #include <doctest/doctest.h>
 
+#include <charconv>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -61,6 +66,40 @@ std::size_t leftover_temporaries(const fs::path& dir) {
 }
 
 } // namespace
+
+TEST_CASE("the fast CSV number formatting equals std::to_chars with 10 digits") {
+    // Random bit patterns (every exponent) and values of simulation size,
+    // ties and carries (9.9999999995) included.
+    std::mt19937_64 rng(2026);
+    std::uniform_real_distribution<double> mantissa(-10.0, 10.0);
+    std::uniform_int_distribution<int> exponent(-30, 30);
+    std::vector<double> values{
+        9.9999999995, 9.9999999994999, 0.00099999999995,       1e-5,  1e-4, 123456789.05,
+        1234567890.5, 5e-324,          1.7976931348623157e308, -1e22, 1e23, 0.5,
+        2.5e-5,       999999999.95};
+    for (int i = 0; i < 300000; ++i) {
+        std::uint64_t bits = rng();
+        double v;
+        std::memcpy(&v, &bits, sizeof v);
+        values.push_back(v);
+        values.push_back(mantissa(rng) * std::pow(10.0, exponent(rng)));
+        values.push_back(std::round(mantissa(rng) * 1e6) / 1e6 * std::pow(10.0, exponent(rng)));
+    }
+    int differ = 0;
+    for (double v : values) {
+        char expected[64];
+        const auto end =
+            std::to_chars(expected, expected + sizeof expected, v, std::chars_format::general, 10)
+                .ptr;
+        if (std::isnan(v)) continue;
+        if (format_csv_value(v) != std::string(expected, end) && ++differ < 10)
+            CHECK(format_csv_value(v) == std::string(expected, end));
+    }
+    CHECK(differ == 0);
+    std::string appended = "x";
+    append_csv_value(appended, -1.25e-7);
+    CHECK(appended == "x-1.25e-07");
+}
 
 TEST_CASE("CSV numbers are %.10g, whatever the locale") {
     for (double v : {0.0, 0.1, -2.5, 1.0 / 3.0, 1e-20, 6.02214076e23, 123456789012.0, -0.0}) {

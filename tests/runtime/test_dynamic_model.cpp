@@ -3,10 +3,13 @@
 // and its view must behave like the statically linked model.
 #include "runtime/test_models.hpp"
 
+#include "yamsc/abi_export.hpp"
 #include "yamsc/dynamic_model.hpp"
 #include "yamsc/rk4.hpp"
 
 #include <doctest/doctest.h>
+
+#include <dlfcn.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -176,4 +179,29 @@ TEST_CASE("missing, foreign and mismatched libraries are errors, not crashes") {
                                       "yamsc_abi_version(void) { return 1; }\n");
     CHECK_THROWS_WITH_AS(SharedModel(partial.string()), doctest::Contains("yamsc_sizes"),
                          SharedModelError);
+}
+
+TEST_CASE("views bind their parameters once, each its own (the ABI's bound routines)") {
+    void* handle = dlopen(oscillator_library().c_str(), RTLD_NOW | RTLD_LOCAL);
+    REQUIRE(handle);
+    const auto bytes = reinterpret_cast<yamsc_params_bytes_fn>(dlsym(handle, "yamsc_params_bytes"));
+    REQUIRE(static_cast<bool>(bytes));
+    CHECK(bytes() == static_cast<int>(sizeof(test_oscillator::Params)));
+    for (const char* symbol : {"yamsc_params_bind", "yamsc_rhs_bound", "yamsc_rhs_jacobian_bound",
+                               "yamsc_outputs_bound"})
+        CHECK_MESSAGE(dlsym(handle, symbol) != nullptr, symbol);
+    dlclose(handle);
+
+    const SharedModel model(oscillator_library().string());
+    const ModelView soft = model.view({2.0, 0.4, 50.0}), stiff = model.view({2.0, 0.4, 80.0});
+    const double x[2] = {0.1, 0.0}, u = 0.0;
+    double a[2], b[2], J[4], y[2];
+    soft.rhs(0.0, x, &u, a);
+    stiff.rhs(0.0, x, &u, b);
+    CHECK(a[1] == -50.0 * 0.1 / 2.0);
+    CHECK(b[1] == -80.0 * 0.1 / 2.0);
+    stiff.rhs_jacobian(0.0, x, &u, J);
+    CHECK(J[2] == -80.0 / 2.0);
+    soft.outputs(0.0, x, x + 1, &u, y);
+    CHECK(y[0] == 50.0 * 0.1);
 }

@@ -44,14 +44,18 @@ double tail_mean(const Table& t, const std::string& column, double seconds) {
 
 Table run(const std::string& name, const std::string& wind, const std::string& set,
           const std::string& u, double tmax, const std::string& controller = "",
-          const std::string& ic = "") {
+          const std::string& ic = "",
+          yamsc::driver::SimMethod method = yamsc::driver::SimMethod::rk4, double dt = 0.02,
+          double dt_out = 0.0) {
     ::mkdir(work_dir.c_str(), 0755);
     yamsc::driver::SimOptions o;
     o.model = model;
     o.aero = table;
     o.wind = wind;
     o.tmax = tmax;
-    o.dt = 0.02;
+    o.dt = dt;
+    o.dt_out = dt_out;
+    o.method = method;
     if (!set.empty()) o.set = yamsc::driver::parse_assignments(set, "--set");
     if (!u.empty()) o.u = yamsc::driver::parse_assignments(u, "--u");
     if (!ic.empty()) o.ic = yamsc::driver::parse_assignments(ic, "--ic");
@@ -290,6 +294,38 @@ TEST_CASE("a wind step from 8 to 14 m/s under the baseline controller settles to
     CHECK(tail_mean(step, "BldPitch1", 30) ==
           doctest::Approx(tail_mean(steady, "BldPitch1", 30)).epsilon(0.001));
     CHECK(tail_mean(step, "RotSpeed", 30) == doctest::Approx(12.1).epsilon(0.005));
+}
+
+TEST_CASE("the controller loop with ABM4 and --dt-out") {
+    // OpenFAST's step and method: RK4 for three steps, then 2 right-hand sides
+    // per step across the controller's held demands; rows every 4 steps are
+    // those of the run that stores every step, to the last bit.
+    const std::string u = "pitch=11.5deg,gen_torque=43094";
+    using yamsc::driver::SimMethod;
+    const Table rk4 =
+        run("loop_rk4", "16", "", u, 20, YAMSC_BASELINE_DISCON, "", SimMethod::rk4, 0.00625);
+    const Table abm4 =
+        run("loop_abm4", "16", "", u, 20, YAMSC_BASELINE_DISCON, "", SimMethod::abm4, 0.00625);
+    const Table sparse = run("loop_abm4_sparse", "16", "", u, 20, YAMSC_BASELINE_DISCON, "",
+                             SimMethod::abm4, 0.00625, 0.025);
+    REQUIRE(abm4.rows() == 3201);
+    REQUIRE(sparse.rows() == 801);
+    for (std::size_t j = 0; j < abm4.columns.size(); ++j)
+        for (std::size_t k = 0; k < sparse.rows(); ++k)
+            CHECK(sparse.data[j][k] == abm4.data[j][4 * k]);
+    for (const char* channel : {"RotSpeed", "BldPitch1", "TTDspFA"}) {
+        CAPTURE(channel);
+        const int j = rk4.find(channel);
+        REQUIRE(j >= 0);
+        const auto& a = rk4.data[static_cast<std::size_t>(j)];
+        const auto& b = abm4.data[static_cast<std::size_t>(j)];
+        double range = 0, worst = 0;
+        for (std::size_t k = 0; k < a.size(); ++k) {
+            range = std::max(range, std::fabs(a[k] - a[0]));
+            worst = std::max(worst, std::fabs(a[k] - b[k]));
+        }
+        CHECK(worst < 0.01 * std::max(range, std::fabs(a[0]))); // a closed loop: 1 %
+    }
 }
 
 TEST_CASE("actuators: a first-order pitch lag between the controller's demand and the blades") {

@@ -70,12 +70,18 @@ inline std::string convert(const Case& c, std::vector<std::pair<std::string, boo
     return out.str() + err.str();
 }
 
-/// `yamsc sim <model> --channels openfast [--linear] -o csv`: the table written.
-inline yamsc::driver::Table simulate(const Case& c, bool linear, std::string* log = nullptr) {
+/// `yamsc sim <model> --channels openfast [--linear] -o csv` (RK4, dt 0.01, or
+/// the method and steps given): the table written.
+inline yamsc::driver::Table
+simulate(const Case& c, bool linear, std::string* log = nullptr,
+         yamsc::driver::SimMethod method = yamsc::driver::SimMethod::rk4, double dt = 0.01,
+         double dt_out = 0.0) {
     yamsc::driver::SimOptions o;
     o.model = model_path(c);
     o.tmax = c.tmax;
-    o.dt = 0.01;
+    o.dt = dt;
+    o.dt_out = dt_out;
+    o.method = method;
     o.channels = yamsc::driver::Channels::openfast;
     o.linear = linear;
     o.verbose = linear; // prints the linear model's frequencies

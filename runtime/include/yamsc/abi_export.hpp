@@ -19,7 +19,13 @@
 // leaves a routine the library lacks empty in its views.
 //
 // Parameters cross the ABI as a flat array of `np` doubles in declaration
-// order (NS::Model::params_to_array / params_from_array).
+// order (NS::Model::params_to_array / params_from_array). Converting that
+// array into the model's Params at every call costs a few per cent of a small
+// model's rhs, so the hot routines (rhs, rhs_jacobian, outputs) also come
+// bound: yamsc_params_bind converts the array once into yamsc_params_bytes()
+// bytes of storage the caller keeps (aligned as max_align_t), and the
+// yamsc_*_bound routines take that storage instead of the array. These
+// symbols are optional: a loader falls back to the array routines without them.
 
 // Bumped whenever a signature below changes; the loader refuses other versions.
 #define YAMSC_ABI_VERSION 1
@@ -49,6 +55,14 @@ typedef void (*yamsc_jacobians_fn)(double t, const double* q, const double* qd, 
                                    const double* p, double* dF_dq, double* dF_dqd, double* dF_du);
 typedef void (*yamsc_outputs_fn)(double t, const double* q, const double* qd, const double* u,
                                  const double* p, double* y);
+typedef int (*yamsc_params_bytes_fn)(void);
+typedef void (*yamsc_params_bind_fn)(const double* p, void* params);
+typedef void (*yamsc_rhs_bound_fn)(double t, const double* x, const double* u, const void* params,
+                                   double* xdot);
+typedef void (*yamsc_rhs_jacobian_bound_fn)(double t, const double* x, const double* u,
+                                            const void* params, double* J);
+typedef void (*yamsc_outputs_bound_fn)(double t, const double* q, const double* qd, const double* u,
+                                       const void* params, double* y);
 }
 
 // Name kinds of yamsc_name().
@@ -58,6 +72,9 @@ enum yamsc_name_kind {
     yamsc_name_param = 2,
     yamsc_name_output = 3
 };
+
+#include <new>
+#include <type_traits>
 
 namespace yamsc_abi_detail {
 // Out-of-range requests give a null pointer rather than reading past the
@@ -96,6 +113,15 @@ inline const char* name_at(const char* const* names, int n, int i) {
     YAMSC_ABI_VISIBLE void yamsc_default_params(double* p) {                                       \
         NS::Model::params_to_array(NS::Model::Params{}, p);                                        \
     }                                                                                              \
+    /* Params is plain data: the caller's storage is never destroyed as one. */                    \
+    static_assert(std::is_trivially_destructible<NS::Model::Params>::value,                        \
+                  "bound parameters need trivially destructible Params");                          \
+    YAMSC_ABI_VISIBLE int yamsc_params_bytes(void) {                                               \
+        return static_cast<int>(sizeof(NS::Model::Params));                                        \
+    }                                                                                              \
+    YAMSC_ABI_VISIBLE void yamsc_params_bind(const double* p, void* params) {                      \
+        ::new (params) NS::Model::Params(NS::Model::params_from_array(p));                         \
+    }                                                                                              \
     }
 
 // One macro per routine: a library compiled for one command (`yamsc sim`
@@ -104,11 +130,19 @@ inline const char* name_at(const char* const* names, int n, int i) {
     extern "C" YAMSC_ABI_VISIBLE void yamsc_rhs(double t, const double* x, const double* u,        \
                                                 const double* p, double* xdot) {                   \
         NS::Model::rhs(t, x, u, NS::Model::params_from_array(p), xdot);                            \
+    }                                                                                              \
+    extern "C" YAMSC_ABI_VISIBLE void yamsc_rhs_bound(double t, const double* x, const double* u,  \
+                                                      const void* params, double* xdot) {          \
+        NS::Model::rhs(t, x, u, *static_cast<const NS::Model::Params*>(params), xdot);             \
     }
 #define YAMSC_EXPORT_RHS_JACOBIAN(NS)                                                              \
     extern "C" YAMSC_ABI_VISIBLE void yamsc_rhs_jacobian(                                          \
         double t, const double* x, const double* u, const double* p, double* J) {                  \
         NS::Model::rhs_jacobian(t, x, u, NS::Model::params_from_array(p), J);                      \
+    }                                                                                              \
+    extern "C" YAMSC_ABI_VISIBLE void yamsc_rhs_jacobian_bound(                                    \
+        double t, const double* x, const double* u, const void* params, double* J) {               \
+        NS::Model::rhs_jacobian(t, x, u, *static_cast<const NS::Model::Params*>(params), J);       \
     }
 #define YAMSC_EXPORT_MASS_MATRIX(NS)                                                               \
     extern "C" YAMSC_ABI_VISIBLE void yamsc_mass_matrix(                                           \
@@ -130,6 +164,11 @@ inline const char* name_at(const char* const* names, int n, int i) {
     extern "C" YAMSC_ABI_VISIBLE void yamsc_outputs(double t, const double* q, const double* qd,   \
                                                     const double* u, const double* p, double* y) { \
         NS::Model::outputs(t, q, qd, u, NS::Model::params_from_array(p), y);                       \
+    }                                                                                              \
+    extern "C" YAMSC_ABI_VISIBLE void yamsc_outputs_bound(double t, const double* q,               \
+                                                          const double* qd, const double* u,       \
+                                                          const void* params, double* y) {         \
+        NS::Model::outputs(t, q, qd, u, *static_cast<const NS::Model::Params*>(params), y);        \
     }
 
 // Everything: a model compiled with all its routines (the generated default).

@@ -13,17 +13,20 @@
 
 namespace yamsc::runtime {
 
-enum class Method { rk4, cvode };
+enum class Method { rk4, abm4, cvode };
 
-/// "rk4" or "cvode"; nullopt for anything else.
+/// "rk4", "abm4" or "cvode"; nullopt for anything else.
 std::optional<Method> parse_method(const std::string& name);
 const char* method_name(Method method);
 
 struct SimulationOptions {
     double t_start = 0.0;
     double t_end = 1.0;
-    /// RK4: the step; CVODE: the output step (its internal steps are adaptive).
+    /// RK4, ABM4: the step; CVODE: the output step (its internal steps are adaptive).
     double dt = 1e-3;
+    /// The time between stored rows, a multiple of dt; 0: every step. Outputs
+    /// are computed for the stored rows only (and always for the last one).
+    double dt_out = 0.0;
     Method method = Method::rk4;
     /// CVODE tolerances.
     double rtol = 1e-6;
@@ -62,6 +65,10 @@ std::vector<std::string> column_names(const ModelView& view);
 /// and at its end; return false to stop early (the result is then marked
 /// incomplete).
 using ProgressCallback = std::function<bool(double t, double t_end)>;
+
+/// The number of steps between stored rows for dt_out (1 for dt_out = 0).
+/// Throws std::invalid_argument unless dt_out is 0 or a multiple of dt.
+std::size_t output_stride(double dt, double dt_out);
 
 /// Runs the simulation. Throws std::invalid_argument for inconsistent options
 /// (sizes, steps, tolerances) and std::runtime_error (or CvodeError) when the
