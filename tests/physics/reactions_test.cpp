@@ -3,6 +3,7 @@
 // base at an equilibrium and in motion, a flexible cantilever's root at its
 // static deflection and in motion. The generated `outputs` solve M q'' = F.
 #include "equations_fixture.hpp"
+#include "solved_state.hpp"
 
 #include "driver/commands.hpp"
 
@@ -14,31 +15,8 @@ using namespace yamsc;
 
 namespace {
 
-/// Outputs and accelerations of a compiled model at (q, q', u).
-struct State {
-    std::vector<double> y, qdd;
-};
-
-State at(const runtime::ModelView& v, const std::vector<double>& q, const std::vector<double>& qd,
-         const std::vector<double>& u = {}) {
-    const auto n = static_cast<Eigen::Index>(v.nq);
-    std::vector<double> M(static_cast<std::size_t>(n * n)), F(static_cast<std::size_t>(n));
-    const double* up = u.empty() ? nullptr : u.data();
-    v.mass_matrix(0.0, q.data(), up, M.data());
-    v.forcing(0.0, q.data(), qd.data(), up, F.data());
-    Eigen::MatrixXd Mm(n, n);
-    Eigen::VectorXd Fv(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-        Fv(i) = F[static_cast<std::size_t>(i)];
-        for (Eigen::Index j = 0; j < n; ++j) Mm(i, j) = M[static_cast<std::size_t>(i * n + j)];
-    }
-    Eigen::VectorXd a = Mm.ldlt().solve(Fv);
-    State s;
-    s.qdd.assign(a.data(), a.data() + n);
-    s.y.resize(static_cast<std::size_t>(v.ny));
-    v.outputs(0.0, q.data(), qd.data(), up, s.y.data());
-    return s;
-}
+using physics_test::at;
+using physics_test::State;
 
 int index_of(const runtime::ModelView& v, const std::string& name) {
     for (std::size_t i = 0; i < v.output_names.size(); ++i)
