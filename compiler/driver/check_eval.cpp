@@ -19,6 +19,23 @@ std::string frame_name(const model::Model& m, int i) {
     return i < 0 ? "ground" : m.bodies[static_cast<std::size_t>(i)].name;
 }
 
+/// What an external function loads and its C shape: `push(3 args -> genforce th)`.
+std::string external_signature(const model::Model& m, const model::External& e) {
+    std::string loads;
+    if (e.kind == model::External::Kind::genforce) {
+        loads = "genforce";
+        for (int d : e.dofs) loads += " " + m.dofs[static_cast<std::size_t>(d)].name;
+    } else {
+        loads = std::string(e.kind == model::External::Kind::force ? "force" : "torque") + " on " +
+                m.bodies[static_cast<std::size_t>(e.body)].name;
+    }
+    auto count = [](std::size_t n, const std::string& what) {
+        return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+    };
+    return e.name + "(" + count(e.args.size(), "arg") + " -> " +
+           count(static_cast<std::size_t>(e.results()), "result") + ": " + loads + ")";
+}
+
 void check_text(const model::Model& m, std::ostream& out) {
     out << "model " << m.name;
     if (!m.title.empty()) out << " \"" << m.title << "\"";
@@ -61,6 +78,11 @@ void check_text(const model::Model& m, std::ostream& out) {
     out << "outputs (" << m.outputs.size() << "):";
     for (const auto& o : m.outputs) out << " " << o.name;
     out << "\n";
+    if (m.externals.empty()) return;
+    out << "externals (" << m.externals.size() << "):\n";
+    for (const auto& e : m.externals)
+        out << "  " << external_signature(m, e) << (e.without_jacobian ? " without jacobian" : "")
+            << "\n";
 }
 
 void check_json(const model::Model& m, std::ostream& out) {
@@ -85,7 +107,23 @@ void check_json(const model::Model& m, std::ostream& out) {
     }
     std::vector<std::string> outputs;
     for (const auto& o : m.outputs) outputs.push_back(o.name);
-    out << "],\"outputs\":" << json::strings(outputs) << "}\n";
+    out << "],\"outputs\":" << json::strings(outputs) << ",\"externals\":[";
+    for (std::size_t i = 0; i < m.externals.size(); ++i) {
+        const auto& e = m.externals[i];
+        const char* kind = e.kind == model::External::Kind::force    ? "force"
+                           : e.kind == model::External::Kind::torque ? "torque"
+                                                                     : "genforce";
+        std::vector<std::string> on;
+        if (e.kind == model::External::Kind::genforce)
+            for (int d : e.dofs) on.push_back(m.dofs[static_cast<std::size_t>(d)].name);
+        else
+            on.push_back(m.bodies[static_cast<std::size_t>(e.body)].name);
+        out << (i ? "," : "") << "{\"name\":" << json::quote(e.name)
+            << ",\"loads\":" << json::quote(kind) << ",\"on\":" << json::strings(on)
+            << ",\"arguments\":" << e.args.size() << ",\"results\":" << e.results()
+            << ",\"jacobian\":" << (e.without_jacobian ? "false" : "true") << "}";
+    }
+    out << "]}\n";
 }
 
 } // namespace

@@ -275,3 +275,19 @@ TEST_CASE("--external takes a library built beforehand") {
     CHECK(r.err.find("central differences") == std::string::npos);
     CHECK(run_yamsc("lin " + model + " --external " + dir + "/missing.so").status == 1);
 }
+
+TEST_CASE("check lists the external functions: what they load, their arguments and results") {
+    std::ostringstream text, json, err;
+    REQUIRE(yamsc::driver::check({model, false}, text, err) == 0);
+    CHECK(text.str().find("externals (3):\n"
+                          "  tip_spring(3 args -> 3 results: force on link)\n"
+                          "  damper(2 args -> 3 results: torque on link)\n"
+                          "  push(3 args -> 1 result: genforce th)\n") != std::string::npos);
+    REQUIRE(yamsc::driver::check({model, true}, json, err) == 0);
+    CHECK(json.str().find("\"externals\":[{\"name\":\"tip_spring\",\"loads\":\"force\",\"on\":"
+                          "[\"link\"],\"arguments\":3,\"results\":3,\"jacobian\":true},") !=
+          std::string::npos);
+    CHECK(json.str().find("{\"name\":\"push\",\"loads\":\"genforce\",\"on\":[\"th\"],"
+                          "\"arguments\":3,\"results\":1,\"jacobian\":true}]}") !=
+          std::string::npos);
+}
