@@ -4,6 +4,7 @@
 
 #include "beam/elastodyn_file.hpp"
 #include "driver/files.hpp"
+#include "openfast/model.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -130,19 +131,20 @@ private:
             const auto ref = iw->get_double("RefHt", diags_);
             const auto exponent = iw->get_double("PLexp", diags_);
             if (!speed || !ref || !exponent) return;
-            // The block reads the wind at the hub; InflowWind gives it at RefHt.
-            const double hub = deck_["TowerHt"] + deck_["Twr2Shft"] -
+            // The block reads the wind at the hub; InflowWind gives it at RefHt. The apex
+            // sits OverHang along the shaft, tilted by ShftTilt (both < 0 upwind: higher).
+            const double hub = deck_["TowerHt"] + deck_["Twr2Shft"] +
                                deck_["OverHang"] * std::sin(deck_["ShftTilt"] * M_PI / 180);
             const double at_hub =
                 *exponent == 0 ? *speed : *speed * std::pow(hub / *ref, *exponent);
             op_.wind_speed = at_hub;
-            op_.wind = std::to_string(at_hub);
+            op_.wind = mbd_number(at_hub);
             op_.wind_from = file_line(*iw, "HWindSpeed");
             if (*exponent != 0)
                 diags_.warning(Kind::NotSupported, iw->location("PLexp"),
-                               "PLexp = " + std::to_string(*exponent) +
+                               "PLexp = " + mbd_number(*exponent) +
                                    ": the rotor block takes the hub-height wind, " +
-                                   std::to_string(at_hub) +
+                                   mbd_number(at_hub) +
                                    " m/s; the shear across the rotor is "
                                    "not converted");
         } else if (*type == 2) {

@@ -5,6 +5,7 @@
 #include "validation_support.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <regex>
 
 using namespace validation;
@@ -132,4 +133,29 @@ TEST_CASE("a full deck's model runs in wind as the shipped operating model does"
     const int rpm = shipped.find("RotSpeed");
     CHECK(shipped.data[static_cast<std::size_t>(rpm)].back() !=
           shipped.data[static_cast<std::size_t>(rpm)].front());
+}
+
+TEST_CASE("a full deck's sheared steady wind is taken at the hub height") {
+    // The deck with InflowWind's power law (PLexp 0.14 from RefHt 50 m): the rotor
+    // block reads the wind at the apex, 87.6 + 1.96256 + 5.0191 sin(5 deg) = 90.0 m.
+    namespace fs = std::filesystem;
+    const fs::path copy = fs::path(work_dir) / "deck_shear";
+    fs::remove_all(copy);
+    fs::copy(reference_dir + "/operating/deck", copy, fs::copy_options::recursive);
+    std::string inflow = read((copy / "NRELOffshrBsline5MW_InflowWind.dat").string());
+    inflow = std::regex_replace(inflow, std::regex("  90   RefHt "), "  50   RefHt ");
+    inflow = std::regex_replace(inflow, std::regex("  0   PLexp "), "  0.14   PLexp ");
+    std::ofstream((copy / "NRELOffshrBsline5MW_InflowWind.dat").string()) << inflow;
+    yamsc::driver::FromOpenFastOptions o;
+    o.deck = (copy / "NREL-5MW.fst").string();
+    o.output = work_dir + "/full_deck_shear.mbd";
+    o.dofs = operating_dofs;
+    std::ostringstream out, err;
+    REQUIRE_MESSAGE(yamsc::driver::from_openfast(o, out, err) == 0, err.str());
+    const std::string text = read(o.output);
+    std::smatch m;
+    REQUIRE(std::regex_search(text, m, std::regex("#     --wind ([0-9.e+-]+) \\\\")));
+    const double hub = 87.6 + 1.96256 + 5.0191 * std::sin(5 * M_PI / 180);
+    CHECK(std::stod(m[1].str()) == doctest::Approx(8 * std::pow(hub / 50, 0.14)).epsilon(1e-12));
+    CHECK(err.str().find("PLexp = 0.14") != std::string::npos);
 }
