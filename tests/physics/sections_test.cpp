@@ -25,20 +25,6 @@ double output(const runtime::ModelView& v, const State& s, const std::string& na
     return 0;
 }
 
-/// Newton's iterations on F(q, 0) = 0 for one DOF: the static deflection.
-double equilibrium(const runtime::ModelView& v) {
-    double q = 0, F = 0, dF = 0, dFd = 0;
-    const double zero = 0;
-    for (int it = 0; it < 50; ++it) {
-        v.forcing(0.0, &q, &zero, nullptr, &F);
-        v.jacobians(0.0, &q, &zero, nullptr, &dF, &dFd, nullptr);
-        const double step = F / dF;
-        q -= step;
-        if (std::fabs(step) < 1e-15) break;
-    }
-    return q;
-}
-
 } // namespace
 
 TEST_CASE("sections: a cantilever's mid-span moment is that of the weights beyond the cut") {
@@ -46,7 +32,7 @@ TEST_CASE("sections: a cantilever's mid-span moment is that of the weights beyon
     auto c = test::compile_model(eq);
     const runtime::ModelView& v = c.view;
     const double g = 9.81, L = 20, m = 300, M = 2e3, s = 10; // node 3 at z = 10
-    const double q = equilibrium(v);
+    const double q = physics_test::equilibrium(v, {0.0})[0];
     const State rest = at(v, {q}, {0.0});
     auto y = [&](const char* name) { return output(v, rest, name); };
     REQUIRE(std::fabs(rest.qdd[0]) < 1e-9);
