@@ -853,6 +853,11 @@ private:
         out_ << "#   yamsc sim " << in_.output_file;
         for (const std::string& option : options) out_ << " \\\n#     " << option;
         out_ << "\n";
+        std::string sources;
+        if (!op.table_from.empty()) sources += "--aero from " + op.table_from;
+        if (!op.wind_from.empty())
+            sources += (sources.empty() ? "" : "; ") + std::string("--wind from ") + op.wind_from;
+        if (!sources.empty()) out_ << "#   (" << sources << ")\n";
     }
 
     void operation_parameters(const Operation& op) {

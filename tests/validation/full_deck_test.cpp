@@ -80,6 +80,8 @@ TEST_CASE("a full deck: the rotor block, the wind, the generator and the control
     CHECK(text.find("operating/rosco_build/libdiscon.so \\\n") != std::string::npos);
     CHECK(text.find("operating/deck/DISCON.IN \\\n") != std::string::npos);
     CHECK(text.find("#     --tmax 200 --dt 0.00625\n") != std::string::npos);
+    CHECK(text.find("#   (--aero from PerfFileName, DISCON.IN; --wind from "
+                    "NRELOffshrBsline5MW_InflowWind.dat:14)\n") != std::string::npos);
     // What the block and a controller read.
     for (const char* channel :
          {"output rotor_speed = (psi' + drtr')",
