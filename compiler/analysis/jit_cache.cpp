@@ -1,5 +1,7 @@
 #include "analysis/jit_cache.hpp"
 
+#include "driver/derivation_loader.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <climits>
@@ -103,6 +105,9 @@ std::string program_identity() {
     if (::dladdr(reinterpret_cast<void*>(&program_identity), &info) && info.dli_fname &&
         ::realpath(info.dli_fname, object) && exe != object)
         id += " in " + file_stamp(object);
+    // The equations come from the derivation module: a rebuilt module is
+    // another compiler even when the program is not.
+    id += " deriving with " + file_stamp(derivation_module_path());
     return id;
 }
 

@@ -3,14 +3,12 @@
 #include "codegen/external_wrappers.hpp"
 #include "data/file_source.hpp"
 #include "diag/errors.hpp"
+#include "driver/derivation_loader.hpp"
 #include "driver/files.hpp"
-#include "lower/lower.hpp"
 #include "model/names.hpp"
 #include "parse/parser.hpp"
 #include "passes/passes.hpp"
 #include "passes/taylor.hpp"
-#include "symbolic/derive.hpp"
-#include "symbolic/linearize.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -155,57 +153,77 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
     return fe;
 }
 
+bool uses_tangent_form(const model::Model& m, Until until, Derivatives derivatives) {
+    // Only the Jacobian stage can use the tangent form; `approx` and outputs that
+    // read q'' (reaction loads) need M itself.
+    const bool accelerations = outputs_read_accelerations(m);
+    // The externals' chain rule is written for the unrolled Jacobians.
+    const bool externals = !m.externals.empty();
+    if (externals && derivatives == Derivatives::tangent && until == Until::jacobians)
+        throw diag::UsageError("--jacobians tangent: the model declares external functions, "
+                               "whose chain rule needs the unrolled Jacobians (use auto or "
+                               "unrolled)");
+    return until == Until::jacobians && m.approximations.empty() && !accelerations && !externals &&
+           (derivatives == Derivatives::tangent ||
+            (derivatives == Derivatives::automatic && m.dofs.size() >= tangent_form_min_dofs));
+}
+
 void continue_front_end(FrontEnd& fe, const std::string& path, Until until,
                         diag::Diagnostics& diags,
                         const std::function<void(const std::string&)>& progress,
                         Derivatives derivatives) {
     if (!fe.model || !fe.source)
         throw diag::InternalError("continue_front_end needs a checked model");
-    auto say = [&](const std::string& s) {
-        if (progress) progress(s);
-    };
     Stopwatch clock;
-    // Only the Jacobian stage can use the tangent form; `approx` and outputs that
-    // read q'' (reaction loads) need M itself.
-    const bool accelerations = outputs_read_accelerations(*fe.model);
-    // The externals' chain rule is written for the unrolled Jacobians.
-    const bool externals = !fe.model->externals.empty();
-    if (externals && derivatives == Derivatives::tangent && until == Until::jacobians)
-        throw diag::UsageError("--jacobians tangent: the model declares external functions, "
-                               "whose chain rule needs the unrolled Jacobians (use auto or "
-                               "unrolled)");
-    const bool tangent =
-        until == Until::jacobians && fe.model->approximations.empty() && !accelerations &&
-        !externals &&
-        (derivatives == Derivatives::tangent ||
-         (derivatives == Derivatives::automatic && fe.model->dofs.size() >= tangent_form_min_dofs));
+    const bool tangent = uses_tangent_form(*fe.model, until, derivatives);
     const model::Model derived = model::with_external_channels(*fe.model);
-    fe.equations = symbolic::derive(derived, diags, !tangent);
-    if (!fe.equations || diags.has_errors()) return;
-    fe.equations->source_path = path;
+    derivation::DerivationRequest request;
+    request.model = &derived;
+    request.mass_matrix = !tangent;
+    request.source_path = path;
     // The digest covers the data files too: generated code changes when they do.
-    fe.equations->source_digest = content_digest(*fe.source, *fe.model);
-    say(timed("derived the equations of motion", clock.seconds()));
-    if (until == Until::equations) return;
-    fe.system = lower::lower(*fe.equations, symbolic::operating_point(derived, *fe.equations));
+    request.source_digest = content_digest(*fe.source, *fe.model);
+    derivation::DerivationResult derived_system;
+    derive_through_module(request, diags, derived_system);
+    if (!derived_system.system || diags.has_errors()) return;
+    fe.system = std::move(derived_system.system);
+    if (progress) {
+        // The stage times as before the module: since this function started.
+        const double before =
+            clock.seconds() - derived_system.derive_seconds - derived_system.lower_seconds;
+        progress(timed("derived the equations of motion", before + derived_system.derive_seconds));
+        progress(timed("imported the equations into the IR", clock.seconds()));
+    }
+    finish_front_end(fe, until, tangent, diags, progress, clock.seconds());
+}
+
+void finish_front_end(FrontEnd& fe, Until until, bool tangent, diag::Diagnostics& diags,
+                      const std::function<void(const std::string&)>& progress,
+                      double seconds_so_far) {
+    if (!fe.model || !fe.system)
+        throw diag::InternalError("finish_front_end needs a checked model and its System");
+    Stopwatch clock;
+    auto say = [&](const char* what) {
+        if (progress) progress(timed(what, seconds_so_far + clock.seconds()));
+    };
+    const bool externals = !fe.model->externals.empty();
     if (externals) {
         fe.system->externals = system_externals(*fe.model);
         passes::separate_externals(*fe.system);
     }
-    say(timed("imported the equations into the IR", clock.seconds()));
     if (!fe.model->approximations.empty()) {
         if (!approximate(*fe.model, *fe.system, diags)) return;
-        say(timed("approximated (approx)", clock.seconds()));
+        say("approximated (approx)");
     }
     if (until != Until::jacobians) return;
     if (tangent) {
         passes::derive_tangent(*fe.system);
-        say(timed("derived the tangent (directional derivatives)", clock.seconds()));
+        say("derived the tangent (directional derivatives)");
     } else {
         passes::derive_jacobians(*fe.system);
         passes::output_jacobians(*fe.system);
         if (externals) passes::external_jacobians(*fe.system);
-        say(timed("derived the Jacobians", clock.seconds()));
+        say("derived the Jacobians");
     }
 }
 

@@ -1,13 +1,13 @@
 #pragma once
 // The compiler's stages chained: source -> AST -> checked model -> equations
-// (GiNaC) -> ir::System with its derivatives (the passes).
+// (GiNaC, in the derivation module: derivation/derivation.hpp) -> ir::System
+// with its derivatives (the passes).
 // Each stage reports into one Diagnostics; the chain stops after the first stage
 // that reported an error.
 #include "ast/ast.hpp"
 #include "driver/commands.hpp"
 #include "ir/system.hpp"
 #include "model/model.hpp"
-#include "symbolic/equations.hpp"
 
 #include <functional>
 
@@ -17,13 +17,12 @@ struct FrontEnd {
     std::shared_ptr<const diag::SourceFile> source;
     std::optional<ast::ModelFile> ast;
     std::optional<model::Model> model;
-    std::optional<symbolic::Equations> equations;
     // Until::system: the equations in the IR, approximated (`approx`);
     // Until::jacobians: with their derivatives (the passes) as well.
     std::optional<ir::System> system;
 };
 
-enum class Until { ast, model, equations, system, jacobians };
+enum class Until { ast, model, system, jacobians };
 
 /// Runs the stages up to `until`. `progress` (may be empty) receives a line per stage.
 /// `checked` (may be empty) sees the checked model before the equations are
@@ -40,6 +39,18 @@ void continue_front_end(FrontEnd& fe, const std::string& path, Until until,
                         diag::Diagnostics& diags,
                         const std::function<void(const std::string&)>& progress = {},
                         Derivatives derivatives = Derivatives::automatic);
+
+/// Whether the derivatives of `m` up to `until` take the tangent form (no M is
+/// derived then). Throws diag::UsageError for a combination that cannot be.
+bool uses_tangent_form(const model::Model& m, Until until, Derivatives derivatives);
+
+/// The stages after the derivation: the externals' channels, `approx`, and up to
+/// Until::jacobians the derivatives, on `fe.system` (derived with M unless
+/// `tangent`). continue_front_end ends with it; tests that derive in-process
+/// (to keep the GiNaC equations) call it too. `seconds_so_far` starts its clock.
+void finish_front_end(FrontEnd& fe, Until until, bool tangent, diag::Diagnostics& diags,
+                      const std::function<void(const std::string&)>& progress = {},
+                      double seconds_so_far = 0.0);
 
 /// The C prototypes of the model's external functions, as the generated code
 /// declares them (codegen::external_prototypes); "" without any. The user's

@@ -24,12 +24,14 @@ struct Run {
     std::string out, err;
 };
 
-/// Runs yamsc in `dir` with its own model cache `cache`.
-Run run_yamsc(const std::string& dir, const std::string& cache, const std::string& args) {
+/// Runs yamsc in `dir` with its own model cache `cache` (and the environment
+/// variables `env`, "NAME=value ...").
+Run run_yamsc(const std::string& dir, const std::string& cache, const std::string& args,
+              const std::string& env = "") {
     const std::string log = std::string(YAMSC_TEST_BINARY_DIR) + "/jit_cache";
     const int status =
-        exit_status("cd '" + dir + "' && YAMSC_CACHE_DIR='" + cache + "' " + YAMSC_EXE + " " +
-                    args + " >'" + log + ".out' 2>'" + log + ".err'");
+        exit_status("cd '" + dir + "' && YAMSC_CACHE_DIR='" + cache + "' " + env + " " + YAMSC_EXE +
+                    " " + args + " >'" + log + ".out' 2>'" + log + ".err'");
     return {status, read_file(log + ".out"), read_file(log + ".err")};
 }
 
@@ -118,6 +120,24 @@ TEST_CASE("the cache is keyed by content: another folder or spelling of the path
         CHECK(again.out == first.out);
     }
     CHECK(libraries(cache).size() == 1);
+
+    // The derivation (GiNaC, CLN) is a module loaded only to derive: a hit never
+    // loads it (the cache key holds its file's stamp, read without loading it).
+    const std::string nowhere = "YAMSC_DERIVATION_MODULE=/nonexistent/libyamsc-derivation.so";
+    const Run traced =
+        run_yamsc(dir + "/a", cache, "sim pendulum.mbd --tmax 0.1 --dt 0.01", "LD_DEBUG=files");
+    REQUIRE(traced.status == 0);
+    CHECK(has(traced.err, "file=")); // the dynamic loader's trace is there
+    CHECK_FALSE(has(traced.err, "libyamsc-derivation"));
+    CHECK_FALSE(has(traced.err, "libginac"));
+    CHECK_FALSE(has(traced.err, "libcln"));
+    // A model that must be derived says which module it could not find (exit 70:
+    // a broken installation, not the model's fault).
+    write_file(dir + "/a/other.mbd", pendulum + "\n# another model\n");
+    const Run missing = run_yamsc(dir + "/a", cache, "sim other.mbd --tmax 0.1 --dt 0.01", nowhere);
+    CHECK(missing.status == 70);
+    CHECK(has(missing.err, "cannot find the derivation module"));
+    CHECK(has(missing.err, "/nonexistent/libyamsc-derivation.so: not found"));
 
     // Any change of the text is another model, and the estimate now comes from here.
     write_file(dir + "/b/copy.mbd", pendulum + "\n# a comment\n");

@@ -281,9 +281,9 @@ TEST_CASE("nrel5mw_land_3dof turned about x first: the rotation order's terms") 
         test_support::scratch_dir("linear", "land_3dof_xyz") + "/nrel5mw_land_3dof_xyz.mbd";
     test_support::write_file(path, text);
     yamsc::diag::Diagnostics diags;
-    auto fe = yamsc::driver::run_front_end(path, yamsc::driver::Until::system, diags);
+    auto run = yamsc::test::derive_in_process(path, yamsc::driver::Until::system, diags);
     REQUIRE_FALSE(diags.has_errors());
-    const Equations eq = yamsc::test::compiled_equations(fe);
+    const Equations eq = yamsc::test::compiled_equations(run);
     const LandTerms p(eq);
     const exmap& fixed = p.fixed;
     const ex nuxy = p.nu_x * p.nu_y;

@@ -295,16 +295,16 @@ std::string with_rotation(const std::string& text, const std::string& word) {
 
 /// Derives a model given as text (its data files are those of models/data).
 symbolic::Equations derive_text(const std::string& text, const std::string& name,
-                                driver::Until until = driver::Until::equations) {
+                                driver::Until until = driver::Until::system) {
     const std::string path = test_support::scratch_dir("lagrange", name) + "/" + name + ".mbd";
     test_support::write_file(
         path, test_support::replace_all(text, "\"data/", "\"" + test::source_path("models/data/")));
     diag::Diagnostics diags;
-    auto fe = driver::run_front_end(path, until, diags);
+    test::InProcess run = test::derive_in_process(path, until, diags);
     INFO(diags.render());
     REQUIRE_FALSE(diags.has_errors());
-    REQUIRE(fe.equations);
-    return std::move(*fe.equations);
+    REQUIRE(run.equations);
+    return std::move(*run.equations);
 }
 
 } // namespace

@@ -7,10 +7,13 @@
 #include "lower/lower.hpp"
 #include "passes/passes.hpp"
 #include "symbolic/dag.hpp"
+#include "symbolic/derive.hpp"
+#include "symbolic/linearize.hpp"
 
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -20,19 +23,44 @@ inline std::string source_path(const std::string& relative) {
     return std::string(YAMSC_SOURCE_DIR) + "/" + relative;
 }
 
-/// The equations of a front end's run as compiled: for a model with `approx`, M
+/// A model file's front end with its GiNaC equations: derived in this process,
+/// as the derivation module does it (derivation/module/entry.cpp), since the
+/// module keeps the equations to itself and hands over the ir::System only.
+struct InProcess {
+    driver::FrontEnd fe;
+    std::optional<symbolic::Equations> equations;
+};
+
+inline InProcess derive_in_process(const std::string& path, driver::Until until,
+                                   diag::Diagnostics& diags) {
+    InProcess out;
+    out.fe = driver::run_front_end(path, driver::Until::model, diags);
+    if (!out.fe.model || diags.has_errors()) return out;
+    const bool tangent =
+        driver::uses_tangent_form(*out.fe.model, until, driver::Derivatives::automatic);
+    const model::Model derived = model::with_external_channels(*out.fe.model);
+    out.equations = symbolic::derive(derived, diags, !tangent);
+    if (!out.equations || diags.has_errors()) return out;
+    out.equations->source_path = path;
+    out.fe.system =
+        lower::lower(*out.equations, symbolic::operating_point(derived, *out.equations));
+    driver::finish_front_end(out.fe, until, tangent, diags);
+    return out;
+}
+
+/// The equations of an in-process run as compiled: for a model with `approx`, M
 /// and F are the approximated ones (made on the IR by passes::approximate,
 /// converted back to GiNaC here for comparisons with printed formulas).
-inline symbolic::Equations compiled_equations(driver::FrontEnd& fe) {
-    REQUIRE(fe.equations);
-    REQUIRE(fe.system);
-    symbolic::Equations eq = std::move(*fe.equations);
-    if (!fe.system->exact_F.empty()) {
-        IrToGinac to_ginac(fe.system->graph, eq);
+inline symbolic::Equations compiled_equations(InProcess& run) {
+    REQUIRE(run.equations);
+    REQUIRE(run.fe.system);
+    symbolic::Equations eq = std::move(*run.equations);
+    const ir::System& system = *run.fe.system;
+    if (!system.exact_F.empty()) {
+        IrToGinac to_ginac(system.graph, eq);
         for (std::size_t r = 0; r < eq.M.size(); ++r)
-            for (std::size_t c = 0; c < eq.M[r].size(); ++c)
-                eq.M[r][c] = to_ginac(fe.system->M[r][c]);
-        for (std::size_t r = 0; r < eq.F.size(); ++r) eq.F[r] = to_ginac(fe.system->F[r]);
+            for (std::size_t c = 0; c < eq.M[r].size(); ++c) eq.M[r][c] = to_ginac(system.M[r][c]);
+        for (std::size_t r = 0; r < eq.F.size(); ++r) eq.F[r] = to_ginac(system.F[r]);
     }
     return eq;
 }
@@ -40,11 +68,10 @@ inline symbolic::Equations compiled_equations(driver::FrontEnd& fe) {
 /// The equations of a model file as compiled (compiled_equations).
 inline symbolic::Equations derive_file(const std::string& relative) {
     diag::Diagnostics diags;
-    driver::FrontEnd fe =
-        driver::run_front_end(source_path(relative), driver::Until::system, diags);
+    InProcess run = derive_in_process(source_path(relative), driver::Until::system, diags);
     INFO(diags.render());
     REQUIRE_FALSE(diags.has_errors());
-    return compiled_equations(fe);
+    return compiled_equations(run);
 }
 
 /// M and F of the symbolic equations at a state, parameters at their defaults
