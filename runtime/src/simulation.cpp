@@ -108,10 +108,10 @@ SimulationResult simulate(const ModelView& view, const SimulationOptions& option
     std::vector<double> y(static_cast<std::size_t>(view.ny));
     ProgressReporter reporter(progress, options.t_start, options.t_end);
     std::size_t step = 0; // of the grid, counted by the observer
-    // Rows every `stride` steps and the last one: the outputs (as costly as a
-    // right-hand side) only where they are stored. `derivative` gives x' at
-    // the point (the fixed-step integrators', null for CVODE): its q'' spares
-    // outputs the solve of M q'' = F, with the same numbers.
+    // Rows every `stride` steps and the last one: the outputs only where they
+    // are stored. `derivative` gives x' at the point (the fixed-step
+    // integrators', which their next step reuses; null for CVODE): with its q''
+    // a row costs outputs_from_qdd, not outputs' own rhs, for the same numbers.
     const auto record = [&](double t, const double* x, detail::PointDerivative* derivative) {
         const bool store = step++ % stride == 0 || step == grid.size();
         if (!store) return result.completed = reporter.report(t);
