@@ -19,8 +19,8 @@ included, minimum of --runs runs; the JIT cache is warmed first):
 Ratios use OpenFAST's CPU times quoted in the reference READMEs: 4.75 s
 (16 DOFs, DT 0.005), 2.35 s (DT 0.01), 66 s (operating, the low end of
 66-78 s). --before times another yamsc on the cases it supports, its runs
-alternating with the others (so both see the same load). Also prints the ns per call of the compiled rhs and outputs
-(bench/jit_call_cost.cpp on the cached library) and the load average.
+alternating with the others (so both see the same load). Also prints the ns per call of the compiled rhs, outputs
+and outputs_from_qdd (bench/jit_call_cost.cpp on the cached library) and the load average.
 """
 
 from __future__ import annotations
@@ -170,7 +170,8 @@ def main() -> int:
     print(f"load average {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}; start-up of a 16-DOF sim "
           f"(one step) {start * 1e3:.1f} ms CPU")
     for name, c in costs.items():
-        print(f"{name}: rhs {c['rhs_ns']:.0f} ns, outputs {c['outputs_ns']:.0f} ns per call")
+        print(f"{name}: rhs {c['rhs_ns']:.0f} ns, outputs {c['outputs_ns']:.0f} ns, "
+              f"outputs_from_qdd {c.get('outputs_from_qdd_ns', 0):.0f} ns per call")
     print("| case | CPU [ms] | before [ms] | OpenFAST CPU [s] | speed-up |\n|---|---|---|---|---|")
     for r in rows:
         old = f"{r['before_cpu_s'] * 1e3:.1f}" if "before_cpu_s" in r else "-"

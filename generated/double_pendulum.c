@@ -27,19 +27,20 @@
 //   y[2] "v_tip" "horizontal tip velocity [m/s]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      3 adds, 12 muls, 0 divs, 2 calls
-//   forcing          16 adds, 36 muls, 0 divs, 4 calls
-//   jacobians        26 adds, 85 muls, 0 divs, 4 calls
-//   outputs          7 adds, 15 muls, 0 divs, 4 calls
-//   rhs              22 adds, 52 muls, 3 divs, 4 calls
-//   rhs_jacobian     54 adds, 137 muls, 11 divs, 4 calls
-//   linear           48 adds, 134 muls, 3 divs, 4 calls
-//   state_space      60 adds, 146 muls, 15 divs, 4 calls
-//   output_matrices  12 adds, 22 muls, 0 divs, 4 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         118 adds, 229 muls, 13 divs, 16 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       3 adds, 12 muls, 0 divs, 2 calls
+//   forcing           16 adds, 36 muls, 0 divs, 4 calls
+//   jacobians         26 adds, 85 muls, 0 divs, 4 calls
+//   outputs_from_qdd  7 adds, 15 muls, 0 divs, 4 calls
+//   outputs           7 adds, 15 muls, 0 divs, 4 calls
+//   rhs               22 adds, 52 muls, 3 divs, 4 calls
+//   rhs_jacobian      54 adds, 137 muls, 11 divs, 4 calls
+//   linear            48 adds, 134 muls, 3 divs, 4 calls
+//   state_space       60 adds, 146 muls, 15 divs, 4 calls
+//   output_matrices   12 adds, 22 muls, 0 divs, 4 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          118 adds, 229 muls, 13 divs, 16 calls
 
 #include "double_pendulum.h"
 
@@ -185,9 +186,10 @@ void double_pendulum_jacobians(double_pendulum_real t, const double_pendulum_rea
     dF_du[3] = t13;
 }
 
-// the model's outputs y(q, q', u, t)
-void double_pendulum_outputs(double_pendulum_real t, const double_pendulum_real* q, const double_pendulum_real* qd, const double_pendulum_real* u, const double_pendulum_params* p, double_pendulum_real* y) {
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void double_pendulum_outputs_from_qdd(double_pendulum_real t, const double_pendulum_real* q, const double_pendulum_real* qd, const double_pendulum_real* qdd, const double_pendulum_real* u, const double_pendulum_params* p, double_pendulum_real* y) {
     (void)t;
+    (void)qdd;
     (void)u;
     const double t0 = sin(q[0]);
     const double t1 = cos(q[1]);
@@ -198,6 +200,14 @@ void double_pendulum_outputs(double_pendulum_real t, const double_pendulum_real*
     y[0] = -p->L1*t0 - p->L2*t4;
     y[1] = p->L2*t5 - p->L1*t3;
     y[2] = (p->L2*(qd[0] + qd[1]) + qd[0]*p->L1*t1)*t5 - qd[0]*p->L1*t2*t4;
+}
+
+// the model's outputs y(q, q', u, t)
+void double_pendulum_outputs(double_pendulum_real t, const double_pendulum_real* q, const double_pendulum_real* qd, const double_pendulum_real* u, const double_pendulum_params* p, double_pendulum_real* y) {
+    double qdd[2];
+    qdd[0] = 0.0;
+    qdd[1] = 0.0;
+    double_pendulum_outputs_from_qdd(t, q, qd, qdd, u, p, y);
 }
 
 // x' = [q', M^-1 F] for x = [q, q']

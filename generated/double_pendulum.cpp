@@ -26,17 +26,19 @@
 //   y[1] "z_tip" "tip height [m]"
 //   y[2] "v_tip" "horizontal tip velocity [m/s]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix      3 adds, 12 muls, 0 divs, 2 calls
-//   forcing          16 adds, 36 muls, 0 divs, 4 calls
-//   jacobians        26 adds, 85 muls, 0 divs, 4 calls
-//   outputs          7 adds, 15 muls, 0 divs, 4 calls
-//   rhs              22 adds, 52 muls, 3 divs, 4 calls
-//   rhs_jacobian     54 adds, 137 muls, 11 divs, 4 calls
-//   linear           48 adds, 134 muls, 3 divs, 4 calls
-//   state_space      60 adds, 146 muls, 15 divs, 4 calls
-//   output_matrices  12 adds, 22 muls, 0 divs, 4 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+// Operations per call (the LDL^T solves and the functions called, such as
+// rhs in outputs, included):
+//   mass_matrix       3 adds, 12 muls, 0 divs, 2 calls
+//   forcing           16 adds, 36 muls, 0 divs, 4 calls
+//   jacobians         26 adds, 85 muls, 0 divs, 4 calls
+//   outputs_from_qdd  7 adds, 15 muls, 0 divs, 4 calls
+//   outputs           7 adds, 15 muls, 0 divs, 4 calls
+//   rhs               22 adds, 52 muls, 3 divs, 4 calls
+//   rhs_jacobian      54 adds, 137 muls, 11 divs, 4 calls
+//   linear            48 adds, 134 muls, 3 divs, 4 calls
+//   state_space       60 adds, 146 muls, 15 divs, 4 calls
+//   output_matrices   12 adds, 22 muls, 0 divs, 4 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #include "double_pendulum.hpp"
 
@@ -169,9 +171,10 @@ void jacobians(double t, const double* q, const double* qd, const double* u, con
     dF_du[3] = t13;
 }
 
-// the model's outputs y(q, q', u, t)
-void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y) {
     (void)t;
+    (void)qdd;
     (void)u;
     const double t0 = std::sin(q[0]);
     const double t1 = std::cos(q[1]);
@@ -182,6 +185,14 @@ void outputs(double t, const double* q, const double* qd, const double* u, const
     y[0] = -p.L1*t0 - p.L2*t4;
     y[1] = p.L2*t5 - p.L1*t3;
     y[2] = (p.L2*(qd[0] + qd[1]) + qd[0]*p.L1*t1)*t5 - qd[0]*p.L1*t2*t4;
+}
+
+// the model's outputs y(q, q', u, t)
+void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
+    double qdd[2];
+    qdd[0] = 0.0;
+    qdd[1] = 0.0;
+    outputs_from_qdd(t, q, qd, qdd, u, p, y);
 }
 
 // x' = [q', M^-1 F] for x = [q, q']

@@ -27,19 +27,20 @@
 //   y[2] "v_tip" "horizontal tip velocity [m/s]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      3 adds, 12 muls, 0 divs, 2 calls
-//   forcing          16 adds, 36 muls, 0 divs, 4 calls
-//   jacobians        26 adds, 85 muls, 0 divs, 4 calls
-//   outputs          7 adds, 15 muls, 0 divs, 4 calls
-//   rhs              22 adds, 52 muls, 3 divs, 4 calls
-//   rhs_jacobian     54 adds, 137 muls, 11 divs, 4 calls
-//   linear           48 adds, 134 muls, 3 divs, 4 calls
-//   state_space      60 adds, 146 muls, 15 divs, 4 calls
-//   output_matrices  12 adds, 22 muls, 0 divs, 4 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         118 adds, 229 muls, 13 divs, 16 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       3 adds, 12 muls, 0 divs, 2 calls
+//   forcing           16 adds, 36 muls, 0 divs, 4 calls
+//   jacobians         26 adds, 85 muls, 0 divs, 4 calls
+//   outputs_from_qdd  7 adds, 15 muls, 0 divs, 4 calls
+//   outputs           7 adds, 15 muls, 0 divs, 4 calls
+//   rhs               22 adds, 52 muls, 3 divs, 4 calls
+//   rhs_jacobian      54 adds, 137 muls, 11 divs, 4 calls
+//   linear            48 adds, 134 muls, 3 divs, 4 calls
+//   state_space       60 adds, 146 muls, 15 divs, 4 calls
+//   output_matrices   12 adds, 22 muls, 0 divs, 4 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          118 adds, 229 muls, 13 divs, 16 calls
 
 #ifndef double_pendulum_YAMSC_GENERATED_H
 #define double_pendulum_YAMSC_GENERATED_H
@@ -85,6 +86,8 @@ void double_pendulum_mass_matrix_tu(double_pendulum_real t, const double_pendulu
 void double_pendulum_forcing(double_pendulum_real t, const double_pendulum_real* q, const double_pendulum_real* qd, const double_pendulum_real* u, const double_pendulum_params* p, double_pendulum_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void double_pendulum_jacobians(double_pendulum_real t, const double_pendulum_real* q, const double_pendulum_real* qd, const double_pendulum_real* u, const double_pendulum_params* p, double_pendulum_real* dF_dq, double_pendulum_real* dF_dqd, double_pendulum_real* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void double_pendulum_outputs_from_qdd(double_pendulum_real t, const double_pendulum_real* q, const double_pendulum_real* qd, const double_pendulum_real* qdd, const double_pendulum_real* u, const double_pendulum_params* p, double_pendulum_real* y);
 // the model's outputs y(q, q', u, t)
 void double_pendulum_outputs(double_pendulum_real t, const double_pendulum_real* q, const double_pendulum_real* qd, const double_pendulum_real* u, const double_pendulum_params* p, double_pendulum_real* y);
 // x' = [q', M^-1 F] for x = [q, q']

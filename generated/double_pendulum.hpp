@@ -26,17 +26,19 @@
 //   y[1] "z_tip" "tip height [m]"
 //   y[2] "v_tip" "horizontal tip velocity [m/s]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix      3 adds, 12 muls, 0 divs, 2 calls
-//   forcing          16 adds, 36 muls, 0 divs, 4 calls
-//   jacobians        26 adds, 85 muls, 0 divs, 4 calls
-//   outputs          7 adds, 15 muls, 0 divs, 4 calls
-//   rhs              22 adds, 52 muls, 3 divs, 4 calls
-//   rhs_jacobian     54 adds, 137 muls, 11 divs, 4 calls
-//   linear           48 adds, 134 muls, 3 divs, 4 calls
-//   state_space      60 adds, 146 muls, 15 divs, 4 calls
-//   output_matrices  12 adds, 22 muls, 0 divs, 4 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+// Operations per call (the LDL^T solves and the functions called, such as
+// rhs in outputs, included):
+//   mass_matrix       3 adds, 12 muls, 0 divs, 2 calls
+//   forcing           16 adds, 36 muls, 0 divs, 4 calls
+//   jacobians         26 adds, 85 muls, 0 divs, 4 calls
+//   outputs_from_qdd  7 adds, 15 muls, 0 divs, 4 calls
+//   outputs           7 adds, 15 muls, 0 divs, 4 calls
+//   rhs               22 adds, 52 muls, 3 divs, 4 calls
+//   rhs_jacobian      54 adds, 137 muls, 11 divs, 4 calls
+//   linear            48 adds, 134 muls, 3 divs, 4 calls
+//   state_space       60 adds, 146 muls, 15 divs, 4 calls
+//   output_matrices   12 adds, 22 muls, 0 divs, 4 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once
 
@@ -73,6 +75,8 @@ void mass_matrix(double t, const double* q, const double* u, const Params& p, do
 void forcing(double t, const double* q, const double* qd, const double* u, const Params& p, double* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y);
 // the model's outputs y(q, q', u, t)
 void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y);
 // x' = [q', M^-1 F] for x = [q, q']
@@ -105,6 +109,9 @@ struct Model {
     }
     static void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du) {
         ::double_pendulum::jacobians(t, q, qd, u, p, dF_dq, dF_dqd, dF_du);
+    }
+    static void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y) {
+        ::double_pendulum::outputs_from_qdd(t, q, qd, qdd, u, p, y);
     }
     static void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
         ::double_pendulum::outputs(t, q, qd, u, p, y);

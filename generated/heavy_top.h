@@ -24,19 +24,20 @@
 //   y[1] "spin_rate" "spin rate [rad/s]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      7 adds, 33 muls, 0 divs, 4 calls
-//   forcing          18 adds, 54 muls, 0 divs, 4 calls
-//   jacobians        73 adds, 234 muls, 0 divs, 4 calls
-//   outputs          0 adds, 1 muls, 0 divs, 1 calls
-//   rhs              35 adds, 101 muls, 6 divs, 4 calls
-//   rhs_jacobian     147 adds, 386 muls, 24 divs, 4 calls
-//   linear           111 adds, 350 muls, 6 divs, 4 calls
-//   state_space      147 adds, 386 muls, 24 divs, 4 calls
-//   output_matrices  0 adds, 1 muls, 0 divs, 1 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         184 adds, 435 muls, 25 divs, 16 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       7 adds, 33 muls, 0 divs, 4 calls
+//   forcing           18 adds, 54 muls, 0 divs, 4 calls
+//   jacobians         73 adds, 234 muls, 0 divs, 4 calls
+//   outputs_from_qdd  0 adds, 1 muls, 0 divs, 1 calls
+//   outputs           0 adds, 1 muls, 0 divs, 1 calls
+//   rhs               35 adds, 101 muls, 6 divs, 4 calls
+//   rhs_jacobian      147 adds, 386 muls, 24 divs, 4 calls
+//   linear            111 adds, 350 muls, 6 divs, 4 calls
+//   state_space       147 adds, 386 muls, 24 divs, 4 calls
+//   output_matrices   0 adds, 1 muls, 0 divs, 1 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          184 adds, 435 muls, 25 divs, 16 calls
 
 #ifndef heavy_top_YAMSC_GENERATED_H
 #define heavy_top_YAMSC_GENERATED_H
@@ -80,6 +81,8 @@ void heavy_top_mass_matrix_tu(heavy_top_real t, const heavy_top_real* q, const h
 void heavy_top_forcing(heavy_top_real t, const heavy_top_real* q, const heavy_top_real* qd, const heavy_top_real* u, const heavy_top_params* p, heavy_top_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void heavy_top_jacobians(heavy_top_real t, const heavy_top_real* q, const heavy_top_real* qd, const heavy_top_real* u, const heavy_top_params* p, heavy_top_real* dF_dq, heavy_top_real* dF_dqd, heavy_top_real* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void heavy_top_outputs_from_qdd(heavy_top_real t, const heavy_top_real* q, const heavy_top_real* qd, const heavy_top_real* qdd, const heavy_top_real* u, const heavy_top_params* p, heavy_top_real* y);
 // the model's outputs y(q, q', u, t)
 void heavy_top_outputs(heavy_top_real t, const heavy_top_real* q, const heavy_top_real* qd, const heavy_top_real* u, const heavy_top_params* p, heavy_top_real* y);
 // x' = [q', M^-1 F] for x = [q, q']

@@ -23,17 +23,19 @@
 //   y[0] "z_G" "height of the centre of mass [m]"
 //   y[1] "spin_rate" "spin rate [rad/s]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix      7 adds, 33 muls, 0 divs, 4 calls
-//   forcing          18 adds, 54 muls, 0 divs, 4 calls
-//   jacobians        73 adds, 234 muls, 0 divs, 4 calls
-//   outputs          0 adds, 1 muls, 0 divs, 1 calls
-//   rhs              35 adds, 101 muls, 6 divs, 4 calls
-//   rhs_jacobian     147 adds, 386 muls, 24 divs, 4 calls
-//   linear           111 adds, 350 muls, 6 divs, 4 calls
-//   state_space      147 adds, 386 muls, 24 divs, 4 calls
-//   output_matrices  0 adds, 1 muls, 0 divs, 1 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+// Operations per call (the LDL^T solves and the functions called, such as
+// rhs in outputs, included):
+//   mass_matrix       7 adds, 33 muls, 0 divs, 4 calls
+//   forcing           18 adds, 54 muls, 0 divs, 4 calls
+//   jacobians         73 adds, 234 muls, 0 divs, 4 calls
+//   outputs_from_qdd  0 adds, 1 muls, 0 divs, 1 calls
+//   outputs           0 adds, 1 muls, 0 divs, 1 calls
+//   rhs               35 adds, 101 muls, 6 divs, 4 calls
+//   rhs_jacobian      147 adds, 386 muls, 24 divs, 4 calls
+//   linear            111 adds, 350 muls, 6 divs, 4 calls
+//   state_space       147 adds, 386 muls, 24 divs, 4 calls
+//   output_matrices   0 adds, 1 muls, 0 divs, 1 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once
 
@@ -68,6 +70,8 @@ void mass_matrix(double t, const double* q, const double* u, const Params& p, do
 void forcing(double t, const double* q, const double* qd, const double* u, const Params& p, double* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y);
 // the model's outputs y(q, q', u, t)
 void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y);
 // x' = [q', M^-1 F] for x = [q, q']
@@ -100,6 +104,9 @@ struct Model {
     }
     static void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du) {
         ::heavy_top::jacobians(t, q, qd, u, p, dF_dq, dF_dqd, dF_du);
+    }
+    static void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y) {
+        ::heavy_top::outputs_from_qdd(t, q, qd, qdd, u, p, y);
     }
     static void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
         ::heavy_top::outputs(t, q, qd, u, p, y);

@@ -24,19 +24,20 @@
 //   y[1] "tip_edge" "tip in-plane deflection [m]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      0 adds, 0 muls, 0 divs, 0 calls
-//   forcing          30 adds, 51 muls, 0 divs, 0 calls
-//   jacobians        14 adds, 17 muls, 0 divs, 0 calls
-//   outputs          1 adds, 0 muls, 0 divs, 0 calls
-//   rhs              40 adds, 65 muls, 6 divs, 0 calls
-//   rhs_jacobian     90 adds, 118 muls, 24 divs, 0 calls
-//   linear           14 adds, 17 muls, 0 divs, 0 calls
-//   state_space      72 adds, 79 muls, 30 divs, 0 calls
-//   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         204 adds, 291 muls, 25 divs, 0 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       0 adds, 0 muls, 0 divs, 0 calls
+//   forcing           30 adds, 51 muls, 0 divs, 0 calls
+//   jacobians         14 adds, 17 muls, 0 divs, 0 calls
+//   outputs_from_qdd  1 adds, 0 muls, 0 divs, 0 calls
+//   outputs           1 adds, 0 muls, 0 divs, 0 calls
+//   rhs               40 adds, 65 muls, 6 divs, 0 calls
+//   rhs_jacobian      90 adds, 118 muls, 24 divs, 0 calls
+//   linear            14 adds, 17 muls, 0 divs, 0 calls
+//   state_space       72 adds, 79 muls, 30 divs, 0 calls
+//   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          204 adds, 291 muls, 25 divs, 0 calls
 
 #ifndef nrel5mw_blade_YAMSC_GENERATED_H
 #define nrel5mw_blade_YAMSC_GENERATED_H
@@ -78,6 +79,8 @@ void nrel5mw_blade_mass_matrix_tu(nrel5mw_blade_real t, const nrel5mw_blade_real
 void nrel5mw_blade_forcing(nrel5mw_blade_real t, const nrel5mw_blade_real* q, const nrel5mw_blade_real* qd, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void nrel5mw_blade_jacobians(nrel5mw_blade_real t, const nrel5mw_blade_real* q, const nrel5mw_blade_real* qd, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* dF_dq, nrel5mw_blade_real* dF_dqd, nrel5mw_blade_real* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void nrel5mw_blade_outputs_from_qdd(nrel5mw_blade_real t, const nrel5mw_blade_real* q, const nrel5mw_blade_real* qd, const nrel5mw_blade_real* qdd, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* y);
 // the model's outputs y(q, q', u, t)
 void nrel5mw_blade_outputs(nrel5mw_blade_real t, const nrel5mw_blade_real* q, const nrel5mw_blade_real* qd, const nrel5mw_blade_real* u, const nrel5mw_blade_params* p, nrel5mw_blade_real* y);
 // x' = [q', M^-1 F] for x = [q, q']

@@ -23,17 +23,19 @@
 //   y[0] "tip_flap" "tip out-of-plane deflection (shapes are 1 at the tip) [m]"
 //   y[1] "tip_edge" "tip in-plane deflection [m]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix      0 adds, 0 muls, 0 divs, 0 calls
-//   forcing          30 adds, 51 muls, 0 divs, 0 calls
-//   jacobians        14 adds, 17 muls, 0 divs, 0 calls
-//   outputs          1 adds, 0 muls, 0 divs, 0 calls
-//   rhs              40 adds, 65 muls, 6 divs, 0 calls
-//   rhs_jacobian     90 adds, 118 muls, 24 divs, 0 calls
-//   linear           14 adds, 17 muls, 0 divs, 0 calls
-//   state_space      72 adds, 79 muls, 30 divs, 0 calls
-//   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+// Operations per call (the LDL^T solves and the functions called, such as
+// rhs in outputs, included):
+//   mass_matrix       0 adds, 0 muls, 0 divs, 0 calls
+//   forcing           30 adds, 51 muls, 0 divs, 0 calls
+//   jacobians         14 adds, 17 muls, 0 divs, 0 calls
+//   outputs_from_qdd  1 adds, 0 muls, 0 divs, 0 calls
+//   outputs           1 adds, 0 muls, 0 divs, 0 calls
+//   rhs               40 adds, 65 muls, 6 divs, 0 calls
+//   rhs_jacobian      90 adds, 118 muls, 24 divs, 0 calls
+//   linear            14 adds, 17 muls, 0 divs, 0 calls
+//   state_space       72 adds, 79 muls, 30 divs, 0 calls
+//   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once
 
@@ -66,6 +68,8 @@ void mass_matrix(double t, const double* q, const double* u, const Params& p, do
 void forcing(double t, const double* q, const double* qd, const double* u, const Params& p, double* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y);
 // the model's outputs y(q, q', u, t)
 void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y);
 // x' = [q', M^-1 F] for x = [q, q']
@@ -98,6 +102,9 @@ struct Model {
     }
     static void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du) {
         ::nrel5mw_blade::jacobians(t, q, qd, u, p, dF_dq, dF_dqd, dF_du);
+    }
+    static void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y) {
+        ::nrel5mw_blade::outputs_from_qdd(t, q, qd, qdd, u, p, y);
     }
     static void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
         ::nrel5mw_blade::outputs(t, q, qd, u, p, y);

@@ -64,19 +64,20 @@
 //   y[1] "tt_fa" "tower-top fore-aft position [m]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      66 adds, 170 muls, 0 divs, 0 calls
-//   forcing          108 adds, 293 muls, 0 divs, 0 calls
-//   jacobians        270 adds, 887 muls, 0 divs, 0 calls
-//   outputs          3 adds, 8 muls, 0 divs, 2 calls
-//   rhs              182 adds, 471 muls, 6 divs, 0 calls
-//   rhs_jacobian     523 adds, 1454 muls, 24 divs, 4 calls
-//   linear           504 adds, 1451 muls, 6 divs, 4 calls
-//   state_space      564 adds, 1511 muls, 36 divs, 4 calls
-//   output_matrices  3 adds, 10 muls, 0 divs, 2 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         772 adds, 1915 muls, 25 divs, 0 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       66 adds, 170 muls, 0 divs, 0 calls
+//   forcing           108 adds, 293 muls, 0 divs, 0 calls
+//   jacobians         270 adds, 887 muls, 0 divs, 0 calls
+//   outputs_from_qdd  3 adds, 8 muls, 0 divs, 2 calls
+//   outputs           3 adds, 8 muls, 0 divs, 2 calls
+//   rhs               182 adds, 471 muls, 6 divs, 0 calls
+//   rhs_jacobian      523 adds, 1454 muls, 24 divs, 4 calls
+//   linear            504 adds, 1451 muls, 6 divs, 4 calls
+//   state_space       564 adds, 1511 muls, 36 divs, 4 calls
+//   output_matrices   3 adds, 10 muls, 0 divs, 2 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          772 adds, 1915 muls, 25 divs, 0 calls
 
 #include "nrel5mw_floating_3dof.h"
 
@@ -646,15 +647,25 @@ void nrel5mw_floating_3dof_jacobians(nrel5mw_floating_3dof_real t, const nrel5mw
     dF_du[11] = 1.0;
 }
 
-// the model's outputs y(q, q', u, t)
-void nrel5mw_floating_3dof_outputs(nrel5mw_floating_3dof_real t, const nrel5mw_floating_3dof_real* q, const nrel5mw_floating_3dof_real* qd, const nrel5mw_floating_3dof_real* u, const nrel5mw_floating_3dof_params* p, nrel5mw_floating_3dof_real* y) {
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void nrel5mw_floating_3dof_outputs_from_qdd(nrel5mw_floating_3dof_real t, const nrel5mw_floating_3dof_real* q, const nrel5mw_floating_3dof_real* qd, const nrel5mw_floating_3dof_real* qdd, const nrel5mw_floating_3dof_real* u, const nrel5mw_floating_3dof_params* p, nrel5mw_floating_3dof_real* y) {
     (void)t;
     (void)qd;
+    (void)qdd;
     (void)u;
     const double t0 = sin(q[1]);
     const double t1 = cos(q[1]);
     y[0] = 57.29577951308232*q[1];
     y[1] = q[0] + 0.5*t0*(2.0*p->tower_n1_origin_3_1 + q[2]*q[2]*p->tower_n1_phi1_3_1_1) + q[2]*p->tower_n1_phi_1_1*t1;
+}
+
+// the model's outputs y(q, q', u, t)
+void nrel5mw_floating_3dof_outputs(nrel5mw_floating_3dof_real t, const nrel5mw_floating_3dof_real* q, const nrel5mw_floating_3dof_real* qd, const nrel5mw_floating_3dof_real* u, const nrel5mw_floating_3dof_params* p, nrel5mw_floating_3dof_real* y) {
+    double qdd[3];
+    qdd[0] = 0.0;
+    qdd[1] = 0.0;
+    qdd[2] = 0.0;
+    nrel5mw_floating_3dof_outputs_from_qdd(t, q, qd, qdd, u, p, y);
 }
 
 // x' = [q', M^-1 F] for x = [q, q']

@@ -63,17 +63,19 @@
 //   y[0] "PtfmPitch_deg" "platform pitch [deg]"
 //   y[1] "tt_fa" "tower-top fore-aft position [m]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix      66 adds, 170 muls, 0 divs, 0 calls
-//   forcing          108 adds, 293 muls, 0 divs, 0 calls
-//   jacobians        270 adds, 887 muls, 0 divs, 0 calls
-//   outputs          3 adds, 8 muls, 0 divs, 2 calls
-//   rhs              182 adds, 471 muls, 6 divs, 0 calls
-//   rhs_jacobian     523 adds, 1454 muls, 24 divs, 4 calls
-//   linear           504 adds, 1451 muls, 6 divs, 4 calls
-//   state_space      564 adds, 1511 muls, 36 divs, 4 calls
-//   output_matrices  3 adds, 10 muls, 0 divs, 2 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+// Operations per call (the LDL^T solves and the functions called, such as
+// rhs in outputs, included):
+//   mass_matrix       66 adds, 170 muls, 0 divs, 0 calls
+//   forcing           108 adds, 293 muls, 0 divs, 0 calls
+//   jacobians         270 adds, 887 muls, 0 divs, 0 calls
+//   outputs_from_qdd  3 adds, 8 muls, 0 divs, 2 calls
+//   outputs           3 adds, 8 muls, 0 divs, 2 calls
+//   rhs               182 adds, 471 muls, 6 divs, 0 calls
+//   rhs_jacobian      523 adds, 1454 muls, 24 divs, 4 calls
+//   linear            504 adds, 1451 muls, 6 divs, 4 calls
+//   state_space       564 adds, 1511 muls, 36 divs, 4 calls
+//   output_matrices   3 adds, 10 muls, 0 divs, 2 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once
 
@@ -145,6 +147,8 @@ void mass_matrix(double t, const double* q, const double* u, const Params& p, do
 void forcing(double t, const double* q, const double* qd, const double* u, const Params& p, double* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y);
 // the model's outputs y(q, q', u, t)
 void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y);
 // x' = [q', M^-1 F] for x = [q, q']
@@ -177,6 +181,9 @@ struct Model {
     }
     static void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du) {
         ::nrel5mw_floating_3dof::jacobians(t, q, qd, u, p, dF_dq, dF_dqd, dF_du);
+    }
+    static void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y) {
+        ::nrel5mw_floating_3dof::outputs_from_qdd(t, q, qd, qdd, u, p, y);
     }
     static void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
         ::nrel5mw_floating_3dof::outputs(t, q, qd, u, p, y);

@@ -62,17 +62,19 @@
 //   y[8] "QD_TFA1" "[m/s]"
 //   y[9] "QD_GeAz" "[rad/s]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix      88 adds, 154 muls, 0 divs, 8 calls
-//   forcing          108 adds, 253 muls, 0 divs, 8 calls
-//   jacobians        300 adds, 831 muls, 0 divs, 8 calls
-//   outputs          4 adds, 17 muls, 0 divs, 2 calls
-//   rhs              196 adds, 401 muls, 10 divs, 8 calls
-//   rhs_jacobian     656 adds, 1510 muls, 42 divs, 8 calls
-//   linear           560 adds, 1416 muls, 10 divs, 8 calls
-//   state_space      776 adds, 1632 muls, 82 divs, 8 calls
-//   output_matrices  3 adds, 11 muls, 0 divs, 2 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+// Operations per call (the LDL^T solves and the functions called, such as
+// rhs in outputs, included):
+//   mass_matrix       88 adds, 154 muls, 0 divs, 8 calls
+//   forcing           108 adds, 253 muls, 0 divs, 8 calls
+//   jacobians         300 adds, 831 muls, 0 divs, 8 calls
+//   outputs_from_qdd  4 adds, 17 muls, 0 divs, 2 calls
+//   outputs           4 adds, 17 muls, 0 divs, 2 calls
+//   rhs               196 adds, 401 muls, 10 divs, 8 calls
+//   rhs_jacobian      656 adds, 1510 muls, 42 divs, 8 calls
+//   linear            560 adds, 1416 muls, 10 divs, 8 calls
+//   state_space       776 adds, 1632 muls, 82 divs, 8 calls
+//   output_matrices   3 adds, 11 muls, 0 divs, 2 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #include "nrel5mw_floating_template.hpp"
 
@@ -1595,9 +1597,10 @@ void jacobians(double t, const double* q, const double* qd, const double* u, con
     jacobians_part1(t, q, qd, u, p, dF_dq, dF_dqd, dF_du, w);
 }
 
-// the model's outputs y(q, q', u, t)
-void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y) {
     (void)t;
+    (void)qdd;
     (void)u;
     const double t0 = std::cos(q[1]);
     const double t1 = std::sin(q[1]);
@@ -1612,6 +1615,16 @@ void outputs(double t, const double* q, const double* qd, const double* u, const
     y[7] = 0.0;
     y[8] = qd[2];
     y[9] = qd[3];
+}
+
+// the model's outputs y(q, q', u, t)
+void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
+    double qdd[4];
+    qdd[0] = 0.0;
+    qdd[1] = 0.0;
+    qdd[2] = 0.0;
+    qdd[3] = 0.0;
+    outputs_from_qdd(t, q, qd, qdd, u, p, y);
 }
 
 // x' = [q', M^-1 F] for x = [q, q']

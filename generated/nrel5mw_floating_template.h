@@ -63,19 +63,20 @@
 //   y[9] "QD_GeAz" "[rad/s]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      88 adds, 154 muls, 0 divs, 8 calls
-//   forcing          108 adds, 253 muls, 0 divs, 8 calls
-//   jacobians        300 adds, 831 muls, 0 divs, 8 calls
-//   outputs          4 adds, 17 muls, 0 divs, 2 calls
-//   rhs              196 adds, 401 muls, 10 divs, 8 calls
-//   rhs_jacobian     656 adds, 1510 muls, 42 divs, 8 calls
-//   linear           560 adds, 1416 muls, 10 divs, 8 calls
-//   state_space      776 adds, 1632 muls, 82 divs, 8 calls
-//   output_matrices  3 adds, 11 muls, 0 divs, 2 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         842 adds, 1645 muls, 41 divs, 32 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       88 adds, 154 muls, 0 divs, 8 calls
+//   forcing           108 adds, 253 muls, 0 divs, 8 calls
+//   jacobians         300 adds, 831 muls, 0 divs, 8 calls
+//   outputs_from_qdd  4 adds, 17 muls, 0 divs, 2 calls
+//   outputs           4 adds, 17 muls, 0 divs, 2 calls
+//   rhs               196 adds, 401 muls, 10 divs, 8 calls
+//   rhs_jacobian      656 adds, 1510 muls, 42 divs, 8 calls
+//   linear            560 adds, 1416 muls, 10 divs, 8 calls
+//   state_space       776 adds, 1632 muls, 82 divs, 8 calls
+//   output_matrices   3 adds, 11 muls, 0 divs, 2 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          842 adds, 1645 muls, 41 divs, 32 calls
 
 #ifndef nrel5mw_floating_template_YAMSC_GENERATED_H
 #define nrel5mw_floating_template_YAMSC_GENERATED_H
@@ -140,6 +141,8 @@ void nrel5mw_floating_template_mass_matrix_tu(nrel5mw_floating_template_real t, 
 void nrel5mw_floating_template_forcing(nrel5mw_floating_template_real t, const nrel5mw_floating_template_real* q, const nrel5mw_floating_template_real* qd, const nrel5mw_floating_template_real* u, const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void nrel5mw_floating_template_jacobians(nrel5mw_floating_template_real t, const nrel5mw_floating_template_real* q, const nrel5mw_floating_template_real* qd, const nrel5mw_floating_template_real* u, const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* dF_dq, nrel5mw_floating_template_real* dF_dqd, nrel5mw_floating_template_real* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void nrel5mw_floating_template_outputs_from_qdd(nrel5mw_floating_template_real t, const nrel5mw_floating_template_real* q, const nrel5mw_floating_template_real* qd, const nrel5mw_floating_template_real* qdd, const nrel5mw_floating_template_real* u, const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* y);
 // the model's outputs y(q, q', u, t)
 void nrel5mw_floating_template_outputs(nrel5mw_floating_template_real t, const nrel5mw_floating_template_real* q, const nrel5mw_floating_template_real* qd, const nrel5mw_floating_template_real* u, const nrel5mw_floating_template_params* p, nrel5mw_floating_template_real* y);
 // x' = [q', M^-1 F] for x = [q, q']

@@ -62,17 +62,19 @@
 //   y[8] "QD_TFA1" "[m/s]"
 //   y[9] "QD_GeAz" "[rad/s]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix      88 adds, 154 muls, 0 divs, 8 calls
-//   forcing          108 adds, 253 muls, 0 divs, 8 calls
-//   jacobians        300 adds, 831 muls, 0 divs, 8 calls
-//   outputs          4 adds, 17 muls, 0 divs, 2 calls
-//   rhs              196 adds, 401 muls, 10 divs, 8 calls
-//   rhs_jacobian     656 adds, 1510 muls, 42 divs, 8 calls
-//   linear           560 adds, 1416 muls, 10 divs, 8 calls
-//   state_space      776 adds, 1632 muls, 82 divs, 8 calls
-//   output_matrices  3 adds, 11 muls, 0 divs, 2 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+// Operations per call (the LDL^T solves and the functions called, such as
+// rhs in outputs, included):
+//   mass_matrix       88 adds, 154 muls, 0 divs, 8 calls
+//   forcing           108 adds, 253 muls, 0 divs, 8 calls
+//   jacobians         300 adds, 831 muls, 0 divs, 8 calls
+//   outputs_from_qdd  4 adds, 17 muls, 0 divs, 2 calls
+//   outputs           4 adds, 17 muls, 0 divs, 2 calls
+//   rhs               196 adds, 401 muls, 10 divs, 8 calls
+//   rhs_jacobian      656 adds, 1510 muls, 42 divs, 8 calls
+//   linear            560 adds, 1416 muls, 10 divs, 8 calls
+//   state_space       776 adds, 1632 muls, 82 divs, 8 calls
+//   output_matrices   3 adds, 11 muls, 0 divs, 2 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once
 
@@ -128,6 +130,8 @@ void mass_matrix(double t, const double* q, const double* u, const Params& p, do
 void forcing(double t, const double* q, const double* qd, const double* u, const Params& p, double* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y);
 // the model's outputs y(q, q', u, t)
 void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y);
 // x' = [q', M^-1 F] for x = [q, q']
@@ -160,6 +164,9 @@ struct Model {
     }
     static void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du) {
         ::nrel5mw_floating_template::jacobians(t, q, qd, u, p, dF_dq, dF_dqd, dF_du);
+    }
+    static void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y) {
+        ::nrel5mw_floating_template::outputs_from_qdd(t, q, qd, qdd, u, p, y);
     }
     static void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
         ::nrel5mw_floating_template::outputs(t, q, qd, u, p, y);

@@ -32,19 +32,20 @@
 //   y[1] "rotor_speed" "[rad/s]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      18 adds, 39 muls, 0 divs, 6 calls
-//   forcing          32 adds, 91 muls, 0 divs, 6 calls
-//   jacobians        65 adds, 199 muls, 0 divs, 6 calls
-//   outputs          0 adds, 1 muls, 0 divs, 0 calls
-//   rhs              47 adds, 121 muls, 3 divs, 6 calls
-//   rhs_jacobian     108 adds, 296 muls, 11 divs, 6 calls
-//   linear           100 adds, 289 muls, 3 divs, 6 calls
-//   state_space      114 adds, 303 muls, 17 divs, 6 calls
-//   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         218 adds, 505 muls, 13 divs, 24 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       18 adds, 39 muls, 0 divs, 6 calls
+//   forcing           32 adds, 91 muls, 0 divs, 6 calls
+//   jacobians         65 adds, 199 muls, 0 divs, 6 calls
+//   outputs_from_qdd  0 adds, 1 muls, 0 divs, 0 calls
+//   outputs           0 adds, 1 muls, 0 divs, 0 calls
+//   rhs               47 adds, 121 muls, 3 divs, 6 calls
+//   rhs_jacobian      108 adds, 296 muls, 11 divs, 6 calls
+//   linear            100 adds, 289 muls, 3 divs, 6 calls
+//   state_space       114 adds, 303 muls, 17 divs, 6 calls
+//   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          218 adds, 505 muls, 13 divs, 24 calls
 
 #include "nrel5mw_land_2dof.h"
 
@@ -260,13 +261,22 @@ void nrel5mw_land_2dof_jacobians(nrel5mw_land_2dof_real t, const nrel5mw_land_2d
     dF_du[5] = -1.0;
 }
 
-// the model's outputs y(q, q', u, t)
-void nrel5mw_land_2dof_outputs(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* qd, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* y) {
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void nrel5mw_land_2dof_outputs_from_qdd(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* qd, const nrel5mw_land_2dof_real* qdd, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* y) {
     (void)t;
+    (void)qdd;
     (void)u;
     (void)p;
     y[0] = 1.000000000000002*q[0];
     y[1] = qd[1];
+}
+
+// the model's outputs y(q, q', u, t)
+void nrel5mw_land_2dof_outputs(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* qd, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* y) {
+    double qdd[2];
+    qdd[0] = 0.0;
+    qdd[1] = 0.0;
+    nrel5mw_land_2dof_outputs_from_qdd(t, q, qd, qdd, u, p, y);
 }
 
 // x' = [q', M^-1 F] for x = [q, q']

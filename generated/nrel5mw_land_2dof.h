@@ -32,19 +32,20 @@
 //   y[1] "rotor_speed" "[rad/s]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      18 adds, 39 muls, 0 divs, 6 calls
-//   forcing          32 adds, 91 muls, 0 divs, 6 calls
-//   jacobians        65 adds, 199 muls, 0 divs, 6 calls
-//   outputs          0 adds, 1 muls, 0 divs, 0 calls
-//   rhs              47 adds, 121 muls, 3 divs, 6 calls
-//   rhs_jacobian     108 adds, 296 muls, 11 divs, 6 calls
-//   linear           100 adds, 289 muls, 3 divs, 6 calls
-//   state_space      114 adds, 303 muls, 17 divs, 6 calls
-//   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         218 adds, 505 muls, 13 divs, 24 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       18 adds, 39 muls, 0 divs, 6 calls
+//   forcing           32 adds, 91 muls, 0 divs, 6 calls
+//   jacobians         65 adds, 199 muls, 0 divs, 6 calls
+//   outputs_from_qdd  0 adds, 1 muls, 0 divs, 0 calls
+//   outputs           0 adds, 1 muls, 0 divs, 0 calls
+//   rhs               47 adds, 121 muls, 3 divs, 6 calls
+//   rhs_jacobian      108 adds, 296 muls, 11 divs, 6 calls
+//   linear            100 adds, 289 muls, 3 divs, 6 calls
+//   state_space       114 adds, 303 muls, 17 divs, 6 calls
+//   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          218 adds, 505 muls, 13 divs, 24 calls
 
 #ifndef nrel5mw_land_2dof_YAMSC_GENERATED_H
 #define nrel5mw_land_2dof_YAMSC_GENERATED_H
@@ -95,6 +96,8 @@ void nrel5mw_land_2dof_mass_matrix_tu(nrel5mw_land_2dof_real t, const nrel5mw_la
 void nrel5mw_land_2dof_forcing(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* qd, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void nrel5mw_land_2dof_jacobians(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* qd, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* dF_dq, nrel5mw_land_2dof_real* dF_dqd, nrel5mw_land_2dof_real* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void nrel5mw_land_2dof_outputs_from_qdd(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* qd, const nrel5mw_land_2dof_real* qdd, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* y);
 // the model's outputs y(q, q', u, t)
 void nrel5mw_land_2dof_outputs(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_real* q, const nrel5mw_land_2dof_real* qd, const nrel5mw_land_2dof_real* u, const nrel5mw_land_2dof_params* p, nrel5mw_land_2dof_real* y);
 // x' = [q', M^-1 F] for x = [q, q']

@@ -31,17 +31,19 @@
 //   y[0] "tt_fa" "tower-top fore-aft displacement [m]"
 //   y[1] "rotor_speed" "[rad/s]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix      18 adds, 39 muls, 0 divs, 6 calls
-//   forcing          32 adds, 91 muls, 0 divs, 6 calls
-//   jacobians        65 adds, 199 muls, 0 divs, 6 calls
-//   outputs          0 adds, 1 muls, 0 divs, 0 calls
-//   rhs              47 adds, 121 muls, 3 divs, 6 calls
-//   rhs_jacobian     108 adds, 296 muls, 11 divs, 6 calls
-//   linear           100 adds, 289 muls, 3 divs, 6 calls
-//   state_space      114 adds, 303 muls, 17 divs, 6 calls
-//   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+// Operations per call (the LDL^T solves and the functions called, such as
+// rhs in outputs, included):
+//   mass_matrix       18 adds, 39 muls, 0 divs, 6 calls
+//   forcing           32 adds, 91 muls, 0 divs, 6 calls
+//   jacobians         65 adds, 199 muls, 0 divs, 6 calls
+//   outputs_from_qdd  0 adds, 1 muls, 0 divs, 0 calls
+//   outputs           0 adds, 1 muls, 0 divs, 0 calls
+//   rhs               47 adds, 121 muls, 3 divs, 6 calls
+//   rhs_jacobian      108 adds, 296 muls, 11 divs, 6 calls
+//   linear            100 adds, 289 muls, 3 divs, 6 calls
+//   state_space       114 adds, 303 muls, 17 divs, 6 calls
+//   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once
 
@@ -83,6 +85,8 @@ void mass_matrix(double t, const double* q, const double* u, const Params& p, do
 void forcing(double t, const double* q, const double* qd, const double* u, const Params& p, double* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y);
 // the model's outputs y(q, q', u, t)
 void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y);
 // x' = [q', M^-1 F] for x = [q, q']
@@ -115,6 +119,9 @@ struct Model {
     }
     static void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du) {
         ::nrel5mw_land_2dof::jacobians(t, q, qd, u, p, dF_dq, dF_dqd, dF_du);
+    }
+    static void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y) {
+        ::nrel5mw_land_2dof::outputs_from_qdd(t, q, qd, qdd, u, p, y);
     }
     static void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
         ::nrel5mw_land_2dof::outputs(t, q, qd, u, p, y);

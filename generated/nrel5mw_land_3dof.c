@@ -88,19 +88,20 @@
 //   y[2] "rotor_speed" "[rad/s]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      146 adds, 557 muls, 0 divs, 2 calls
-//   forcing          167 adds, 538 muls, 0 divs, 2 calls
-//   jacobians        365 adds, 1516 muls, 0 divs, 2 calls
-//   outputs          0 adds, 2 muls, 0 divs, 0 calls
-//   rhs              313 adds, 1071 muls, 6 divs, 2 calls
-//   rhs_jacobian     815 adds, 2835 muls, 24 divs, 8 calls
-//   linear           789 adds, 2845 muls, 6 divs, 8 calls
-//   state_space      849 adds, 2905 muls, 36 divs, 8 calls
-//   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         1296 adds, 4315 muls, 25 divs, 8 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       146 adds, 557 muls, 0 divs, 2 calls
+//   forcing           167 adds, 538 muls, 0 divs, 2 calls
+//   jacobians         365 adds, 1516 muls, 0 divs, 2 calls
+//   outputs_from_qdd  0 adds, 2 muls, 0 divs, 0 calls
+//   outputs           0 adds, 2 muls, 0 divs, 0 calls
+//   rhs               313 adds, 1071 muls, 6 divs, 2 calls
+//   rhs_jacobian      815 adds, 2835 muls, 24 divs, 8 calls
+//   linear            789 adds, 2845 muls, 6 divs, 8 calls
+//   state_space       849 adds, 2905 muls, 36 divs, 8 calls
+//   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          1296 adds, 4315 muls, 25 divs, 8 calls
 
 #include "nrel5mw_land_3dof.h"
 
@@ -1281,13 +1282,23 @@ void nrel5mw_land_3dof_jacobians(nrel5mw_land_3dof_real t, const nrel5mw_land_3d
     dF_du[11] = 0.0;
 }
 
-// the model's outputs y(q, q', u, t)
-void nrel5mw_land_3dof_outputs(nrel5mw_land_3dof_real t, const nrel5mw_land_3dof_real* q, const nrel5mw_land_3dof_real* qd, const nrel5mw_land_3dof_real* u, const nrel5mw_land_3dof_params* p, nrel5mw_land_3dof_real* y) {
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void nrel5mw_land_3dof_outputs_from_qdd(nrel5mw_land_3dof_real t, const nrel5mw_land_3dof_real* q, const nrel5mw_land_3dof_real* qd, const nrel5mw_land_3dof_real* qdd, const nrel5mw_land_3dof_real* u, const nrel5mw_land_3dof_params* p, nrel5mw_land_3dof_real* y) {
     (void)t;
+    (void)qdd;
     (void)u;
     y[0] = q[0]*p->tower_n1_phi_1_1;
     y[1] = q[1]*p->tower_n1_phi_2_2;
     y[2] = qd[2];
+}
+
+// the model's outputs y(q, q', u, t)
+void nrel5mw_land_3dof_outputs(nrel5mw_land_3dof_real t, const nrel5mw_land_3dof_real* q, const nrel5mw_land_3dof_real* qd, const nrel5mw_land_3dof_real* u, const nrel5mw_land_3dof_params* p, nrel5mw_land_3dof_real* y) {
+    double qdd[3];
+    qdd[0] = 0.0;
+    qdd[1] = 0.0;
+    qdd[2] = 0.0;
+    nrel5mw_land_3dof_outputs_from_qdd(t, q, qd, qdd, u, p, y);
 }
 
 // x' = [q', M^-1 F] for x = [q, q']

@@ -88,19 +88,20 @@
 //   y[2] "rotor_speed" "[rad/s]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      146 adds, 557 muls, 0 divs, 2 calls
-//   forcing          167 adds, 538 muls, 0 divs, 2 calls
-//   jacobians        365 adds, 1516 muls, 0 divs, 2 calls
-//   outputs          0 adds, 2 muls, 0 divs, 0 calls
-//   rhs              313 adds, 1071 muls, 6 divs, 2 calls
-//   rhs_jacobian     815 adds, 2835 muls, 24 divs, 8 calls
-//   linear           789 adds, 2845 muls, 6 divs, 8 calls
-//   state_space      849 adds, 2905 muls, 36 divs, 8 calls
-//   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         1296 adds, 4315 muls, 25 divs, 8 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       146 adds, 557 muls, 0 divs, 2 calls
+//   forcing           167 adds, 538 muls, 0 divs, 2 calls
+//   jacobians         365 adds, 1516 muls, 0 divs, 2 calls
+//   outputs_from_qdd  0 adds, 2 muls, 0 divs, 0 calls
+//   outputs           0 adds, 2 muls, 0 divs, 0 calls
+//   rhs               313 adds, 1071 muls, 6 divs, 2 calls
+//   rhs_jacobian      815 adds, 2835 muls, 24 divs, 8 calls
+//   linear            789 adds, 2845 muls, 6 divs, 8 calls
+//   state_space       849 adds, 2905 muls, 36 divs, 8 calls
+//   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          1296 adds, 4315 muls, 25 divs, 8 calls
 
 #ifndef nrel5mw_land_3dof_YAMSC_GENERATED_H
 #define nrel5mw_land_3dof_YAMSC_GENERATED_H
@@ -204,6 +205,8 @@ void nrel5mw_land_3dof_mass_matrix_tu(nrel5mw_land_3dof_real t, const nrel5mw_la
 void nrel5mw_land_3dof_forcing(nrel5mw_land_3dof_real t, const nrel5mw_land_3dof_real* q, const nrel5mw_land_3dof_real* qd, const nrel5mw_land_3dof_real* u, const nrel5mw_land_3dof_params* p, nrel5mw_land_3dof_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void nrel5mw_land_3dof_jacobians(nrel5mw_land_3dof_real t, const nrel5mw_land_3dof_real* q, const nrel5mw_land_3dof_real* qd, const nrel5mw_land_3dof_real* u, const nrel5mw_land_3dof_params* p, nrel5mw_land_3dof_real* dF_dq, nrel5mw_land_3dof_real* dF_dqd, nrel5mw_land_3dof_real* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void nrel5mw_land_3dof_outputs_from_qdd(nrel5mw_land_3dof_real t, const nrel5mw_land_3dof_real* q, const nrel5mw_land_3dof_real* qd, const nrel5mw_land_3dof_real* qdd, const nrel5mw_land_3dof_real* u, const nrel5mw_land_3dof_params* p, nrel5mw_land_3dof_real* y);
 // the model's outputs y(q, q', u, t)
 void nrel5mw_land_3dof_outputs(nrel5mw_land_3dof_real t, const nrel5mw_land_3dof_real* q, const nrel5mw_land_3dof_real* qd, const nrel5mw_land_3dof_real* u, const nrel5mw_land_3dof_params* p, nrel5mw_land_3dof_real* y);
 // x' = [q', M^-1 F] for x = [q, q']

@@ -87,17 +87,19 @@
 //   y[1] "tt_ss" "tower-top side-side displacement [m]"
 //   y[2] "rotor_speed" "[rad/s]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix      146 adds, 557 muls, 0 divs, 2 calls
-//   forcing          167 adds, 538 muls, 0 divs, 2 calls
-//   jacobians        365 adds, 1516 muls, 0 divs, 2 calls
-//   outputs          0 adds, 2 muls, 0 divs, 0 calls
-//   rhs              313 adds, 1071 muls, 6 divs, 2 calls
-//   rhs_jacobian     815 adds, 2835 muls, 24 divs, 8 calls
-//   linear           789 adds, 2845 muls, 6 divs, 8 calls
-//   state_space      849 adds, 2905 muls, 36 divs, 8 calls
-//   output_matrices  0 adds, 0 muls, 0 divs, 0 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+// Operations per call (the LDL^T solves and the functions called, such as
+// rhs in outputs, included):
+//   mass_matrix       146 adds, 557 muls, 0 divs, 2 calls
+//   forcing           167 adds, 538 muls, 0 divs, 2 calls
+//   jacobians         365 adds, 1516 muls, 0 divs, 2 calls
+//   outputs_from_qdd  0 adds, 2 muls, 0 divs, 0 calls
+//   outputs           0 adds, 2 muls, 0 divs, 0 calls
+//   rhs               313 adds, 1071 muls, 6 divs, 2 calls
+//   rhs_jacobian      815 adds, 2835 muls, 24 divs, 8 calls
+//   linear            789 adds, 2845 muls, 6 divs, 8 calls
+//   state_space       849 adds, 2905 muls, 36 divs, 8 calls
+//   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once
 
@@ -192,6 +194,8 @@ void mass_matrix(double t, const double* q, const double* u, const Params& p, do
 void forcing(double t, const double* q, const double* qd, const double* u, const Params& p, double* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y);
 // the model's outputs y(q, q', u, t)
 void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y);
 // x' = [q', M^-1 F] for x = [q, q']
@@ -224,6 +228,9 @@ struct Model {
     }
     static void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du) {
         ::nrel5mw_land_3dof::jacobians(t, q, qd, u, p, dF_dq, dF_dqd, dF_du);
+    }
+    static void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y) {
+        ::nrel5mw_land_3dof::outputs_from_qdd(t, q, qd, qdd, u, p, y);
     }
     static void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
         ::nrel5mw_land_3dof::outputs(t, q, qd, u, p, y);

@@ -68,19 +68,20 @@
 //   y[18] "YawBrTAyp" "side-side [m/s^2]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      69 adds, 170 muls, 0 divs, 10 calls
-//   forcing          167 adds, 488 muls, 0 divs, 12 calls
-//   jacobians        618 adds, 1884 muls, 0 divs, 12 calls
-//   outputs          265 adds, 693 muls, 10 divs, 12 calls
-//   rhs              234 adds, 617 muls, 10 divs, 12 calls
-//   rhs_jacobian     953 adds, 2556 muls, 42 divs, 12 calls
-//   linear           864 adds, 2491 muls, 10 divs, 12 calls
-//   state_space      1044 adds, 2671 muls, 70 divs, 12 calls
-//   output_matrices  1163 adds, 2900 muls, 70 divs, 12 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         994 adds, 2509 muls, 41 divs, 48 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       69 adds, 170 muls, 0 divs, 10 calls
+//   forcing           167 adds, 488 muls, 0 divs, 12 calls
+//   jacobians         618 adds, 1884 muls, 0 divs, 12 calls
+//   outputs_from_qdd  44 adds, 118 muls, 0 divs, 10 calls
+//   outputs           278 adds, 735 muls, 10 divs, 22 calls
+//   rhs               234 adds, 617 muls, 10 divs, 12 calls
+//   rhs_jacobian      953 adds, 2556 muls, 42 divs, 12 calls
+//   linear            864 adds, 2491 muls, 10 divs, 12 calls
+//   state_space       1044 adds, 2671 muls, 70 divs, 12 calls
+//   output_matrices   1163 adds, 2900 muls, 70 divs, 12 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          994 adds, 2509 muls, 41 divs, 48 calls
 
 #include "nrel5mw_land_operating.h"
 
@@ -3122,152 +3123,49 @@ void nrel5mw_land_operating_jacobians(nrel5mw_land_operating_real t, const nrel5
     nrel5mw_land_operating_jacobians_part1(t, q, qd, u, p, dF_dq, dF_dqd, dF_du, w);
 }
 
-// the model's outputs y(q, q', u, t)
-void nrel5mw_land_operating_outputs(nrel5mw_land_operating_real t, const nrel5mw_land_operating_real* q, const nrel5mw_land_operating_real* qd, const nrel5mw_land_operating_real* u, const nrel5mw_land_operating_params* p, nrel5mw_land_operating_real* y) {
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void nrel5mw_land_operating_outputs_from_qdd(nrel5mw_land_operating_real t, const nrel5mw_land_operating_real* q, const nrel5mw_land_operating_real* qd, const nrel5mw_land_operating_real* qdd, const nrel5mw_land_operating_real* u, const nrel5mw_land_operating_params* p, nrel5mw_land_operating_real* y) {
     (void)t;
-    double M[16];
-    double qdd[4];
-    const double t0 = 0.01852054794520553*q[0];
-    const double t1 = cos(t0);
-    const double t2 = -0.02089135854224692*q[1];
-    const double t3 = cos(t2);
-    const double t4 = sin(t0);
-    const double t5 = q[0]*t3*t4;
-    const double t6 = 1.852054794520553e+16*p->NacCMzn + 1.0000000000000004e+18*t1 + 1.504385676134234e+16*t5;
-    const double t7 = sin(t2);
-    const double t8 = q[0]*t3*t1;
-    const double t9 = 1.852054794520553e+16*p->NacCMxn + 1.504385676134234e+16*t8 - 1.0000000000000004e+18*t4;
-    const double t10 = sin(q[2]);
-    const double t11 = sin(q[3]);
-    const double t12 = cos(q[3]);
-    const double t13 = cos(q[2]);
-    const double t14 = t10*t11 - t12*t13;
-    const double t15 = -p->ShftTilt;
-    const double t16 = sin(t15);
-    const double t17 = 1.852054794520553e+16*p->Twr2Shft + 1.0000000000000004e+18*t1 + 1.504385676134234e+16*t5;
-    const double t18 = cos(t15);
-    const double t19 = 1.0000000000000004e+18*t4 - 1.504385676134234e+16*t8;
-    const double t20 = 1.852054794520553e+16*p->OverHang - t16*t17 - t18*t19;
-    const double t21 = 1.504385676134234e+16*q[0]*t7*t13 + t10*t20;
-    const double t22 = t12*t21;
-    const double t23 = t11*t13 + t10*t12;
-    const double t24 = 1.504385676134234e+16*q[0]*t10*t7 - t13*t20;
-    const double t25 = t11*t24;
-    const double t26 = t22 + 1.852054794520553e+16*p->RotCMx*t23 - t25;
-    const double t27 = t11*t21;
-    const double t28 = t12*t24;
-    const double t29 = t27 + 1.852054794520553e+16*p->RotCMx*t14 + t28;
-    const double t30 = t18*t17 - t16*t19;
-    const double t31 = 1.9999999999999997e+17*t7 + 2983727322899657.0*q[1]*t3;
-    const double t32 = t4*t31 + 4178271708449384.0*p->NacCMyn*t4;
-    const double t33 = 4178271708449384.0*p->NacCMyn*t1 + t1*t31;
-    const double t34 = q[1]*t7;
-    const double t35 = 1.9999999999999997e+17*t3 + 4178271708449384.0*p->NacCMzn*t1 - 2983727322899657.0*t34 - 4178271708449384.0*p->NacCMxn*t4;
-    const double t36 = t16*t1 + t18*t4;
-    const double t37 = t10*t12*t36 + t11*t13*t36;
-    const double t38 = t12*t13*t36 - t10*t11*t36;
-    const double t39 = t18*t1*t31 - t16*t4*t31;
-    const double t40 = 1.9999999999999997e+17*t3 + 4178271708449384.0*p->Twr2Shft*t1 - 2983727322899657.0*t34 - 4178271708449384.0*p->OverHang*t36;
-    const double t41 = t10*t39 - t13*t40;
-    const double t42 = t12*t41;
-    const double t43 = t10*t40 + t13*t39;
-    const double t44 = t11*t43;
-    const double t45 = 4178271708449384.0*p->RotCMx*t38 + t42 + t44;
-    const double t46 = t16*t1*t31 + t18*t4*t31;
-    const double t47 = t11*t41;
-    const double t48 = t12*t43;
-    const double t49 = 4178271708449384.0*p->RotCMx*t37 + t47 - t48;
-    const double t50 = t18*t1 - t16*t4;
-    const double t51 = p->NacYIner - p->NacMass*(p->NacCMxn*p->NacCMxn + p->NacCMyn*p->NacCMyn);
-    const double t52 = 1.4918636614498284e+16*qd[1]*qd[1] + 1.504385676134234e+16*qd[0]*qd[0];
-    const double t53 = t3*t4*t52;
-    const double t54 = qd[1]*p->NacCMzn*t1 - qd[1]*p->NacCMxn*t4;
-    const double t55 = 298447979174956.0*qd[1]*p->NacCMyn*t1 + 264579256360079.0*qd[0]*p->NacCMxn;
-    const double t56 = 1e+34*p->Gravity*p->NacMass*t3*t4 - p->NacMass*(1e+16*t53 + 4.3644886174071337e+30*qd[1]*t4*t54 + 3.869194075221632e+30*qd[0]*qd[1]*p->NacCMyn*t1 - 1.2964383561643872e+16*qd[0]*t55);
-    const double t57 = t3*t16*t4 - t3*t18*t1;
-    const double t58 = t10*t7 + t13*t57;
-    const double t59 = t10*t57 - t7*t13;
-    const double t60 = t11*t58 + t12*t59;
-    const double t61 = qd[1]*t18*t4 + qd[1]*t16*t1;
-    const double t62 = 264579256360079.0*qd[0]*t13 - 298447979174956.0*t10*t61;
-    const double t63 = 264579256360079.0*qd[0]*t10 + 298447979174956.0*t13*t61;
-    const double t64 = t12*t62 - t11*t63;
-    const double t65 = qd[1]*t18*t1;
-    const double t66 = qd[1]*t16*t4;
-    const double t67 = 2.5e+16*qd[2] + 2.5e+16*qd[3] + 522283963556173.0*t66 - 522283963556173.0*t65;
-    const double t68 = t3*t1*t52;
-    const double t69 = 1e+16*t68 + 4.3644886174071337e+30*qd[1]*qd[1]*p->Twr2Shft*t1*t1 + 3.430106961906568e+30*qd[0]*qd[0]*p->Twr2Shft;
-    const double t70 = 625000000000000.0*t53 + 2.7278053858794586e+29*qd[1]*qd[1]*p->Twr2Shft*t4*t1;
-    const double t71 = t65 - t66;
-    const double t72 = t18*t69 - 16.0*t16*t70 - 4.3644886174071337e+30*p->OverHang*t61*t71;
-    const double t73 = t7*t52;
-    const double t74 = qd[0]*qd[1]*t16*t4 - qd[0]*qd[1]*t18*t1;
-    const double t75 = 9.67298518805408e+29*qd[0]*p->OverHang*t71 + 2500000000000000.0*t73 + 1.934597037610816e+30*qd[0]*qd[1]*p->Twr2Shft*t4 - 9.67298518805408e+29*p->OverHang*t74;
-    const double t76 = t13*t72 - 4.0*t10*t75;
-    const double t77 = 4.0*t13*t75 + t10*t72;
-    const double t78 = 1.3818550268648685e+29*t13*t74 - 2.5e+16*qd[2]*t62;
-    const double t79 = 1.3818550268648685e+29*t10*t74 - 2.5e+16*qd[2]*t63;
-    const double t80 = t12*t78 - 2.5e+16*qd[3]*t64 - t11*t79;
-    const double t81 = 1e+34*p->Gravity*p->RotMass*t60 - p->RotMass*(28.0*p->RotCMx*t64*t67 + 28.0*p->RotCMx*t80 - t11*t76 - t12*t77);
-    const double t82 = q[2]*p->GBRatio;
-    const double t83 = cos(t82);
-    const double t84 = 2.5e+16*qd[2]*p->GBRatio + 522283963556173.0*t66 - 522283963556173.0*t65;
-    const double t85 = sin(t82);
-    const double t86 = 298447979174956.0*t83*t61 + 264579256360079.0*qd[0]*t85;
-    const double t87 = 264579256360079.0*qd[0]*p->NacCMzn + 298447979174956.0*qd[1]*p->NacCMyn*t4;
-    const double t88 = p->NacMass*(4.3644886174071337e+30*qd[1]*t1*t54 + 1e+16*t68 + 1.2964383561643872e+16*qd[0]*t87 - 3.869194075221632e+30*qd[0]*qd[1]*p->NacCMyn*t4) - 1e+34*p->Gravity*p->NacMass*t3*t1;
-    const double t89 = t11*t62 + t12*t63;
-    const double t90 = t11*t78 + t12*t79 - 2.5e+16*qd[3]*t89;
-    const double t91 = t12*t58 - t11*t59;
-    const double t92 = 1e+34*p->Gravity*p->RotMass*t91 + p->RotMass*(t12*t76 + 28.0*p->RotCMx*t89*t67 + 28.0*p->RotCMx*t90 - t11*t77);
-    const double t93 = 28.0*p->RotIyy*t90 + p->RotCMx*t92 + 28.0*p->RotIzz*t89*t67 - 28.0*p->RotIxx*t89*t67;
-    const double t94 = qd[2]*qd[2]*p->GBRatio*p->GBRatio*p->VS_Rgn2K;
-    const double t95 = u[4] + t94;
-    const double t96 = t3*t16*t1 + t3*t18*t4;
-    const double t97 = 298447979174956.0*t85*t61 - 264579256360079.0*qd[0]*t83;
-    const double t98 = p->RotMass*(t16*t69 + 16.0*t18*t70 - 49.0*p->RotCMx*t89*t89 - 49.0*p->RotCMx*t64*t64 - 3.430106961906568e+30*qd[0]*qd[0]*p->OverHang - 4.3644886174071337e+30*p->OverHang*t61*t61) - 1e+34*p->Gravity*p->RotMass*t96;
-    const double t99 = 28.0*p->RotIzz*t80 + 28.0*p->RotIyy*t64*t67 - 28.0*p->RotIxx*t64*t67 - p->RotCMx*t81;
-    const double t100 = t16*t7*t1 + t18*t7*t4;
-    const double t101 = 2.5e+33*p->Gravity*p->NacMass*t7 - p->NacMass*(9.67298518805408e+29*qd[0]*qd[1]*p->NacCMzn*t4 + 3655987744893211.0*qd[1]*t1*t55 + 3655987744893211.0*qd[1]*t4*t87 + 2500000000000000.0*t73 + 9.67298518805408e+29*qd[0]*qd[1]*p->NacCMxn*t1);
-    const double t102 = qd[0]*qd[1]*t16*t1 + qd[0]*qd[1]*t18*t4;
-    const double t103 = p->RotIxx*t102;
-    const double t104 = p->RotIyy*t64*t89;
-    const double t105 = p->RotIzz*t64*t89;
-    M[0] = 1e-36*p->NacMass*(t6*t6 + 2.263176262557856e+32*q[0]*q[0]*t7*t7 + t9*t9) + 0.00034301069619065676*p->RotIyy*t14*t14 + 1e-36*p->RotMass*(t26*t26 + t29*t29 + t30*t30) + 0.00034301069619065676*p->RotIzz*t23*t23 + 53932.24598231164;
-    M[4] = 5e-36*p->NacMass*(t32*t6 + t9*t33 - 1.504385676134234e+16*q[0]*t7*t35) + 0.0003869194075221632*p->RotIyy*t37*t14 + 5e-36*p->RotMass*(t45*t26 + t30*t46 + t49*t29) + 0.0003869194075221632*p->RotIzz*t23*t38;
-    M[5] = 2.5e-35*p->NacMass*(t33*t33 + t32*t32 + t35*t35) + 0.0004364488617407134*p->RotIyy*t37*t37 + 0.0004364488617407134*p->RotIzz*t38*t38 + 0.0004364488617407134*p->GenIner*t50*t50 + 0.0004364488617407134*t4*t4*t51 + 2.5e-35*p->RotMass*(t46*t46 + t49*t49 + t45*t45) + 0.0004364488617407134*p->RotIxx*t50*t50 + 53716.59732601293;
-    M[8] = 0.0;
-    M[9] = -0.02089135854224692*p->GenIner*p->GBRatio*t50 - 0.02089135854224692*p->RotIxx*t50;
-    M[10] = p->RotIxx + p->GenIner*p->GBRatio*p->GBRatio;
-    M[12] = 0.0;
-    M[13] = -0.02089135854224692*p->RotIxx*t50;
-    M[14] = p->RotIxx;
-    M[15] = p->RotIxx;
-    qdd[0] = u[5] + 1.852054794520553e-36*p->NacCMzn*t56 + 5.185753424657548e-35*p->GenIner*t83*t84*t86 + 1.852054794520553e-36*t93*t14 + 1e-52*(t27 + t28)*t92 + 1066.6947342347535*q[0]*p->Gravity + 8.083272069499261e-06*qd[1]*qd[1]*t4*t1*t51 + 5.185753424657548e-35*p->GenIner*t85*t84*t97 + 1e-18*u[2]*t30 + 1e-52*t56*(1.0000000000000004e+18*t1 + 1.504385676134234e+16*t5) + 1e-52*t88*t19 + 1.852054794520553e-36*t99*t23 + 0.01852054794520553*p->GBRatio*t3*t95*t100 + 6.017542704536936e-36*q[0]*t7*t101 - 1910902.930730452*q[0] - 6420.569660348682*qd[0] - 1e-52*t81*(t22 - t25) - 1.852054794520553e-36*p->NacCMxn*t88 - 0.01852054794520553*p->GBRatio*t7*t95*t96 - 1e-52*t30*t98;
-    qdd[1] = u[6] + 8.083272069499261e-06*p->GenIner*t102*t50 + 1.023676568570099e-34*t50*(7.89631443922782e+28*t103 + t104 - t105) + 5e-52*(t47 - t48)*t92 + 5e-52*t4*t31*t56 + 2.089135854224692e-36*t99*t38 + 0.02089135854224692*t4*(p->GBRatio*t3*t1*t95*t96 + p->GBRatio*t7*t1*t95*t100 - p->GBRatio*t4*t50*t95) + 1044.8178448925578*q[1]*p->Gravity + 5e-18*u[2]*t46 + 2.089135854224692e-36*t37*t93 + 0.02089135854224692*p->GBRatio*t50*t95 + 5.849580391829138e-35*p->GenIner*t83*t36*t84*t97 - 1838549.327842203*q[1] - 6285.240294776687*qd[1] - 0.02089135854224692*t1*(p->GBRatio*t1*t50*t95 + p->GBRatio*t3*t4*t95*t96 + p->GBRatio*t7*t4*t95*t100) - 5e-52*(t42 + t44)*t81 - 2.089135854224692e-36*t1*(4.0*p->NacCMzn*t101 + 3.869194075221632e+30*qd[0]*qd[1]*t4*t51 + p->NacCMyn*t88) - 0.02089135854224692*u[3]*t50 - 5e-52*t1*t88*t31 - 5.849580391829138e-35*p->GenIner*t85*t36*t84*t86 - 5e-52*t98*t46 - 2e-51*t101*(1.9999999999999997e+17*t3 - 2983727322899657.0*t34) - 2.089135854224692e-36*t4*(3.869194075221632e+30*qd[0]*qd[1]*t1*t51 - 4.0*p->NacCMxn*t101 - p->NacCMyn*t56);
-    qdd[2] = u[3] + 4.9e-33*t105 - 0.0003869194075221632*p->GenIner*p->GBRatio*t102 - p->GBRatio*t95 - 0.0003869194075221632*t103 - 4.9e-33*t104;
-    qdd[3] = u[3] + 4.9e-33*t105 - q[3]*p->DTTorSpr - 0.0003869194075221632*t103 - qd[3]*p->DTTorDmp - 4.9e-33*t104;
-    nrel5mw_land_operating_ldlt_factor(M, 4);
-    nrel5mw_land_operating_ldlt_solve(M, 4, qdd, 1);
-    const double t106 = qd[2] + qd[3];
-    const double t107 = 1.504385676134234e+16*q[0]*qd[0] + 1.4918636614498284e+16*q[1]*qd[1];
-    const double t108 = t7*t107 + 2.089135854224692e+16*p->OverHang*t61 - 9.999999999999997e+17*qd[1]*t3 - 2.089135854224692e+16*qd[1]*p->Twr2Shft*t1;
-    const double t109 = t3*t107 + 9.999999999999997e+17*qd[1]*t7;
-    const double t110 = 1.0000000000000004e+18*qd[0]*t1 + t4*t109 + 1.852054794520553e+16*qd[0]*p->Twr2Shft;
-    const double t111 = 1.0000000000000004e+18*qd[0]*t4 - t1*t109;
-    const double t112 = t16*t110 + t18*t111 - 1.852054794520553e+16*qd[0]*p->OverHang;
-    const double t113 = t13*t108 - t10*t112;
-    const double t114 = t13*t112 + t10*t108;
-    const double t115 = t11*t113 + t12*t114;
-    const double t116 = t16*t111 - t18*t110;
-    const double t117 = t12*t113 - t11*t114;
-    const double t118 = t18*t7*t1 - t16*t7*t4;
-    const double t119 = t3*t13 - t10*t118;
-    const double t120 = t13*t118 + t10*t3;
+    const double t0 = qd[2] + qd[3];
+    const double t1 = -p->ShftTilt;
+    const double t2 = cos(t1);
+    const double t3 = 0.01852054794520553*q[0];
+    const double t4 = cos(t3);
+    const double t5 = sin(t1);
+    const double t6 = sin(t3);
+    const double t7 = t2*t4 - t5*t6;
+    const double t8 = sin(q[3]);
+    const double t9 = cos(q[2]);
+    const double t10 = -0.02089135854224692*q[1];
+    const double t11 = sin(t10);
+    const double t12 = 1.504385676134234e+16*q[0]*qd[0] + 1.4918636614498284e+16*q[1]*qd[1];
+    const double t13 = cos(t10);
+    const double t14 = t11*t12 + 2.089135854224692e+16*p->OverHang*(qd[1]*t2*t6 + qd[1]*t5*t4) - 9.999999999999997e+17*qd[1]*t13 - 2.089135854224692e+16*qd[1]*p->Twr2Shft*t4;
+    const double t15 = sin(q[2]);
+    const double t16 = t13*t12 + 9.999999999999997e+17*qd[1]*t11;
+    const double t17 = 1.0000000000000004e+18*qd[0]*t4 + t6*t16 + 1.852054794520553e+16*qd[0]*p->Twr2Shft;
+    const double t18 = 1.0000000000000004e+18*qd[0]*t6 - t4*t16;
+    const double t19 = t5*t17 + t2*t18 - 1.852054794520553e+16*qd[0]*p->OverHang;
+    const double t20 = t9*t14 - t15*t19;
+    const double t21 = cos(q[3]);
+    const double t22 = t9*t19 + t15*t14;
+    const double t23 = t8*t20 + t21*t22;
+    const double t24 = t5*t4 + t2*t6;
+    const double t25 = t5*t18 - t2*t17;
+    const double t26 = t21*t20 - t8*t22;
+    const double t27 = t13*t5*t6 - t13*t2*t4;
+    const double t28 = t15*t11 + t9*t27;
+    const double t29 = t15*t27 - t11*t9;
+    const double t30 = t13*t5*t4 + t13*t2*t6;
+    const double t31 = t5*t11*t4 + t2*t11*t6;
+    const double t32 = t2*t11*t4 - t5*t11*t6;
+    const double t33 = t13*t9 - t15*t32;
+    const double t34 = t9*t32 + t15*t13;
+    const double t35 = qd[2]*qd[2]*p->GBRatio*p->GBRatio*p->VS_Rgn2K;
     y[0] = q[0];
     y[1] = -q[1];
     y[2] = 57.29577951308232*(q[2] + q[3]);
-    y[3] = 9.549296585513721*t106;
+    y[3] = 9.549296585513721*t0;
     y[4] = 9.549296585513721*qd[2]*p->GBRatio;
     y[5] = q[3];
     y[6] = 1.0000000000000004*q[0];
@@ -3276,13 +3174,29 @@ void nrel5mw_land_operating_outputs(nrel5mw_land_operating_real t, const nrel5mw
     y[9] = -qd[1];
     y[10] = qd[2];
     y[11] = qd[3];
-    y[12] = t106;
-    y[13] = 1e-18*t50*(t115*t38 - t50*t116 - t37*t117) - 1e-18*(t60*t117 + t116*t96 - t115*t91)*t96 - 1e-18*t100*((t12*t119 - t11*t120)*t117 + t116*t100 + t115*(t11*t119 + t12*t120));
-    y[14] = 0.001*u[4] + 0.001*t94;
-    y[15] = 0.000944*qd[2]*p->GBRatio*t95;
+    y[12] = t0;
+    y[13] = 1e-18*t7*(t23*(t21*t9*t24 - t15*t8*t24) - t7*t25 - (t15*t21*t24 + t8*t9*t24)*t26) - 1e-18*((t8*t28 + t21*t29)*t26 + t25*t30 - t23*(t21*t28 - t8*t29))*t30 - 1e-18*t31*((t21*t33 - t8*t34)*t26 + t25*t31 + t23*(t8*t33 + t21*t34));
+    y[14] = 0.001*u[4] + 0.001*t35;
+    y[15] = 0.000944*qd[2]*p->GBRatio*(u[4] + t35);
     y[16] = 57.29577951308232*u[1];
     y[17] = qdd[0];
     y[18] = qdd[1];
+}
+
+// the model's outputs y(q, q', u, t)
+void nrel5mw_land_operating_outputs(nrel5mw_land_operating_real t, const nrel5mw_land_operating_real* q, const nrel5mw_land_operating_real* qd, const nrel5mw_land_operating_real* u, const nrel5mw_land_operating_params* p, nrel5mw_land_operating_real* y) {
+    double x[8];
+    double xdot[8];
+    x[0] = q[0];
+    x[1] = q[1];
+    x[2] = q[2];
+    x[3] = q[3];
+    x[4] = qd[0];
+    x[5] = qd[1];
+    x[6] = qd[2];
+    x[7] = qd[3];
+    nrel5mw_land_operating_rhs(t, x, u, p, xdot);
+    nrel5mw_land_operating_outputs_from_qdd(t, q, qd, xdot + 4, u, p, y);
 }
 
 // x' = [q', M^-1 F] for x = [q, q']

@@ -68,19 +68,20 @@
 //   y[18] "YawBrTAyp" "side-side [m/s^2]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      69 adds, 170 muls, 0 divs, 10 calls
-//   forcing          167 adds, 488 muls, 0 divs, 12 calls
-//   jacobians        618 adds, 1884 muls, 0 divs, 12 calls
-//   outputs          265 adds, 693 muls, 10 divs, 12 calls
-//   rhs              234 adds, 617 muls, 10 divs, 12 calls
-//   rhs_jacobian     953 adds, 2556 muls, 42 divs, 12 calls
-//   linear           864 adds, 2491 muls, 10 divs, 12 calls
-//   state_space      1044 adds, 2671 muls, 70 divs, 12 calls
-//   output_matrices  1163 adds, 2900 muls, 70 divs, 12 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         994 adds, 2509 muls, 41 divs, 48 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       69 adds, 170 muls, 0 divs, 10 calls
+//   forcing           167 adds, 488 muls, 0 divs, 12 calls
+//   jacobians         618 adds, 1884 muls, 0 divs, 12 calls
+//   outputs_from_qdd  44 adds, 118 muls, 0 divs, 10 calls
+//   outputs           278 adds, 735 muls, 10 divs, 22 calls
+//   rhs               234 adds, 617 muls, 10 divs, 12 calls
+//   rhs_jacobian      953 adds, 2556 muls, 42 divs, 12 calls
+//   linear            864 adds, 2491 muls, 10 divs, 12 calls
+//   state_space       1044 adds, 2671 muls, 70 divs, 12 calls
+//   output_matrices   1163 adds, 2900 muls, 70 divs, 12 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          994 adds, 2509 muls, 41 divs, 48 calls
 
 #ifndef nrel5mw_land_operating_YAMSC_GENERATED_H
 #define nrel5mw_land_operating_YAMSC_GENERATED_H
@@ -144,6 +145,8 @@ void nrel5mw_land_operating_mass_matrix_tu(nrel5mw_land_operating_real t, const 
 void nrel5mw_land_operating_forcing(nrel5mw_land_operating_real t, const nrel5mw_land_operating_real* q, const nrel5mw_land_operating_real* qd, const nrel5mw_land_operating_real* u, const nrel5mw_land_operating_params* p, nrel5mw_land_operating_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void nrel5mw_land_operating_jacobians(nrel5mw_land_operating_real t, const nrel5mw_land_operating_real* q, const nrel5mw_land_operating_real* qd, const nrel5mw_land_operating_real* u, const nrel5mw_land_operating_params* p, nrel5mw_land_operating_real* dF_dq, nrel5mw_land_operating_real* dF_dqd, nrel5mw_land_operating_real* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void nrel5mw_land_operating_outputs_from_qdd(nrel5mw_land_operating_real t, const nrel5mw_land_operating_real* q, const nrel5mw_land_operating_real* qd, const nrel5mw_land_operating_real* qdd, const nrel5mw_land_operating_real* u, const nrel5mw_land_operating_params* p, nrel5mw_land_operating_real* y);
 // the model's outputs y(q, q', u, t)
 void nrel5mw_land_operating_outputs(nrel5mw_land_operating_real t, const nrel5mw_land_operating_real* q, const nrel5mw_land_operating_real* qd, const nrel5mw_land_operating_real* u, const nrel5mw_land_operating_params* p, nrel5mw_land_operating_real* y);
 // x' = [q', M^-1 F] for x = [q, q']

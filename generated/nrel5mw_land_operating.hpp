@@ -67,17 +67,19 @@
 //   y[17] "YawBrTAxp" "fore-aft, downwind [m/s^2]"
 //   y[18] "YawBrTAyp" "side-side [m/s^2]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix      69 adds, 170 muls, 0 divs, 10 calls
-//   forcing          167 adds, 488 muls, 0 divs, 12 calls
-//   jacobians        618 adds, 1884 muls, 0 divs, 12 calls
-//   outputs          265 adds, 693 muls, 10 divs, 12 calls
-//   rhs              234 adds, 617 muls, 10 divs, 12 calls
-//   rhs_jacobian     953 adds, 2556 muls, 42 divs, 12 calls
-//   linear           864 adds, 2491 muls, 10 divs, 12 calls
-//   state_space      1044 adds, 2671 muls, 70 divs, 12 calls
-//   output_matrices  1163 adds, 2900 muls, 70 divs, 12 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+// Operations per call (the LDL^T solves and the functions called, such as
+// rhs in outputs, included):
+//   mass_matrix       69 adds, 170 muls, 0 divs, 10 calls
+//   forcing           167 adds, 488 muls, 0 divs, 12 calls
+//   jacobians         618 adds, 1884 muls, 0 divs, 12 calls
+//   outputs_from_qdd  44 adds, 118 muls, 0 divs, 10 calls
+//   outputs           278 adds, 735 muls, 10 divs, 22 calls
+//   rhs               234 adds, 617 muls, 10 divs, 12 calls
+//   rhs_jacobian      953 adds, 2556 muls, 42 divs, 12 calls
+//   linear            864 adds, 2491 muls, 10 divs, 12 calls
+//   state_space       1044 adds, 2671 muls, 70 divs, 12 calls
+//   output_matrices   1163 adds, 2900 muls, 70 divs, 12 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once
 
@@ -132,6 +134,8 @@ void mass_matrix(double t, const double* q, const double* u, const Params& p, do
 void forcing(double t, const double* q, const double* qd, const double* u, const Params& p, double* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y);
 // the model's outputs y(q, q', u, t)
 void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y);
 // x' = [q', M^-1 F] for x = [q, q']
@@ -164,6 +168,9 @@ struct Model {
     }
     static void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du) {
         ::nrel5mw_land_operating::jacobians(t, q, qd, u, p, dF_dq, dF_dqd, dF_du);
+    }
+    static void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y) {
+        ::nrel5mw_land_operating::outputs_from_qdd(t, q, qd, qdd, u, p, y);
     }
     static void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
         ::nrel5mw_land_operating::outputs(t, q, qd, u, p, y);

@@ -59,19 +59,20 @@
 //   y[14] "QD_DrTr" "[rad/s]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      120 adds, 317 muls, 0 divs, 12 calls
-//   forcing          234 adds, 618 muls, 0 divs, 14 calls
-//   jacobians        1192 adds, 3473 muls, 0 divs, 14 calls
-//   outputs          2 adds, 7 muls, 0 divs, 0 calls
-//   rhs              356 adds, 870 muls, 15 divs, 14 calls
-//   rhs_jacobian     1829 adds, 4692 muls, 65 divs, 14 calls
-//   linear           1643 adds, 4538 muls, 15 divs, 14 calls
-//   state_space      1963 adds, 4858 muls, 95 divs, 14 calls
-//   output_matrices  0 adds, 1 muls, 0 divs, 0 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         1496 adds, 3531 muls, 61 divs, 56 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       120 adds, 317 muls, 0 divs, 12 calls
+//   forcing           234 adds, 618 muls, 0 divs, 14 calls
+//   jacobians         1192 adds, 3473 muls, 0 divs, 14 calls
+//   outputs_from_qdd  2 adds, 7 muls, 0 divs, 0 calls
+//   outputs           2 adds, 7 muls, 0 divs, 0 calls
+//   rhs               356 adds, 870 muls, 15 divs, 14 calls
+//   rhs_jacobian      1829 adds, 4692 muls, 65 divs, 14 calls
+//   linear            1643 adds, 4538 muls, 15 divs, 14 calls
+//   state_space       1963 adds, 4858 muls, 95 divs, 14 calls
+//   output_matrices   0 adds, 1 muls, 0 divs, 0 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          1496 adds, 3531 muls, 61 divs, 56 calls
 
 #include "nrel5mw_land_template.h"
 
@@ -3835,9 +3836,10 @@ void nrel5mw_land_template_jacobians(nrel5mw_land_template_real t, const nrel5mw
     nrel5mw_land_template_jacobians_part3(t, q, qd, u, p, dF_dq, dF_dqd, dF_du, w);
 }
 
-// the model's outputs y(q, q', u, t)
-void nrel5mw_land_template_outputs(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* qd, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* y) {
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void nrel5mw_land_template_outputs_from_qdd(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* qd, const nrel5mw_land_template_real* qdd, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* y) {
     (void)t;
+    (void)qdd;
     (void)u;
     y[0] = q[0];
     y[1] = -q[1];
@@ -3854,6 +3856,17 @@ void nrel5mw_land_template_outputs(nrel5mw_land_template_real t, const nrel5mw_l
     y[12] = qd[2];
     y[13] = qd[3];
     y[14] = qd[4];
+}
+
+// the model's outputs y(q, q', u, t)
+void nrel5mw_land_template_outputs(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* qd, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* y) {
+    double qdd[5];
+    qdd[0] = 0.0;
+    qdd[1] = 0.0;
+    qdd[2] = 0.0;
+    qdd[3] = 0.0;
+    qdd[4] = 0.0;
+    nrel5mw_land_template_outputs_from_qdd(t, q, qd, qdd, u, p, y);
 }
 
 // x' = [q', M^-1 F] for x = [q, q']

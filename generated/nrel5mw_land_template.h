@@ -59,19 +59,20 @@
 //   y[14] "QD_DrTr" "[rad/s]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      120 adds, 317 muls, 0 divs, 12 calls
-//   forcing          234 adds, 618 muls, 0 divs, 14 calls
-//   jacobians        1192 adds, 3473 muls, 0 divs, 14 calls
-//   outputs          2 adds, 7 muls, 0 divs, 0 calls
-//   rhs              356 adds, 870 muls, 15 divs, 14 calls
-//   rhs_jacobian     1829 adds, 4692 muls, 65 divs, 14 calls
-//   linear           1643 adds, 4538 muls, 15 divs, 14 calls
-//   state_space      1963 adds, 4858 muls, 95 divs, 14 calls
-//   output_matrices  0 adds, 1 muls, 0 divs, 0 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         1496 adds, 3531 muls, 61 divs, 56 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       120 adds, 317 muls, 0 divs, 12 calls
+//   forcing           234 adds, 618 muls, 0 divs, 14 calls
+//   jacobians         1192 adds, 3473 muls, 0 divs, 14 calls
+//   outputs_from_qdd  2 adds, 7 muls, 0 divs, 0 calls
+//   outputs           2 adds, 7 muls, 0 divs, 0 calls
+//   rhs               356 adds, 870 muls, 15 divs, 14 calls
+//   rhs_jacobian      1829 adds, 4692 muls, 65 divs, 14 calls
+//   linear            1643 adds, 4538 muls, 15 divs, 14 calls
+//   state_space       1963 adds, 4858 muls, 95 divs, 14 calls
+//   output_matrices   0 adds, 1 muls, 0 divs, 0 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          1496 adds, 3531 muls, 61 divs, 56 calls
 
 #ifndef nrel5mw_land_template_YAMSC_GENERATED_H
 #define nrel5mw_land_template_YAMSC_GENERATED_H
@@ -130,6 +131,8 @@ void nrel5mw_land_template_mass_matrix_tu(nrel5mw_land_template_real t, const nr
 void nrel5mw_land_template_forcing(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* qd, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void nrel5mw_land_template_jacobians(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* qd, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* dF_dq, nrel5mw_land_template_real* dF_dqd, nrel5mw_land_template_real* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void nrel5mw_land_template_outputs_from_qdd(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* qd, const nrel5mw_land_template_real* qdd, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* y);
 // the model's outputs y(q, q', u, t)
 void nrel5mw_land_template_outputs(nrel5mw_land_template_real t, const nrel5mw_land_template_real* q, const nrel5mw_land_template_real* qd, const nrel5mw_land_template_real* u, const nrel5mw_land_template_params* p, nrel5mw_land_template_real* y);
 // x' = [q', M^-1 F] for x = [q, q']

@@ -58,17 +58,19 @@
 //   y[13] "QD_GeAz" "[rad/s]"
 //   y[14] "QD_DrTr" "[rad/s]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix      120 adds, 317 muls, 0 divs, 12 calls
-//   forcing          234 adds, 618 muls, 0 divs, 14 calls
-//   jacobians        1192 adds, 3473 muls, 0 divs, 14 calls
-//   outputs          2 adds, 7 muls, 0 divs, 0 calls
-//   rhs              356 adds, 870 muls, 15 divs, 14 calls
-//   rhs_jacobian     1829 adds, 4692 muls, 65 divs, 14 calls
-//   linear           1643 adds, 4538 muls, 15 divs, 14 calls
-//   state_space      1963 adds, 4858 muls, 95 divs, 14 calls
-//   output_matrices  0 adds, 1 muls, 0 divs, 0 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+// Operations per call (the LDL^T solves and the functions called, such as
+// rhs in outputs, included):
+//   mass_matrix       120 adds, 317 muls, 0 divs, 12 calls
+//   forcing           234 adds, 618 muls, 0 divs, 14 calls
+//   jacobians         1192 adds, 3473 muls, 0 divs, 14 calls
+//   outputs_from_qdd  2 adds, 7 muls, 0 divs, 0 calls
+//   outputs           2 adds, 7 muls, 0 divs, 0 calls
+//   rhs               356 adds, 870 muls, 15 divs, 14 calls
+//   rhs_jacobian      1829 adds, 4692 muls, 65 divs, 14 calls
+//   linear            1643 adds, 4538 muls, 15 divs, 14 calls
+//   state_space       1963 adds, 4858 muls, 95 divs, 14 calls
+//   output_matrices   0 adds, 1 muls, 0 divs, 0 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once
 
@@ -118,6 +120,8 @@ void mass_matrix(double t, const double* q, const double* u, const Params& p, do
 void forcing(double t, const double* q, const double* qd, const double* u, const Params& p, double* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y);
 // the model's outputs y(q, q', u, t)
 void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y);
 // x' = [q', M^-1 F] for x = [q, q']
@@ -150,6 +154,9 @@ struct Model {
     }
     static void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du) {
         ::nrel5mw_land_template::jacobians(t, q, qd, u, p, dF_dq, dF_dqd, dF_du);
+    }
+    static void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y) {
+        ::nrel5mw_land_template::outputs_from_qdd(t, q, qd, qdd, u, p, y);
     }
     static void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
         ::nrel5mw_land_template::outputs(t, q, qd, u, p, y);

@@ -40,19 +40,20 @@
 //   y[2] "RotSpeed_rpm" "rotor speed [rpm]"
 //
 // Operations per call, worst case: the code is straight-line (loops of fixed
-// length only), so every call does exactly these (the LDL^T solves of rhs and
-// rhs_jacobian and the four rhs calls of rk4_step included):
-//   mass_matrix      27 adds, 55 muls, 0 divs, 6 calls
-//   forcing          31 adds, 80 muls, 0 divs, 6 calls
-//   jacobians        53 adds, 177 muls, 0 divs, 6 calls
-//   outputs          1 adds, 3 muls, 0 divs, 1 calls
-//   rhs              64 adds, 144 muls, 6 divs, 6 calls
-//   rhs_jacobian     170 adds, 395 muls, 24 divs, 6 calls
-//   linear           134 adds, 360 muls, 6 divs, 6 calls
-//   state_space      182 adds, 408 muls, 30 divs, 6 calls
-//   output_matrices  0 adds, 1 muls, 0 divs, 1 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step         300 adds, 607 muls, 25 divs, 24 calls
+// length only), so every call does exactly these (the LDL^T solves and the
+// functions called included: rhs in outputs, four rhs in rk4_step):
+//   mass_matrix       27 adds, 55 muls, 0 divs, 6 calls
+//   forcing           31 adds, 80 muls, 0 divs, 6 calls
+//   jacobians         53 adds, 177 muls, 0 divs, 6 calls
+//   outputs_from_qdd  1 adds, 3 muls, 0 divs, 1 calls
+//   outputs           1 adds, 3 muls, 0 divs, 1 calls
+//   rhs               64 adds, 144 muls, 6 divs, 6 calls
+//   rhs_jacobian      170 adds, 395 muls, 24 divs, 6 calls
+//   linear            134 adds, 360 muls, 6 divs, 6 calls
+//   state_space       182 adds, 408 muls, 30 divs, 6 calls
+//   output_matrices   0 adds, 1 muls, 0 divs, 1 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
+//   rk4_step          300 adds, 607 muls, 25 divs, 24 calls
 
 #include "nrel5mw_spar_rigid.h"
 
@@ -275,14 +276,24 @@ void nrel5mw_spar_rigid_jacobians(nrel5mw_spar_rigid_real t, const nrel5mw_spar_
     dF_du[5] = 1.0;
 }
 
-// the model's outputs y(q, q', u, t)
-void nrel5mw_spar_rigid_outputs(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* q, const nrel5mw_spar_rigid_real* qd, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* y) {
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void nrel5mw_spar_rigid_outputs_from_qdd(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* q, const nrel5mw_spar_rigid_real* qd, const nrel5mw_spar_rigid_real* qdd, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* y) {
     (void)t;
+    (void)qdd;
     (void)u;
     const double t0 = sin(q[1]);
     y[0] = q[0] + p->L_T*t0;
     y[1] = 57.29577951308232*q[1];
     y[2] = 9.549296585513721*qd[2];
+}
+
+// the model's outputs y(q, q', u, t)
+void nrel5mw_spar_rigid_outputs(nrel5mw_spar_rigid_real t, const nrel5mw_spar_rigid_real* q, const nrel5mw_spar_rigid_real* qd, const nrel5mw_spar_rigid_real* u, const nrel5mw_spar_rigid_params* p, nrel5mw_spar_rigid_real* y) {
+    double qdd[3];
+    qdd[0] = 0.0;
+    qdd[1] = 0.0;
+    qdd[2] = 0.0;
+    nrel5mw_spar_rigid_outputs_from_qdd(t, q, qd, qdd, u, p, y);
 }
 
 // x' = [q', M^-1 F] for x = [q, q']

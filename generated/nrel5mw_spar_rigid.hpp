@@ -39,17 +39,19 @@
 //   y[1] "PtfmPitch_deg" "platform pitch [deg]"
 //   y[2] "RotSpeed_rpm" "rotor speed [rpm]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix      27 adds, 55 muls, 0 divs, 6 calls
-//   forcing          31 adds, 80 muls, 0 divs, 6 calls
-//   jacobians        53 adds, 177 muls, 0 divs, 6 calls
-//   outputs          1 adds, 3 muls, 0 divs, 1 calls
-//   rhs              64 adds, 144 muls, 6 divs, 6 calls
-//   rhs_jacobian     170 adds, 395 muls, 24 divs, 6 calls
-//   linear           134 adds, 360 muls, 6 divs, 6 calls
-//   state_space      182 adds, 408 muls, 30 divs, 6 calls
-//   output_matrices  0 adds, 1 muls, 0 divs, 1 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+// Operations per call (the LDL^T solves and the functions called, such as
+// rhs in outputs, included):
+//   mass_matrix       27 adds, 55 muls, 0 divs, 6 calls
+//   forcing           31 adds, 80 muls, 0 divs, 6 calls
+//   jacobians         53 adds, 177 muls, 0 divs, 6 calls
+//   outputs_from_qdd  1 adds, 3 muls, 0 divs, 1 calls
+//   outputs           1 adds, 3 muls, 0 divs, 1 calls
+//   rhs               64 adds, 144 muls, 6 divs, 6 calls
+//   rhs_jacobian      170 adds, 395 muls, 24 divs, 6 calls
+//   linear            134 adds, 360 muls, 6 divs, 6 calls
+//   state_space       182 adds, 408 muls, 30 divs, 6 calls
+//   output_matrices   0 adds, 1 muls, 0 divs, 1 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once
 
@@ -98,6 +100,8 @@ void mass_matrix(double t, const double* q, const double* u, const Params& p, do
 void forcing(double t, const double* q, const double* qd, const double* u, const Params& p, double* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y);
 // the model's outputs y(q, q', u, t)
 void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y);
 // x' = [q', M^-1 F] for x = [q, q']
@@ -130,6 +134,9 @@ struct Model {
     }
     static void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du) {
         ::nrel5mw_spar_rigid::jacobians(t, q, qd, u, p, dF_dq, dF_dqd, dF_du);
+    }
+    static void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y) {
+        ::nrel5mw_spar_rigid::outputs_from_qdd(t, q, qd, qdd, u, p, y);
     }
     static void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
         ::nrel5mw_spar_rigid::outputs(t, q, qd, u, p, y);

@@ -19,17 +19,19 @@
 //   y[0] "x_tip" "horizontal position of the bob [m]"
 //   y[1] "z_tip" "height of the bob [m]"
 //
-// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):
-//   mass_matrix      0 adds, 2 muls, 0 divs, 0 calls
-//   forcing          0 adds, 3 muls, 0 divs, 1 calls
-//   jacobians        0 adds, 3 muls, 0 divs, 1 calls
-//   outputs          0 adds, 2 muls, 0 divs, 2 calls
-//   rhs              0 adds, 5 muls, 1 divs, 1 calls
-//   rhs_jacobian     0 adds, 8 muls, 3 divs, 2 calls
-//   linear           0 adds, 5 muls, 0 divs, 1 calls
-//   state_space      0 adds, 5 muls, 2 divs, 1 calls
-//   output_matrices  0 adds, 2 muls, 0 divs, 2 calls
-//   operating_point  0 adds, 0 muls, 0 divs, 0 calls
+// Operations per call (the LDL^T solves and the functions called, such as
+// rhs in outputs, included):
+//   mass_matrix       0 adds, 2 muls, 0 divs, 0 calls
+//   forcing           0 adds, 3 muls, 0 divs, 1 calls
+//   jacobians         0 adds, 3 muls, 0 divs, 1 calls
+//   outputs_from_qdd  0 adds, 2 muls, 0 divs, 2 calls
+//   outputs           0 adds, 2 muls, 0 divs, 2 calls
+//   rhs               0 adds, 5 muls, 1 divs, 1 calls
+//   rhs_jacobian      0 adds, 8 muls, 3 divs, 2 calls
+//   linear            0 adds, 5 muls, 0 divs, 1 calls
+//   state_space       0 adds, 5 muls, 2 divs, 1 calls
+//   output_matrices   0 adds, 2 muls, 0 divs, 2 calls
+//   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once
 
@@ -62,6 +64,8 @@ void mass_matrix(double t, const double* q, const double* u, const Params& p, do
 void forcing(double t, const double* q, const double* qd, const double* u, const Params& p, double* F);
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
 void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du);
+// the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
+void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y);
 // the model's outputs y(q, q', u, t)
 void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y);
 // x' = [q', M^-1 F] for x = [q, q']
@@ -94,6 +98,9 @@ struct Model {
     }
     static void jacobians(double t, const double* q, const double* qd, const double* u, const Params& p, double* dF_dq, double* dF_dqd, double* dF_du) {
         ::pendulum::jacobians(t, q, qd, u, p, dF_dq, dF_dqd, dF_du);
+    }
+    static void outputs_from_qdd(double t, const double* q, const double* qd, const double* qdd, const double* u, const Params& p, double* y) {
+        ::pendulum::outputs_from_qdd(t, q, qd, qdd, u, p, y);
     }
     static void outputs(double t, const double* q, const double* qd, const double* u, const Params& p, double* y) {
         ::pendulum::outputs(t, q, qd, u, p, y);

@@ -117,7 +117,10 @@ simulate_with_controller(const runtime::ModelView& v, const runtime::SimulationO
     const std::size_t last = grid.size() - 1;
     for (std::size_t k = 0;; ++k) {
         const double t = grid[k];
-        // measurements at t, with the actuators' inputs in force: the outputs of row k
+        // measurements at t, with the actuators' inputs in force: the outputs of row k.
+        // `outputs` solves for their q'' itself: the step's first rhs at t takes
+        // the inputs of the controller's new demand (through the actuators),
+        // whose q'' is another (outputs_from_qdd cannot reuse it).
         base(t, u.data());
         u[static_cast<std::size_t>(pitch)] = applied.pitch;
         u[static_cast<std::size_t>(torque)] = applied.gen_torque;

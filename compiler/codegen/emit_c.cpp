@@ -13,6 +13,7 @@
 #include "diag/errors.hpp"
 
 #include <fmt/format.h>
+#include <optional>
 
 namespace yamsc::codegen {
 namespace {
@@ -204,23 +205,33 @@ Definitions internal_definitions(const Module& module, const CNames& names, int 
 
 Definitions definitions(const Module& module, const CNames& names,
                         const std::vector<FunctionPlan>& plans, int max_statements,
-                        const CalleeCosts& callee_costs) {
+                        CalleeCosts callee_costs) {
     const Syntax syntax = syntax_of(names);
-    Definitions d;
-    d.text = params_functions(module.model, names);
-    for (const FunctionPlan& plan : plans) {
-        d.text += "\n// " + plan.routine->summary + "\n" + signature(names, plan) + " {\n";
+    // Printed callees first, so that a call (outputs calls rhs) is priced;
+    // written in the plans' order.
+    std::vector<std::string> texts(plans.size()), helpers(plans.size());
+    std::vector<std::optional<FunctionCost>> costs(plans.size());
+    for (std::size_t i : callees_first(plans)) {
+        const FunctionPlan& plan = plans[i];
         if (plan.forwards_to_short) {
             for (const Argument* a : plan.parameters)
-                if (a->name == "t" || a->name == "u") d.text += "    (void)" + a->name + ";\n";
-            d.text += fmt::format("    {}_mass_matrix(q, p, M);\n", names.prefix);
+                if (a->name == "t" || a->name == "u") texts[i] += "    (void)" + a->name + ";\n";
+            texts[i] += fmt::format("    {}_mass_matrix(q, p, M);\n", names.prefix);
         } else {
             BodyText body = printed_body(plan, module.model, syntax, max_statements, callee_costs);
-            d.text += body.text;
-            d.helpers += body.helpers;
-            d.costs.push_back({plan.routine->name, body.count});
+            texts[i] = std::move(body.text);
+            helpers[i] = std::move(body.helpers);
+            costs[i] = FunctionCost{plan.routine->name, body.count};
+            callee_costs[plan.routine->name] = body.count;
         }
-        d.text += "}\n";
+    }
+    Definitions d;
+    d.text = params_functions(module.model, names);
+    for (std::size_t i = 0; i < plans.size(); ++i) {
+        d.text += "\n// " + plans[i].routine->summary + "\n" + signature(names, plans[i]) + " {\n" +
+                  texts[i] + "}\n";
+        d.helpers += helpers[i];
+        if (costs[i]) d.costs.push_back(*costs[i]);
     }
     // rk4_step last: it calls rhs, and its cost is four of rhs's.
     OperationCount rhs;

@@ -10,6 +10,7 @@
 #include "diag/diagnostics.hpp"
 
 #include <fmt/format.h>
+#include <optional>
 
 namespace yamsc::codegen {
 namespace {
@@ -172,26 +173,37 @@ Definitions internal_definitions(const Module& module, int max_statements, Calle
 }
 
 Definitions definitions(const Module& module, const std::vector<FunctionPlan>& plans,
-                        int max_statements, const CalleeCosts& callee_costs) {
+                        int max_statements, CalleeCosts callee_costs) {
     const Syntax syntax = cpp_syntax();
-    Definitions d;
-    d.text = params_functions(module.model);
-    for (const FunctionPlan& plan : plans) {
-        d.text += "\n// " + plan.routine->summary + "\n" + signature(plan) + " {\n";
+    // Printed callees first, so that a call (outputs calls rhs) is priced;
+    // written in the plans' order.
+    std::vector<std::string> texts(plans.size()), helpers(plans.size());
+    std::vector<std::optional<FunctionCost>> costs(plans.size());
+    for (std::size_t i : callees_first(plans)) {
+        const FunctionPlan& plan = plans[i];
+        std::string& text = texts[i];
         if (!module.externals.empty() && wrapped_routine(plan.routine->name)) {
-            d.text += external_wrapper_body(module, plan.routine->name);
+            text = external_wrapper_body(module, plan.routine->name);
         } else if (plan.forwards_to_short) {
             for (const Argument* a : plan.parameters)
-                if (a->name == "t" || a->name == "u") d.text += "    (void)" + a->name + ";\n";
-            d.text += "    mass_matrix(q, p, M);\n";
+                if (a->name == "t" || a->name == "u") text += "    (void)" + a->name + ";\n";
+            text += "    mass_matrix(q, p, M);\n";
         } else {
             BodyText body = body_text(*plan.routine, module.model, syntax, parameter_names(plan),
                                       max_statements, callee_costs);
-            d.text += body.text;
-            d.helpers += body.helpers;
-            d.costs.push_back({plan.routine->name, body.count});
+            text = std::move(body.text);
+            helpers[i] = std::move(body.helpers);
+            costs[i] = FunctionCost{plan.routine->name, body.count};
+            callee_costs[plan.routine->name] = body.count;
         }
-        d.text += "}\n";
+    }
+    Definitions d;
+    d.text = params_functions(module.model);
+    for (std::size_t i = 0; i < plans.size(); ++i) {
+        d.text += "\n// " + plans[i].routine->summary + "\n" + signature(plans[i]) + " {\n" +
+                  texts[i] + "}\n";
+        d.helpers += helpers[i];
+        if (costs[i]) d.costs.push_back(*costs[i]);
     }
     return d;
 }

@@ -174,19 +174,27 @@ const char* const derivative_text = R"CODE(
 } // namespace
 
 bool wrapped_routine(const std::string& name) {
-    static const std::set<std::string> names{"forcing",     "jacobians",      "outputs",
-                                             "rhs",         "rhs_jacobian",   "linear",
-                                             "state_space", "output_matrices"};
+    static const std::set<std::string> names{"forcing", "jacobians",   "outputs_from_qdd",
+                                             "outputs", "rhs",         "rhs_jacobian",
+                                             "linear",  "state_space", "output_matrices"};
     return names.count(name) > 0;
 }
 
 Module with_inner_routines(const Module& module) {
     Module inner = module;
+    std::set<std::string> renamed;
     for (Routine& r : inner.routines)
         if (!r.internal && wrapped_routine(r.name)) {
+            renamed.insert(r.name);
             r.name = "inner_" + r.name;
             r.internal = true;
         }
+    // An inner routine calls inner ones (inner_outputs calls inner_rhs): u is
+    // already [u, w] there.
+    for (Routine& r : inner.routines)
+        for (Step& s : r.steps)
+            if (s.kind == StepKind::call && renamed.count(s.call.callee))
+                s.call.callee = "inner_" + s.call.callee;
     return inner;
 }
 
@@ -278,7 +286,10 @@ std::string external_wrapper_body(const Module& module, const std::string& name)
     std::string body;
     const char* const inputs = "    double u_all[@SUW@], a[@SA@];\n";
     const char* const derivatives = "    double dw_dq[@SWQ@], dw_dqd[@SWQ@], dw_du[@SWU@];\n";
-    if (name == "forcing" || name == "outputs") {
+    if (name == "outputs_from_qdd") {
+        body = std::string(inputs) + "    external_inputs(t, q, qd, u, p, u_all, a);\n" +
+               "    inner_outputs_from_qdd(t, q, qd, qdd, u_all, p, y);\n";
+    } else if (name == "forcing" || name == "outputs") {
         body = std::string(inputs) + "    external_inputs(t, q, qd, u, p, u_all, a);\n" +
                "    inner_" + name + "(t, q, qd, u_all, p, " + (name == "forcing" ? "F" : "y") +
                ");\n";

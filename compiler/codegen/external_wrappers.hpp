@@ -1,9 +1,10 @@
 #pragma once
 // External functions in generated C++ (docs/generated-api.md): the user's C
 // functions are called by wrappers around the module's routines. Each public
-// routine that reads u (forcing, jacobians, outputs, rhs, rhs_jacobian and the
-// linear model's) becomes the internal `inner_<name>`, which reads the declared
-// inputs followed by the externals' results w; its wrapper evaluates the
+// routine that reads u (forcing, jacobians, outputs_from_qdd, outputs, rhs,
+// rhs_jacobian and the linear model's) becomes the internal `inner_<name>`,
+// which reads the declared inputs followed by the externals' results w (and
+// calls inner routines: inner_outputs calls inner_rhs); its wrapper evaluates the
 // arguments a, calls the functions for w (checking that every result is
 // finite), calls the inner routine and adds the chain rule
 // dF/dw * dw/da * da/d[x, u] to the derivatives. dw/da is the user's

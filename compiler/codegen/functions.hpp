@@ -23,4 +23,11 @@ std::vector<FunctionPlan> internal_function_plans(const Module& module);
 
 std::vector<std::string> parameter_names(const FunctionPlan& plan);
 
+/// Indices into `plans`, every routine after the routines of `plans` its steps
+/// call (outputs calls rhs), in the plans' order otherwise: the order in which
+/// a callee's cost is known before its callers', and the order of definition
+/// where nothing is declared ahead (file-local routines). Throws
+/// diag::InternalError when routines call each other in a cycle.
+std::vector<std::size_t> callees_first(const std::vector<FunctionPlan>& plans);
+
 } // namespace yamsc::codegen

@@ -65,10 +65,11 @@ std::string header_comment(const Module& module, const EmitOptions& options,
     list(out, "Outputs, ny", "y", m.outputs);
     if (is_c)
         out += "//\n// Operations per call, worst case: the code is straight-line (loops of fixed\n"
-               "// length only), so every call does exactly these (the LDL^T solves of rhs and\n"
-               "// rhs_jacobian and the four rhs calls of rk4_step included):\n";
+               "// length only), so every call does exactly these (the LDL^T solves and the\n"
+               "// functions called included: rhs in outputs, four rhs in rk4_step):\n";
     else
-        out += "//\n// Operations per call (the LDL^T solves of rhs and rhs_jacobian included):\n";
+        out += "//\n// Operations per call (the LDL^T solves and the functions called, such as\n"
+               "// rhs in outputs, included):\n";
     std::size_t width = 0;
     for (const FunctionCost& c : costs) width = std::max(width, c.name.size());
     for (const FunctionCost& c : costs)

@@ -210,8 +210,9 @@ struct Module {
     const Routine& routine(std::string_view name) const;
 };
 
-/// Lowers the System `s` to a module: mass_matrix, forcing, jacobians, outputs, rhs,
-/// rhs_jacobian and the linear model's linear, state_space and output_matrices
+/// Lowers the System `s` to a module: mass_matrix, forcing, jacobians,
+/// outputs_from_qdd, outputs (codegen/output_routines.hpp), rhs, rhs_jacobian
+/// and the linear model's linear, state_space and output_matrices
 /// (codegen/linear_routines.hpp; add_operating_point adds operating_point).
 /// The passes must have run: passes::derive_jacobians and output_jacobians
 /// (or derive_tangent), and parameter_derivatives for options.sensitivity_params.

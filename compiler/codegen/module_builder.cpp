@@ -3,6 +3,7 @@
 // differences), so they all share the same value numbers.
 #include "codegen/linear_routines.hpp"
 #include "codegen/module.hpp"
+#include "codegen/output_routines.hpp"
 #include "codegen/routine_builder.hpp"
 #include "codegen/sensitivity_routines.hpp"
 #include "codegen/symbol_binding.hpp"
@@ -113,24 +114,6 @@ Routine jacobians_routine(const Graph& g, const ImportedEquations& in, int nq, i
         for (int j = 0; j < nq; ++j) b.assign("dF_dqd", i * nq + j, in.dF_dqd[i][j]);
     for (int i = 0; i < nq; ++i)
         for (int j = 0; j < nu; ++j) b.assign("dF_du", i * nu + j, in.dF_du[i][j]);
-    return std::move(b).finish(options);
-}
-
-/// Outputs that read q'' (reaction loads) first solve M q'' = F into a local.
-Routine outputs_routine(const Graph& g, const ImportedEquations& in, int nq, bool accelerations,
-                        const Options& options) {
-    SymbolSource source;
-    if (accelerations) source.qdd = "qdd";
-    RoutineBuilder b(g, api_signature("outputs"), bind(source));
-    if (accelerations && nq > 0) {
-        b.local("M", nq * nq);
-        b.local("qdd", nq);
-        assign_lower_triangle(b, "M", in.M);
-        for (int i = 0; i < nq; ++i) b.assign("qdd", i, in.F[static_cast<std::size_t>(i)]);
-        b.factor("M", nq);
-        b.solve("M", nq, "qdd", 0, 1);
-    }
-    for (std::size_t i = 0; i < in.y.size(); ++i) b.assign("y", static_cast<int>(i), in.y[i]);
     return std::move(b).finish(options);
 }
 
@@ -277,7 +260,7 @@ Module build_module(const ir::System& s, const Options& options) {
     m.routines.push_back(mass_matrix_routine(graph, in, nq, options));
     m.routines.push_back(forcing_routine(graph, in, nq, options));
     m.routines.push_back(jacobians_routine(graph, in, nq, s.nu(), options));
-    m.routines.push_back(outputs_routine(graph, in, nq, s.outputs_read_accelerations(), options));
+    add_output_routines(graph, in.y, nq, s.outputs_read_accelerations(), options, m.routines);
     m.routines.push_back(rhs_routine(graph, in, rates, nq, options));
     m.routines.push_back(rhs_jacobian_routine(graph, in, nq, options));
     const LinearSources sources{in.M, in.F, in.dF_dq, in.dF_dqd, in.dF_du, in.dMa_dq};

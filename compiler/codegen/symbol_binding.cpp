@@ -116,6 +116,15 @@ RoutineBuilder::Signature api_signature(std::string_view name) {
                 q_form_arguments({out("dF_dq"), out("dF_dqd"), out("dF_du")})};
     if (name == "outputs")
         return {"outputs", "the model's outputs y(q, q', u, t)", q_form_arguments({out("y")})};
+    if (name == "outputs_from_qdd")
+        return {"outputs_from_qdd",
+                "the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of "
+                "rhs",
+                {argument("t", ArgumentKind::scalar), argument("q", ArgumentKind::input_array),
+                 argument("qd", ArgumentKind::input_array),
+                 argument("qdd", ArgumentKind::input_array),
+                 argument("u", ArgumentKind::input_array), argument("p", ArgumentKind::params),
+                 out("y")}};
     if (name == "rhs")
         return {"rhs", "x' = [q', M^-1 F] for x = [q, q']", x_form_arguments("xdot")};
     if (name == "rhs_jacobian")

@@ -44,7 +44,7 @@ RoutineBuilder::Binding bind(SymbolSource source);
 std::vector<Argument> point_arguments(std::vector<Argument> outputs);
 
 /// The name, summary and arguments of a function of the generated API
-/// (mass_matrix, forcing, jacobians, outputs, rhs, rhs_jacobian, linear,
+/// (mass_matrix, forcing, jacobians, outputs_from_qdd, outputs, rhs, rhs_jacobian, linear,
 /// state_space, output_matrices), in one place for both forms (unrolled and
 /// tangent) so that they cannot drift apart. Throws diag::InternalError for
 /// another name.

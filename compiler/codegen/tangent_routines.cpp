@@ -1,5 +1,6 @@
 #include "codegen/tangent_routines.hpp"
 
+#include "codegen/output_routines.hpp"
 #include "codegen/routine_builder.hpp"
 #include "codegen/symbol_binding.hpp"
 #include "diag/diagnostics.hpp"
@@ -46,7 +47,8 @@ public:
         m_.routines.push_back(mass_matrix());
         m_.routines.push_back(forcing());
         m_.routines.push_back(jacobians());
-        m_.routines.push_back(outputs());
+        // The tangent form's outputs never read q'' (passes/tangent.cpp).
+        add_output_routines(graph_, in_.y, nq_, false, m_.options, m_.routines);
         m_.routines.push_back(rhs());
         m_.routines.push_back(rhs_jacobian());
         if (!m_.options.linear_model || nq_ == 0) return;
@@ -269,12 +271,6 @@ private:
         sweep_tangent(b, 0, nq_, false, "dF_dq", 0, nq_, 1.0);
         sweep_tangent(b, nq_, nq_, false, "dF_dqd", 0, nq_, 1.0);
         sweep_tangent(b, nx(), nu_, false, "dF_du", 0, nu_, 1.0);
-        return std::move(b).finish(m_.options);
-    }
-
-    Routine outputs() {
-        RoutineBuilder b = api("outputs", SymbolSource{});
-        for (int i = 0; i < ny_; ++i) b.assign("y", i, in_.y[static_cast<std::size_t>(i)]);
         return std::move(b).finish(m_.options);
     }
 

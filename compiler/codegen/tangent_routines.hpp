@@ -10,7 +10,7 @@
 
 namespace yamsc::codegen {
 
-/// mass_matrix, forcing, jacobians, outputs, rhs, rhs_jacobian and (with
+/// mass_matrix, forcing, jacobians, outputs_from_qdd, outputs, rhs, rhs_jacobian and (with
 /// options.linear_model) linear, state_space and output_matrices, plus the
 /// internal routines they call. `module.model` and `module.options` must be
 /// set. Throws diag::InternalError when the equations are not in tangent form.

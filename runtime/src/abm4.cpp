@@ -2,6 +2,7 @@
 
 #include "fixed_step.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -18,19 +19,22 @@ Abm4Integrator::Abm4Integrator(OdeFunction f, std::size_t n)
     for (auto& h : hist_) h.assign(n, 0.0);
 }
 
-void Abm4Integrator::step(double t, double dt, double* x) {
+void Abm4Integrator::step(double t, double dt, double* x, const double* f_start) {
     if (filled_ > 0 && std::abs(dt - dt_) > same_step * std::abs(dt_)) filled_ = 0;
     if (filled_ == 0) dt_ = dt;
     if (filled_ < 3) {
         // The start: RK4, whose first stage is f(t_n, x_n), kept for the history.
-        rk4_step(f_, t, dt, x, rk4_);
+        rk4_step(f_, t, dt, x, rk4_, f_start);
         newest_ = (newest_ + 1) % 4;
         hist_[newest_] = rk4_.k1;
         ++filled_;
         return;
     }
     newest_ = (newest_ + 1) % 4;
-    f_(t, x, hist_[newest_].data());
+    if (f_start)
+        std::copy(f_start, f_start + n_, hist_[newest_].begin());
+    else
+        f_(t, x, hist_[newest_].data());
     if (filled_ < 4) ++filled_;
     const double* f0 = past(0);
     const double* f1 = past(1);
@@ -45,15 +49,23 @@ void Abm4Integrator::step(double t, double dt, double* x) {
         x[i] += h24 * (9.0 * f_predicted_[i] + 19.0 * f0[i] - 5.0 * f1[i] + f2[i]);
 }
 
+std::size_t detail::simulate_abm4_observing(const ModelView& view, const std::vector<double>& x0,
+                                            const InputFunction& u, double t_end, double dt,
+                                            const DerivativeObserver& observe, double t_start) {
+    return simulate_fixed_step(
+        "ABM4", view, x0, u, t_end, dt, observe, t_start, [](const OdeFunction& f, std::size_t n) {
+            return [integrator = Abm4Integrator(f, n)](double t, double h, double* x,
+                                                       const double* f_start) mutable {
+                integrator.step(t, h, x, f_start);
+            };
+        });
+}
+
 std::size_t simulate_abm4(const ModelView& view, const std::vector<double>& x0,
                           const InputFunction& u, double t_end, double dt,
                           const StateObserver& observe, double t_start) {
-    return detail::simulate_fixed_step(
-        "ABM4", view, x0, u, t_end, dt, observe, t_start, [](const OdeFunction& f, std::size_t n) {
-            return [integrator = Abm4Integrator(f, n)](double t, double h, double* x) mutable {
-                integrator.step(t, h, x);
-            };
-        });
+    return detail::simulate_abm4_observing(view, x0, u, t_end, dt,
+                                           detail::ignoring_derivative(observe), t_start);
 }
 
 } // namespace yamsc::runtime

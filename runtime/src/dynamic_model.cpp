@@ -29,6 +29,9 @@ struct SharedModel::Library {
     yamsc_rhs_bound_fn rhs_bound = nullptr;
     yamsc_rhs_jacobian_bound_fn rhs_jacobian_bound = nullptr;
     yamsc_outputs_bound_fn outputs_bound = nullptr;
+    // Optional: the outputs given the q'' of rhs (abi_export.hpp).
+    yamsc_outputs_from_qdd_fn outputs_from_qdd = nullptr;
+    yamsc_outputs_from_qdd_bound_fn outputs_from_qdd_bound = nullptr;
 
     Library() = default;
     Library(const Library&) = delete;
@@ -107,6 +110,10 @@ SharedModel::SharedModel(const std::string& path) : path_(path) {
             optional_routine<yamsc_rhs_jacobian_bound_fn>(h, "yamsc_rhs_jacobian_bound");
         library->outputs_bound = optional_routine<yamsc_outputs_bound_fn>(h, "yamsc_outputs_bound");
     }
+    if (library->outputs)
+        if (const auto routines = optional_routine<yamsc_outputs_from_qdd_routines_fn>(
+                h, "yamsc_outputs_from_qdd_routines"))
+            routines(&library->outputs_from_qdd, &library->outputs_from_qdd_bound);
     if (!library->rhs)
         throw SharedModelError("'" + path + "' is not a yamsc model: symbol yamsc_rhs is missing");
 
@@ -211,6 +218,17 @@ ModelView SharedModel::view(std::vector<double> params) const {
     else if (lib->outputs)
         v.outputs = [lib, p](double t, const double* q, const double* qd, const double* u,
                              double* y) { lib->outputs(t, q, qd, u, p->data(), y); };
+    // Left empty without it: the simulations then call outputs.
+    if (bound && lib->outputs_from_qdd_bound)
+        v.outputs_from_qdd = [lib, bound](double t, const double* q, const double* qd,
+                                          const double* qdd, const double* u, double* y) {
+            lib->outputs_from_qdd_bound(t, q, qd, qdd, u, bound->data(), y);
+        };
+    else if (lib->outputs_from_qdd)
+        v.outputs_from_qdd = [lib, p](double t, const double* q, const double* qd,
+                                      const double* qdd, const double* u, double* y) {
+            lib->outputs_from_qdd(t, q, qd, qdd, u, p->data(), y);
+        };
     return v;
 }
 

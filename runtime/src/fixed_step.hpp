@@ -7,6 +7,7 @@
 #include "yamsc/rk4.hpp"
 
 #include <cmath>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -27,11 +28,54 @@ inline bool all_finite(const std::vector<double>& x) {
     throw std::runtime_error(msg.str());
 }
 
-/// make(f, n) returns the stepper: a callable step(t, dt, x) advancing x in place.
+/// f(t, x) at the point the observer sees, computed only if the observer asks
+/// for it, and then handed to the next step, whose first stage is that same
+/// call (RK4's k1, ABM4's newest derivative): a row's outputs can use its q''
+/// (ModelView::outputs_from_qdd) without another right-hand side.
+class PointDerivative {
+public:
+    PointDerivative(const OdeFunction& f, std::size_t n) : f_(f), value_(n) {}
+
+    /// The point (x is read when the derivative is asked for, not copied).
+    void move_to(double t, const double* x) {
+        t_ = t;
+        x_ = x;
+        known_ = false;
+    }
+    /// x' = f(t, x), evaluated on the first call at this point.
+    const double* operator()() {
+        if (!known_) {
+            f_(t_, x_, value_.data());
+            known_ = true;
+        }
+        return value_.data();
+    }
+    /// x' if it has been evaluated at this point, else null.
+    const double* known() const { return known_ ? value_.data() : nullptr; }
+
+private:
+    const OdeFunction& f_;
+    std::vector<double> value_;
+    double t_ = 0.0;
+    const double* x_ = nullptr;
+    bool known_ = false;
+};
+
+/// An observer that may ask for x' at the point it receives.
+using DerivativeObserver =
+    std::function<bool(double t, const double* x, PointDerivative& derivative)>;
+
+inline DerivativeObserver ignoring_derivative(const StateObserver& observe) {
+    if (!observe) return {};
+    return [&observe](double t, const double* x, PointDerivative&) { return observe(t, x); };
+}
+
+/// make(f, n) returns the stepper: a callable step(t, dt, x, f_start) advancing
+/// x in place, f_start = f(t, x) when known, else null.
 template <class MakeStepper>
 std::size_t simulate_fixed_step(const char* method, const ModelView& view,
                                 const std::vector<double>& x0, const InputFunction& u, double t_end,
-                                double dt, const StateObserver& observe, double t_start,
+                                double dt, const DerivativeObserver& observe, double t_start,
                                 MakeStepper make) {
     check_initial_state(view, x0);
     if (!view.rhs) throw std::invalid_argument("the model view has no right-hand side");
@@ -46,14 +90,26 @@ std::size_t simulate_fixed_step(const char* method, const ModelView& view,
 
     std::vector<double> x = x0;
     auto stepper = make(f, x.size());
-    if (observe && !observe(grid[0], x.data())) return 0;
+    PointDerivative derivative(f, x.size());
+    derivative.move_to(grid[0], x.data());
+    if (observe && !observe(grid[0], x.data(), derivative)) return 0;
     for (std::size_t k = 1; k < grid.size(); ++k) {
         const double t = grid[k - 1];
-        stepper(t, grid[k] - t, x.data());
+        stepper(t, grid[k] - t, x.data(), derivative.known());
         if (!all_finite(x)) throw_diverged(method, grid[k], dt);
-        if (observe && !observe(grid[k], x.data())) return k;
+        derivative.move_to(grid[k], x.data());
+        if (observe && !observe(grid[k], x.data(), derivative)) return k;
     }
     return grid.size() - 1;
 }
+
+/// simulate_rk4 and simulate_abm4 with an observer that may ask for x'
+/// (simulate() stores the outputs with it).
+std::size_t simulate_rk4_observing(const ModelView& view, const std::vector<double>& x0,
+                                   const InputFunction& u, double t_end, double dt,
+                                   const DerivativeObserver& observe, double t_start);
+std::size_t simulate_abm4_observing(const ModelView& view, const std::vector<double>& x0,
+                                    const InputFunction& u, double t_end, double dt,
+                                    const DerivativeObserver& observe, double t_start);
 
 } // namespace yamsc::runtime::detail

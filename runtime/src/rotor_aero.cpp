@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -34,11 +35,28 @@ struct Closed {
         return rotor_loads(*aero, v_rel, y[aero->speed_output], pitch(u));
     }
 
-    std::vector<double> outputs(double t, const double* q, const double* qd,
-                                const double* u) const {
+    /// The base outputs at (q, q', u) as far as the loads read them (rotor
+    /// speed, hub velocity). Those are kinematic: outputs_from_qdd with
+    /// q'' = NaN gives them without outputs' solve of M q'' = F, with the
+    /// same numbers; a NaN in them would mean they read q'': then outputs.
+    std::vector<double> load_outputs(double t, const double* q, const double* qd,
+                                     const double* u) const {
         std::vector<double> y(static_cast<std::size_t>(base->ny));
+        if (base->outputs_from_qdd) {
+            const std::vector<double> unknown(static_cast<std::size_t>(base->nq),
+                                              std::numeric_limits<double>::quiet_NaN());
+            base->outputs_from_qdd(t, q, qd, unknown.data(), u, y.data());
+            if (!std::isnan(y[aero->speed_output]) && !std::isnan(y[aero->hub_velocity_output]))
+                return y;
+        }
         base->outputs(t, q, qd, u, y.data());
         return y;
+    }
+
+    /// The block's outputs after the base's ny.
+    void append_loads(const RotorLoads& l, double* y) const {
+        const double extra[] = {l.thrust, l.torque, l.power, l.tsr, l.v_rel, l.cp, l.ct};
+        for (int i = 0; i < 7; ++i) y[base->ny + i] = extra[i];
     }
 
     std::vector<double> effective_inputs(const RotorLoads& l, const double* u) const {
@@ -63,8 +81,8 @@ struct Closed {
             std::vector<double> xp = x, xm = x;
             xp[j] += h;
             xm[j] -= h;
-            const auto yp = outputs(t, xp.data(), xp.data() + nq, u);
-            const auto ym = outputs(t, xm.data(), xm.data() + nq, u);
+            const auto yp = load_outputs(t, xp.data(), xp.data() + nq, u);
+            const auto ym = load_outputs(t, xm.data(), xm.data() + nq, u);
             const double d_speed = (yp[aero->speed_output] - ym[aero->speed_output]) / (2 * h);
             const double d_hub =
                 (yp[aero->hub_velocity_output] - ym[aero->hub_velocity_output]) / (2 * h);
@@ -154,7 +172,7 @@ ModelView with_rotor_aero(const ModelView& base_view, const RotorAero& aero_spec
 
     if (base->rhs)
         v.rhs = [c, nq](double t, const double* x, const double* u, double* xdot) {
-            const RotorLoads l = c.loads(c.outputs(t, x, x + nq, u).data(), u);
+            const RotorLoads l = c.loads(c.load_outputs(t, x, x + nq, u).data(), u);
             c.base->rhs(t, x, c.effective_inputs(l, u).data(), xdot);
         };
     if (base->mass_matrix)
@@ -164,22 +182,29 @@ ModelView with_rotor_aero(const ModelView& base_view, const RotorAero& aero_spec
         };
     if (base->forcing)
         v.forcing = [c](double t, const double* q, const double* qd, const double* u, double* F) {
-            const RotorLoads l = c.loads(c.outputs(t, q, qd, u).data(), u);
+            const RotorLoads l = c.loads(c.load_outputs(t, q, qd, u).data(), u);
             c.base->forcing(t, q, qd, c.effective_inputs(l, u).data(), F);
         };
     v.outputs = [c](double t, const double* q, const double* qd, const double* u, double* y) {
         // The loads from the kinematic outputs (rotor speed, hub velocity), then
         // every output again with the loads applied: those that read q'' or a
         // reaction load see the rotor's thrust and torque too.
-        const RotorLoads l = c.loads(c.outputs(t, q, qd, u).data(), u);
+        const RotorLoads l = c.loads(c.load_outputs(t, q, qd, u).data(), u);
         c.base->outputs(t, q, qd, c.effective_inputs(l, u).data(), y);
-        const double extra[] = {l.thrust, l.torque, l.power, l.tsr, l.v_rel, l.cp, l.ct};
-        for (int i = 0; i < 7; ++i) y[c.base->ny + i] = extra[i];
+        c.append_loads(l, y);
     };
+    // rhs's q'' is the base's at the effective inputs, as outputs uses them.
+    if (base->outputs_from_qdd)
+        v.outputs_from_qdd = [c](double t, const double* q, const double* qd, const double* qdd,
+                                 const double* u, double* y) {
+            const RotorLoads l = c.loads(c.load_outputs(t, q, qd, u).data(), u);
+            c.base->outputs_from_qdd(t, q, qd, qdd, c.effective_inputs(l, u).data(), y);
+            c.append_loads(l, y);
+        };
     if (base->jacobians)
         v.jacobians = [c, nq](double t, const double* q, const double* qd, const double* u,
                               double* dF_dq, double* dF_dqd, double* dF_du) {
-            const RotorLoads l = c.loads(c.outputs(t, q, qd, u).data(), u);
+            const RotorLoads l = c.loads(c.load_outputs(t, q, qd, u).data(), u);
             const std::vector<double> ue = c.effective_inputs(l, u);
             c.base->jacobians(t, q, qd, ue.data(), dF_dq, dF_dqd, dF_du);
             std::vector<double> dT_dx, dQ_dx, dT_du, dQ_du;
@@ -201,7 +226,7 @@ ModelView with_rotor_aero(const ModelView& base_view, const RotorAero& aero_spec
         };
     if (base->rhs_jacobian && base->mass_matrix && base->jacobians)
         v.rhs_jacobian = [c, nq](double t, const double* x, const double* u, double* J) {
-            const RotorLoads l = c.loads(c.outputs(t, x, x + nq, u).data(), u);
+            const RotorLoads l = c.loads(c.load_outputs(t, x, x + nq, u).data(), u);
             const std::vector<double> ue = c.effective_inputs(l, u);
             c.base->rhs_jacobian(t, x, ue.data(), J);
             const int nu = c.base->nu, n = 2 * nq;

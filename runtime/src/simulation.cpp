@@ -4,6 +4,8 @@
 #include "yamsc/cvode.hpp"
 #include "yamsc/rk4.hpp"
 
+#include "fixed_step.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -106,32 +108,48 @@ SimulationResult simulate(const ModelView& view, const SimulationOptions& option
     std::vector<double> y(static_cast<std::size_t>(view.ny));
     ProgressReporter reporter(progress, options.t_start, options.t_end);
     std::size_t step = 0; // of the grid, counted by the observer
-    const StateObserver record = [&](double t, const double* x) {
-        // Rows every `stride` steps and the last one: the outputs (as costly as
-        // a right-hand side) only where they are stored.
+    // Rows every `stride` steps and the last one: the outputs only where they
+    // are stored. `derivative` gives x' at the point (the fixed-step
+    // integrators', which their next step reuses; null for CVODE): with its q''
+    // a row costs outputs_from_qdd, not outputs' own rhs, for the same numbers.
+    const auto record = [&](double t, const double* x, detail::PointDerivative* derivative) {
         const bool store = step++ % stride == 0 || step == grid.size();
         if (!store) return result.completed = reporter.report(t);
         result.time.push_back(t);
         result.states.insert(result.states.end(), x, x + result.nx);
         if (view.ny > 0) {
+            // x' first: it evaluates the inputs at t itself, as the next step would.
+            const double* xdot = derivative && view.outputs_from_qdd ? (*derivative)() : nullptr;
             if (view.nu > 0) inputs(t, u.data());
-            view.outputs(t, x, x + nq, u.data(), y.data());
+            if (xdot)
+                view.outputs_from_qdd(t, x, x + nq, xdot + nq, u.data(), y.data());
+            else
+                view.outputs(t, x, x + nq, u.data(), y.data());
             result.outputs.insert(result.outputs.end(), y.begin(), y.end());
         }
         result.completed = reporter.report(t);
         return result.completed;
     };
+    const detail::DerivativeObserver fixed_step_record = [&](double t, const double* x,
+                                                             detail::PointDerivative& derivative) {
+        return record(t, x, &derivative);
+    };
 
     if (options.method == Method::rk4) {
-        simulate_rk4(view, options.x0, inputs, options.t_end, options.dt, record, options.t_start);
+        detail::simulate_rk4_observing(view, options.x0, inputs, options.t_end, options.dt,
+                                       fixed_step_record, options.t_start);
     } else if (options.method == Method::abm4) {
-        simulate_abm4(view, options.x0, inputs, options.t_end, options.dt, record, options.t_start);
+        detail::simulate_abm4_observing(view, options.x0, inputs, options.t_end, options.dt,
+                                        fixed_step_record, options.t_start);
     } else {
         CvodeOptions cvode;
         cvode.rtol = options.rtol;
         cvode.atol = options.atol;
-        simulate_cvode(view, options.x0, inputs, options.t_end, options.dt, record, cvode,
-                       options.t_start);
+        // CVODE's output points are interpolated: it has no rhs there.
+        simulate_cvode(
+            view, options.x0, inputs, options.t_end, options.dt,
+            [&](double t, const double* x) { return record(t, x, nullptr); }, cvode,
+            options.t_start);
     }
     return result;
 }

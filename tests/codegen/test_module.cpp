@@ -58,11 +58,15 @@ TEST_CASE("the module has its routines with their steps") {
     const Module m = build_module(eq);
     std::vector<std::string> names;
     for (const Routine& r : m.routines) names.push_back(r.name);
-    // The six nonlinear routines come first, in this order.
-    REQUIRE(names.size() >= 6);
-    CHECK(std::vector<std::string>(names.begin(), names.begin() + 6) ==
-          std::vector<std::string>{"mass_matrix", "forcing", "jacobians", "outputs", "rhs",
-                                   "rhs_jacobian"});
+    // The seven nonlinear routines come first, in this order.
+    REQUIRE(names.size() >= 7);
+    CHECK(std::vector<std::string>(names.begin(), names.begin() + 7) ==
+          std::vector<std::string>{"mass_matrix", "forcing", "jacobians", "outputs_from_qdd",
+                                   "outputs", "rhs", "rhs_jacobian"});
+    // The outputs read no q'': outputs calls outputs_from_qdd with q'' = 0.
+    CHECK(step_kinds(m.routine("outputs")) ==
+          std::vector<StepKind>{StepKind::evaluate, StepKind::call});
+    CHECK(m.routine("outputs").steps.back().call.callee == "outputs_from_qdd");
     CHECK(step_kinds(m.routine("rhs")) ==
           std::vector<StepKind>{StepKind::evaluate, StepKind::factor, StepKind::solve});
     CHECK(step_kinds(m.routine("rhs_jacobian")) ==
@@ -199,7 +203,7 @@ TEST_CASE("the header comment documents the model and the cost of each function"
     CHECK(text.find("\"g\" = 9.807 \"parameter g\"") != std::string::npos);
     CHECK(text.find("u[0] \"tau\" \"joint torque [N m]\"") != std::string::npos);
     // F = tau - m g l sin(theta) - c theta': 2 adds, 4 muls, 1 call.
-    CHECK(text.find("//   forcing          2 adds, 4 muls, 0 divs, 1 calls\n") !=
+    CHECK(text.find("//   forcing           2 adds, 4 muls, 0 divs, 1 calls\n") !=
           std::string::npos);
 }
 

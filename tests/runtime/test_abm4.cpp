@@ -90,6 +90,29 @@ TEST_CASE("one ABM4 step on a cubic is exact, as the formulas are") {
     CHECK(x == doctest::Approx(std::pow(0.8, 4)).epsilon(1e-13));
 }
 
+TEST_CASE("ABM4 steps with f(t, x) given skip that call and are the same steps") {
+    int calls = 0;
+    const OdeFunction f = [&](double t, const double* x, double* xdot) {
+        ++calls;
+        xdot[0] = x[1];
+        xdot[1] = -std::sin(x[0]) + 0.3 * std::cos(t);
+    };
+    Abm4Integrator plain(f, 2), given(f, 2);
+    double a[2] = {0.4, -0.2}, b[2] = {0.4, -0.2}, f0[2];
+    for (int k = 0; k < 6; ++k) { // 3 RK4 steps, then ABM4
+        const double t = 0.05 * k;
+        calls = 0;
+        plain.step(t, 0.05, a);
+        const int without = calls;
+        f(t, b, f0);
+        calls = 0;
+        given.step(t, 0.05, b, f0);
+        CHECK(calls == without - 1);
+        CHECK(b[0] == a[0]); // bit for bit
+        CHECK(b[1] == a[1]);
+    }
+}
+
 TEST_CASE("ABM4 restarts with RK4 when the step changes, and reports divergence") {
     const OdeFunction f = [](double, const double* x, double* xdot) { xdot[0] = -x[0]; };
     Abm4Integrator abm4(f, 1);

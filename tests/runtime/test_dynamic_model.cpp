@@ -205,3 +205,34 @@ TEST_CASE("views bind their parameters once, each its own (the ABI's bound routi
     soft.outputs(0.0, x, x + 1, &u, y);
     CHECK(y[0] == 50.0 * 0.1);
 }
+
+TEST_CASE("outputs_from_qdd crosses the ABI when the model has it, and is empty otherwise") {
+    // The hand-written oscillator has no outputs_from_qdd: its library still
+    // builds, and its views (loaded or linked) leave it empty.
+    const SharedModel plain(oscillator_library().string());
+    CHECK_FALSE(plain.view(plain.default_params()).outputs_from_qdd);
+    CHECK_FALSE(from_generated<test_oscillator::Model>({}).outputs_from_qdd);
+    // A model that has one: its own outputs with y[1] = the q'' given.
+    const fs::path lib = compile_shared(
+        "with_qdd",
+        "#include \"runtime/oscillator_model.hpp\"\n"
+        "namespace with_qdd {\n"
+        "struct Model : test_oscillator::Model {\n"
+        "    static void outputs_from_qdd(double t, const double* q, const double* qd,\n"
+        "                                 const double* qdd, const double* u,\n"
+        "                                 const Params& p, double* y) {\n"
+        "        outputs(t, q, qd, u, p, y);\n"
+        "        y[1] = qdd[0] * p.k;\n"
+        "    }\n"
+        "};\n"
+        "} // namespace with_qdd\n" +
+            abi_export_text() + "\nYAMSC_EXPORT_MODEL(with_qdd)\n");
+    const SharedModel model(lib.string());
+    const ModelView view = model.view({2.0, 0.4, 80.0});
+    REQUIRE(view.outputs_from_qdd);
+    const double q = 0.2, qd = -1.0, qdd = 3.0, u = 1.0;
+    double y[2];
+    view.outputs_from_qdd(0.0, &q, &qd, &qdd, &u, y);
+    CHECK(y[0] == doctest::Approx(80.0 * q));
+    CHECK(y[1] == 240.0);
+}

@@ -56,6 +56,25 @@ TEST_CASE("rk4_step evaluates f at the stage times") {
     CHECK(x[0] == doctest::Approx((std::pow(1.5, 4) - 1.0) / 4.0).epsilon(1e-15));
 }
 
+TEST_CASE("rk4_step with f(t, x) given calls f three times and takes the same step") {
+    int calls = 0;
+    const OdeFunction f = [&](double t, const double* x, double* xdot) {
+        ++calls;
+        xdot[0] = x[1];
+        xdot[1] = -std::sin(x[0]) + 0.3 * std::cos(t);
+    };
+    Rk4Workspace work(2);
+    double plain[2] = {0.4, -0.2}, given[2] = {0.4, -0.2}, f0[2];
+    rk4_step(f, 0.7, 0.05, plain, work);
+    CHECK(calls == 4);
+    f(0.7, given, f0);
+    calls = 0;
+    rk4_step(f, 0.7, 0.05, given, work, f0);
+    CHECK(calls == 3);
+    CHECK(given[0] == plain[0]); // bit for bit
+    CHECK(given[1] == plain[1]);
+}
+
 TEST_CASE("RK4 converges with order 4 on the damped oscillator") {
     const test_oscillator::Params p; // m = 2, c = 0.4, k = 50: 5 rad/s, zeta = 0.02
     const InputFunction force = constant_input({1.0});

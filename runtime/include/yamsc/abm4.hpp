@@ -23,8 +23,9 @@ public:
     /// are RK4 steps: multistep formulas need an equally spaced history. From
     /// the fourth step on: the AB4 predictor from f at the last four points,
     /// f at the predicted point, the AM4 corrector (PECE, as ElastoDyn's
-    /// ED_ABM4); f at the corrected point starts the next step.
-    void step(double t, double dt, double* x);
+    /// ED_ABM4); f at the corrected point starts the next step. f_start, when
+    /// given, is f(t, x) already evaluated: the step does not call f for it.
+    void step(double t, double dt, double* x, const double* f_start = nullptr);
 
     /// How many past derivatives the next step can use (0-4); 3 or more: an ABM4 step.
     std::size_t history() const { return filled_; }

@@ -6,6 +6,7 @@
 // fly into a shared library (load_shared_model in dynamic_model.hpp).
 #include <functional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace yamsc::runtime {
@@ -30,9 +31,25 @@ struct ModelView {
         jacobians;
     std::function<void(double t, const double* q, const double* qd, const double* u, double* y)>
         outputs;
+    // The outputs given q'' = the q'' part of rhs(t, [q, q'], u): then equal
+    // to outputs(t, q, q', u) to the last bit, without outputs' own solve of
+    // M q'' = F. The fixed-step simulations use it where the integrator has
+    // evaluated rhs at the stored point anyway. Optional (empty: they call
+    // outputs); a view whose rhs is replaced must replace or clear it.
+    std::function<void(double t, const double* q, const double* qd, const double* qdd,
+                       const double* u, double* y)>
+        outputs_from_qdd;
 
     int nx() const { return 2 * nq; }
 };
+
+namespace detail {
+// Whether a generated Model has outputs_from_qdd (older or hand-written ones may not).
+template <class Model, class = void> struct has_outputs_from_qdd : std::false_type {};
+template <class Model>
+struct has_outputs_from_qdd<Model, std::void_t<decltype(&Model::outputs_from_qdd)>>
+    : std::true_type {};
+} // namespace detail
 
 /// A view of a generated C++ model. `Model` is the `<namespace>::Model` bundle the
 /// C++ emitter writes; the parameters are copied into the view.
@@ -62,6 +79,10 @@ template <class Model> ModelView from_generated(const typename Model::Params& pa
     v.outputs = [p](double t, const double* q, const double* qd, const double* u, double* y) {
         Model::outputs(t, q, qd, u, p, y);
     };
+    if constexpr (detail::has_outputs_from_qdd<Model>::value)
+        v.outputs_from_qdd = [p](double t, const double* q, const double* qd, const double* qdd,
+                                 const double* u,
+                                 double* y) { Model::outputs_from_qdd(t, q, qd, qdd, u, p, y); };
     return v;
 }
 

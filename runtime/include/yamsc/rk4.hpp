@@ -22,8 +22,10 @@ public:
     std::vector<double> k1, k2, k3, k4, stage;
 };
 
-/// Advances x (work.size() values) from t to t + dt in place.
-void rk4_step(const OdeFunction& f, double t, double dt, double* x, Rk4Workspace& work);
+/// Advances x (work.size() values) from t to t + dt in place. f_start, when
+/// given, is f(t, x) already evaluated (the step then calls f three times).
+void rk4_step(const OdeFunction& f, double t, double dt, double* x, Rk4Workspace& work,
+              const double* f_start = nullptr);
 /// Convenience form that allocates its own workspace.
 void rk4_step(const OdeFunction& f, double t, double dt, std::vector<double>& x);
 

@@ -53,7 +53,9 @@ RotorAero bind_rotor_aero(const ModelView& view, PerformanceTable table, double 
 /// followed by aero_thrust [N], aero_torque_out [N m], aero_power [W], aero_tsr,
 /// aero_v_rel [m/s], aero_cp, aero_ct. Jacobians: the base's plus the loads'
 /// chain rule (table partials exact; the two outputs' derivatives in the
-/// states by central differences of the base's outputs).
+/// states by central differences of the base's outputs). The two outputs are
+/// read through the base's outputs_from_qdd when it has one (they do not read
+/// q'': no solve of M q'' = F); the view has outputs_from_qdd when the base has.
 ModelView with_rotor_aero(const ModelView& base, const RotorAero& aero);
 
 } // namespace yamsc::runtime
