@@ -7,7 +7,7 @@
 //
 // Straight-line code skips the structural zeros and has no loop overhead: for
 // the 16-DOF NREL 5-MW turbine (blade i does not couple with blade j), factor
-// and solve take about 0.3 us instead of 0.8 us (docs/benchmarks.md).
+// and solve take 0.28 us instead of 0.74 us (docs/benchmarks.md).
 #include "ir/graph.hpp"
 
 #include <vector>
