@@ -33,10 +33,10 @@
 //   jacobians         26 adds, 85 muls, 0 divs, 4 calls
 //   outputs_from_qdd  7 adds, 15 muls, 0 divs, 4 calls
 //   outputs           7 adds, 15 muls, 0 divs, 4 calls
-//   rhs               22 adds, 52 muls, 3 divs, 4 calls
-//   rhs_jacobian      54 adds, 137 muls, 11 divs, 4 calls
-//   linear            48 adds, 134 muls, 3 divs, 4 calls
-//   state_space       60 adds, 146 muls, 15 divs, 4 calls
+//   rhs               22 adds, 54 muls, 2 divs, 4 calls
+//   rhs_jacobian      54 adds, 147 muls, 2 divs, 4 calls
+//   linear            48 adds, 136 muls, 2 divs, 4 calls
+//   state_space       60 adds, 160 muls, 2 divs, 4 calls
 //   output_matrices   12 adds, 22 muls, 0 divs, 4 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
@@ -47,37 +47,34 @@
 namespace double_pendulum {
 namespace {
 
-// In-place LDL^T factorisation of the symmetric positive definite n x n matrix A
-// (row-major; only the lower triangle is read): on return the strict lower
-// triangle holds L (unit diagonal) and the diagonal holds D. No pivoting and no
-// square roots: a mass matrix is positive definite.
-void ldlt_factor(double* A, int n) {
-    for (int j = 0; j < n; ++j) {
-        double d = A[j * n + j];
-        for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k] * A[k * n + k];
-        A[j * n + j] = d;
-        for (int i = j + 1; i < n; ++i) {
-            double s = A[i * n + j];
-            for (int k = 0; k < j; ++k) s -= A[i * n + k] * A[j * n + k] * A[k * n + k];
-            A[i * n + j] = s / d;
-        }
-    }
+// A = L D L^T in place for this model's 2 x 2 mass matrix (row-major, lower
+// triangle read), rows and columns eliminated in the order q0 q1 (minimum
+// degree). M has no structural zeros below the diagonal. On return L (unit
+// diagonal) of the permuted matrix is where M's lower triangle was and the
+// diagonal holds 1/D.
+void mass_ldlt_factor(double* A) {
+    const double d0 = A[0];
+    const double r0 = 1.0 / d0;
+    A[0] = r0;
+    const double w1_0 = A[2];
+    const double l1_0 = w1_0 * r0;
+    A[2] = l1_0;
+    const double d1 = A[3] - l1_0 * w1_0;
+    const double r1 = 1.0 / d1;
+    A[3] = r1;
 }
 
-// Solves (L D L^T) X = B in place for the n x m row-major block B.
-void ldlt_solve(const double* LD, int n, double* B, int m) {
+// Solves (L D L^T) X = B in place for the 2 x m row-major block B, with LD
+// from mass_ldlt_factor.
+void mass_ldlt_solve(const double* LD, double* B, int m) {
     for (int c = 0; c < m; ++c) {
-        for (int i = 0; i < n; ++i) {
-            double s = B[i * m + c];
-            for (int k = 0; k < i; ++k) s -= LD[i * n + k] * B[k * m + c];
-            B[i * m + c] = s;
-        }
-        for (int i = 0; i < n; ++i) B[i * m + c] /= LD[i * n + i];
-        for (int i = n - 1; i >= 0; --i) {
-            double s = B[i * m + c];
-            for (int k = i + 1; k < n; ++k) s -= LD[k * n + i] * B[k * m + c];
-            B[i * m + c] = s;
-        }
+        double* b = B + c;
+        const double y0 = b[0];
+        const double y1 = b[m] - LD[2] * y0;
+        const double x1 = y1 * LD[3];
+        const double x0 = y0 * LD[0] - LD[2] * x1;
+        b[0] = x0;
+        b[m] = x1;
     }
 }
 
@@ -217,8 +214,8 @@ void rhs(double t, const double* x, const double* u, const Params& p, double* xd
     M[3] = p.m2*p.L2*p.L2;
     xdot[2] = u[0] + t6 + u[1]*p.L1*t0*t5 - p.L1*t2*(p.m2*p.g*t5 - p.m2*(x[2]*x[2]*p.L1*t0 + p.L2*t7*t7)) - p.m1*p.L1*p.g*t3 - p.L1*t0*t9 - t10 - u[1]*p.L1*t2*t8;
     xdot[3] = t6 - x[1]*p.k - x[3]*p.c - t10;
-    ldlt_factor(M, 2);
-    ldlt_solve(M, 2, xdot + 2, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, xdot + 2, 1);
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
@@ -252,8 +249,8 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     M[3] = p.m2*p.L2*p.L2;
     qdd[0] = u[0] + t6 + u[1]*p.L1*t0*t5 - p.L1*t2*t9 - p.m1*p.L1*p.g*t3 - p.L1*t0*t11 - t12 - u[1]*p.L1*t2*t10;
     qdd[1] = t6 - x[1]*p.k - x[3]*p.c - t12;
-    ldlt_factor(M, 2);
-    ldlt_solve(M, 2, qdd, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, qdd, 1);
     const double t13 = p.m2*p.L2*p.g*t5;
     const double t14 = u[1]*p.L2*t10;
     const double t15 = p.m2*p.L1*p.L2*qdd[0]*t2;
@@ -269,7 +266,7 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     J[13] = t15 + t18 + t14 - p.k;
     J[14] = -2.0*x[2]*p.m2*p.L1*p.L2*t2;
     J[15] = -p.c;
-    ldlt_solve(M, 2, J + 8, 4);
+    mass_ldlt_solve(M, J + 8, 4);
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
@@ -301,8 +298,8 @@ void linear(const double* q0, const double* qd0, const double* u0, const Params&
     M[3] = t5;
     qdd0[0] = u0[0] + t9 + u0[1]*p.L1*t0*t8 - p.L1*t2*t12 - p.m1*p.L1*p.g*t6 - p.L1*t0*t14 - t15 - u0[1]*p.L1*t2*t13;
     qdd0[1] = t9 - q0[1]*p.k - qd0[1]*p.c - t15;
-    ldlt_factor(M, 2);
-    ldlt_solve(M, 2, qdd0, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, qdd0, 1);
     const double t16 = p.m2*p.L2*p.g*t8;
     const double t17 = u0[1]*p.L2*t13;
     const double t18 = p.m2*p.L1*p.L2*qdd0[0]*t2;
@@ -359,8 +356,8 @@ void state_space(const double* q0, const double* qd0, const double* u0, const Pa
     M[3] = p.m2*p.L2*p.L2;
     qdd0[0] = u0[0] + t6 + u0[1]*p.L1*t0*t5 - p.L1*t2*t9 - p.m1*p.L1*p.g*t3 - p.L1*t0*t11 - t12 - u0[1]*p.L1*t2*t10;
     qdd0[1] = t6 - q0[1]*p.k - qd0[1]*p.c - t12;
-    ldlt_factor(M, 2);
-    ldlt_solve(M, 2, qdd0, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, qdd0, 1);
     const double t13 = p.m2*p.L2*p.g*t5;
     const double t14 = u0[1]*p.L2*t10;
     const double t15 = p.m2*p.L1*p.L2*qdd0[0]*t2;
@@ -381,8 +378,8 @@ void state_space(const double* q0, const double* qd0, const double* u0, const Pa
     B[5] = t20 + p.L1*t0*t5 - p.L1*t2*t10;
     B[6] = 0.0;
     B[7] = t20;
-    ldlt_solve(M, 2, A + 8, 4);
-    ldlt_solve(M, 2, B + 4, 2);
+    mass_ldlt_solve(M, A + 8, 4);
+    mass_ldlt_solve(M, B + 4, 2);
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu

@@ -34,13 +34,13 @@
 //   jacobians         26 adds, 85 muls, 0 divs, 4 calls
 //   outputs_from_qdd  7 adds, 15 muls, 0 divs, 4 calls
 //   outputs           7 adds, 15 muls, 0 divs, 4 calls
-//   rhs               22 adds, 52 muls, 3 divs, 4 calls
-//   rhs_jacobian      54 adds, 137 muls, 11 divs, 4 calls
-//   linear            48 adds, 134 muls, 3 divs, 4 calls
-//   state_space       60 adds, 146 muls, 15 divs, 4 calls
+//   rhs               22 adds, 54 muls, 2 divs, 4 calls
+//   rhs_jacobian      54 adds, 147 muls, 2 divs, 4 calls
+//   linear            48 adds, 136 muls, 2 divs, 4 calls
+//   state_space       60 adds, 160 muls, 2 divs, 4 calls
 //   output_matrices   12 adds, 22 muls, 0 divs, 4 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          118 adds, 229 muls, 13 divs, 16 calls
+//   rk4_step          118 adds, 237 muls, 9 divs, 16 calls
 
 #ifndef double_pendulum_YAMSC_GENERATED_H
 #define double_pendulum_YAMSC_GENERATED_H

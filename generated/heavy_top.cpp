@@ -30,10 +30,10 @@
 //   jacobians         73 adds, 234 muls, 0 divs, 4 calls
 //   outputs_from_qdd  0 adds, 1 muls, 0 divs, 1 calls
 //   outputs           0 adds, 1 muls, 0 divs, 1 calls
-//   rhs               35 adds, 101 muls, 6 divs, 4 calls
-//   rhs_jacobian      147 adds, 386 muls, 24 divs, 4 calls
-//   linear            111 adds, 350 muls, 6 divs, 4 calls
-//   state_space       147 adds, 386 muls, 24 divs, 4 calls
+//   rhs               28 adds, 94 muls, 3 divs, 4 calls
+//   rhs_jacobian      116 adds, 373 muls, 3 divs, 4 calls
+//   linear            104 adds, 343 muls, 3 divs, 4 calls
+//   state_space       116 adds, 373 muls, 3 divs, 4 calls
 //   output_matrices   0 adds, 1 muls, 0 divs, 1 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
@@ -44,37 +44,40 @@
 namespace heavy_top {
 namespace {
 
-// In-place LDL^T factorisation of the symmetric positive definite n x n matrix A
-// (row-major; only the lower triangle is read): on return the strict lower
-// triangle holds L (unit diagonal) and the diagonal holds D. No pivoting and no
-// square roots: a mass matrix is positive definite.
-void ldlt_factor(double* A, int n) {
-    for (int j = 0; j < n; ++j) {
-        double d = A[j * n + j];
-        for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k] * A[k * n + k];
-        A[j * n + j] = d;
-        for (int i = j + 1; i < n; ++i) {
-            double s = A[i * n + j];
-            for (int k = 0; k < j; ++k) s -= A[i * n + k] * A[j * n + k] * A[k * n + k];
-            A[i * n + j] = s / d;
-        }
-    }
+// A = L D L^T in place for this model's 3 x 3 mass matrix (row-major, lower
+// triangle read), rows and columns eliminated in the order q1 q0 q2 (minimum
+// degree). The 2 entries below the diagonal that are zero in every state are
+// skipped (no fill-in). On return L (unit diagonal) of the permuted matrix is
+// where M's lower triangle was and the diagonal holds 1/D.
+void mass_ldlt_factor(double* A) {
+    const double d1 = A[4];
+    const double r1 = 1.0 / d1;
+    A[4] = r1;
+    const double d0 = A[0];
+    const double r0 = 1.0 / d0;
+    A[0] = r0;
+    const double w2_0 = A[6];
+    const double l2_0 = w2_0 * r0;
+    A[6] = l2_0;
+    const double d2 = A[8] - l2_0 * w2_0;
+    const double r2 = 1.0 / d2;
+    A[8] = r2;
 }
 
-// Solves (L D L^T) X = B in place for the n x m row-major block B.
-void ldlt_solve(const double* LD, int n, double* B, int m) {
+// Solves (L D L^T) X = B in place for the 3 x m row-major block B, with LD
+// from mass_ldlt_factor.
+void mass_ldlt_solve(const double* LD, double* B, int m) {
     for (int c = 0; c < m; ++c) {
-        for (int i = 0; i < n; ++i) {
-            double s = B[i * m + c];
-            for (int k = 0; k < i; ++k) s -= LD[i * n + k] * B[k * m + c];
-            B[i * m + c] = s;
-        }
-        for (int i = 0; i < n; ++i) B[i * m + c] /= LD[i * n + i];
-        for (int i = n - 1; i >= 0; --i) {
-            double s = B[i * m + c];
-            for (int k = i + 1; k < n; ++k) s -= LD[k * n + i] * B[k * m + c];
-            B[i * m + c] = s;
-        }
+        double* b = B + c;
+        const double y1 = b[m];
+        const double y0 = b[0];
+        const double y2 = b[2 * m] - LD[6] * y0;
+        const double x2 = y2 * LD[8];
+        const double x0 = y0 * LD[0] - LD[6] * x2;
+        const double x1 = y1 * LD[4];
+        b[m] = x1;
+        b[0] = x0;
+        b[2 * m] = x2;
     }
 }
 
@@ -235,8 +238,8 @@ void rhs(double t, const double* x, const double* u, const Params& p, double* xd
     xdot[3] = x[3]*x[4]*p.C*t0*t2 - t1*t2*t7 - t2*t3*t10;
     xdot[4] = t1*t10 - t3*t7;
     xdot[5] = x[3]*x[4]*p.C*t2;
-    ldlt_factor(M, 3);
-    ldlt_solve(M, 3, xdot + 3, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, xdot + 3, 1);
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
@@ -283,8 +286,8 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     qdd[0] = x[3]*x[4]*p.C*t0*t2 - t1*t2*t7 - t2*t3*t10;
     qdd[1] = t1*t10 - t3*t7;
     qdd[2] = x[3]*x[4]*p.C*t2;
-    ldlt_factor(M, 3);
-    ldlt_solve(M, 3, qdd, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, qdd, 1);
     const double t11 = x[3]*x[4]*t2*t3 + x[3]*x[5]*t1*t0;
     const double t12 = p.l*(p.m*p.g*t1*t0 - p.m*(p.l*t11 + x[3]*p.l*t2*t8 - x[3]*p.l*t1*t0*t6)) + x[3]*p.C*t2*t8 + x[3]*p.A*t1*t0*t6 - p.A*t11 - x[3]*p.C*t1*t0*t6 - x[3]*p.A*t2*t8;
     const double t13 = x[3]*x[5]*t0*t3 - x[3]*x[4]*t1*t2;
@@ -317,7 +320,7 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     J[33] = x[4]*p.C*t2;
     J[34] = x[3]*p.C*t2;
     J[35] = 0.0;
-    ldlt_solve(M, 3, J + 18, 6);
+    mass_ldlt_solve(M, J + 18, 6);
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
@@ -358,8 +361,8 @@ void linear(const double* q0, const double* qd0, const double* u0, const Params&
     qdd0[0] = qd0[0]*qd0[1]*p.C*t0*t2 - t1*t2*t10 - t2*t3*t13;
     qdd0[1] = t1*t13 - t3*t10;
     qdd0[2] = qd0[0]*qd0[1]*p.C*t2;
-    ldlt_factor(M, 3);
-    ldlt_solve(M, 3, qdd0, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, qdd0, 1);
     const double t14 = qd0[2]*t2*t3 + qd0[1]*t1*t0;
     const double t15 = p.A*t14 + p.m*p.l*(p.l*t14 - p.l*t2*t3*t9 - p.l*t0*t7) + p.C*t2*t3*t9 + p.C*t0*t7 - p.A*t0*t7 - p.A*t2*t3*t9;
     const double t16 = qd0[2]*t1*t2 - qd0[1]*t0*t3;
@@ -438,8 +441,8 @@ void state_space(const double* q0, const double* qd0, const double* u0, const Pa
     qdd0[0] = qd0[0]*qd0[1]*p.C*t0*t2 - t1*t2*t7 - t2*t3*t10;
     qdd0[1] = t1*t10 - t3*t7;
     qdd0[2] = qd0[0]*qd0[1]*p.C*t2;
-    ldlt_factor(M, 3);
-    ldlt_solve(M, 3, qdd0, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, qdd0, 1);
     const double t11 = qd0[0]*qd0[1]*t2*t3 + qd0[0]*qd0[2]*t1*t0;
     const double t12 = p.l*(p.m*p.g*t1*t0 - p.m*(p.l*t11 + qd0[0]*p.l*t2*t8 - qd0[0]*p.l*t1*t0*t6)) + qd0[0]*p.C*t2*t8 + qd0[0]*p.A*t1*t0*t6 - p.A*t11 - qd0[0]*p.C*t1*t0*t6 - qd0[0]*p.A*t2*t8;
     const double t13 = qd0[0]*qd0[2]*t0*t3 - qd0[0]*qd0[1]*t1*t2;
@@ -472,7 +475,7 @@ void state_space(const double* q0, const double* qd0, const double* u0, const Pa
     A[33] = qd0[1]*p.C*t2;
     A[34] = qd0[0]*p.C*t2;
     A[35] = 0.0;
-    ldlt_solve(M, 3, A + 18, 6);
+    mass_ldlt_solve(M, A + 18, 6);
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu

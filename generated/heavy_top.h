@@ -31,13 +31,13 @@
 //   jacobians         73 adds, 234 muls, 0 divs, 4 calls
 //   outputs_from_qdd  0 adds, 1 muls, 0 divs, 1 calls
 //   outputs           0 adds, 1 muls, 0 divs, 1 calls
-//   rhs               35 adds, 101 muls, 6 divs, 4 calls
-//   rhs_jacobian      147 adds, 386 muls, 24 divs, 4 calls
-//   linear            111 adds, 350 muls, 6 divs, 4 calls
-//   state_space       147 adds, 386 muls, 24 divs, 4 calls
+//   rhs               28 adds, 94 muls, 3 divs, 4 calls
+//   rhs_jacobian      116 adds, 373 muls, 3 divs, 4 calls
+//   linear            104 adds, 343 muls, 3 divs, 4 calls
+//   state_space       116 adds, 373 muls, 3 divs, 4 calls
 //   output_matrices   0 adds, 1 muls, 0 divs, 1 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          184 adds, 435 muls, 25 divs, 16 calls
+//   rk4_step          156 adds, 407 muls, 13 divs, 16 calls
 
 #ifndef heavy_top_YAMSC_GENERATED_H
 #define heavy_top_YAMSC_GENERATED_H

@@ -30,10 +30,10 @@
 //   jacobians         73 adds, 234 muls, 0 divs, 4 calls
 //   outputs_from_qdd  0 adds, 1 muls, 0 divs, 1 calls
 //   outputs           0 adds, 1 muls, 0 divs, 1 calls
-//   rhs               35 adds, 101 muls, 6 divs, 4 calls
-//   rhs_jacobian      147 adds, 386 muls, 24 divs, 4 calls
-//   linear            111 adds, 350 muls, 6 divs, 4 calls
-//   state_space       147 adds, 386 muls, 24 divs, 4 calls
+//   rhs               28 adds, 94 muls, 3 divs, 4 calls
+//   rhs_jacobian      116 adds, 373 muls, 3 divs, 4 calls
+//   linear            104 adds, 343 muls, 3 divs, 4 calls
+//   state_space       116 adds, 373 muls, 3 divs, 4 calls
 //   output_matrices   0 adds, 1 muls, 0 divs, 1 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 

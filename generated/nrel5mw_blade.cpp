@@ -30,10 +30,10 @@
 //   jacobians         14 adds, 17 muls, 0 divs, 0 calls
 //   outputs_from_qdd  1 adds, 0 muls, 0 divs, 0 calls
 //   outputs           1 adds, 0 muls, 0 divs, 0 calls
-//   rhs               40 adds, 65 muls, 6 divs, 0 calls
-//   rhs_jacobian      90 adds, 118 muls, 24 divs, 0 calls
+//   rhs               40 adds, 67 muls, 3 divs, 0 calls
+//   rhs_jacobian      90 adds, 138 muls, 3 divs, 0 calls
 //   linear            14 adds, 17 muls, 0 divs, 0 calls
-//   state_space       72 adds, 79 muls, 30 divs, 0 calls
+//   state_space       72 adds, 105 muls, 3 divs, 0 calls
 //   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
@@ -44,37 +44,46 @@
 namespace nrel5mw_blade {
 namespace {
 
-// In-place LDL^T factorisation of the symmetric positive definite n x n matrix A
-// (row-major; only the lower triangle is read): on return the strict lower
-// triangle holds L (unit diagonal) and the diagonal holds D. No pivoting and no
-// square roots: a mass matrix is positive definite.
-void ldlt_factor(double* A, int n) {
-    for (int j = 0; j < n; ++j) {
-        double d = A[j * n + j];
-        for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k] * A[k * n + k];
-        A[j * n + j] = d;
-        for (int i = j + 1; i < n; ++i) {
-            double s = A[i * n + j];
-            for (int k = 0; k < j; ++k) s -= A[i * n + k] * A[j * n + k] * A[k * n + k];
-            A[i * n + j] = s / d;
-        }
-    }
+// A = L D L^T in place for this model's 3 x 3 mass matrix (row-major, lower
+// triangle read), rows and columns eliminated in the order q0 q1 q2 (minimum
+// degree). M has no structural zeros below the diagonal. On return L (unit
+// diagonal) of the permuted matrix is where M's lower triangle was and the
+// diagonal holds 1/D.
+void mass_ldlt_factor(double* A) {
+    const double d0 = A[0];
+    const double r0 = 1.0 / d0;
+    A[0] = r0;
+    const double w1_0 = A[3];
+    const double l1_0 = w1_0 * r0;
+    A[3] = l1_0;
+    const double w2_0 = A[6];
+    const double l2_0 = w2_0 * r0;
+    A[6] = l2_0;
+    const double d1 = A[4] - l1_0 * w1_0;
+    const double r1 = 1.0 / d1;
+    A[4] = r1;
+    const double w2_1 = A[7] - l2_0 * w1_0;
+    const double l2_1 = w2_1 * r1;
+    A[7] = l2_1;
+    const double d2 = A[8] - l2_0 * w2_0 - l2_1 * w2_1;
+    const double r2 = 1.0 / d2;
+    A[8] = r2;
 }
 
-// Solves (L D L^T) X = B in place for the n x m row-major block B.
-void ldlt_solve(const double* LD, int n, double* B, int m) {
+// Solves (L D L^T) X = B in place for the 3 x m row-major block B, with LD
+// from mass_ldlt_factor.
+void mass_ldlt_solve(const double* LD, double* B, int m) {
     for (int c = 0; c < m; ++c) {
-        for (int i = 0; i < n; ++i) {
-            double s = B[i * m + c];
-            for (int k = 0; k < i; ++k) s -= LD[i * n + k] * B[k * m + c];
-            B[i * m + c] = s;
-        }
-        for (int i = 0; i < n; ++i) B[i * m + c] /= LD[i * n + i];
-        for (int i = n - 1; i >= 0; --i) {
-            double s = B[i * m + c];
-            for (int k = i + 1; k < n; ++k) s -= LD[k * n + i] * B[k * m + c];
-            B[i * m + c] = s;
-        }
+        double* b = B + c;
+        const double y0 = b[0];
+        const double y1 = b[m] - LD[3] * y0;
+        const double y2 = b[2 * m] - LD[6] * y0 - LD[7] * y1;
+        const double x2 = y2 * LD[8];
+        const double x1 = y1 * LD[4] - LD[7] * x2;
+        const double x0 = y0 * LD[0] - LD[6] * x2 - LD[3] * x1;
+        b[0] = x0;
+        b[m] = x1;
+        b[2 * m] = x2;
     }
 }
 
@@ -199,8 +208,8 @@ void rhs(double t, const double* x, const double* u, const Params& p, double* xd
     xdot[3] = 2.741630858313867e-14*x[1] + 1459.2938998123207*x[2] + u[0] - 16750.41764816945*x[0] - 37.23775760189005*x[3] - 4e-17*p.Omega*p.Omega*p.r_hub*(8.190691833029857e+17*x[0] + 2.1193775878721972e+16*x[1] + 2.774742437436333e+17*x[2]) - 1e-14*p.Omega*p.Omega*(1.5460947015388272e+17*x[0] + 2.110450910191564e+16*x[1] + 8.467935078235902e+16*x[2]);
     xdot[4] = 2.741630858313867e-14*x[0] + 2.317440676728672e-14*x[2] + u[1] - 67129.3125250449*x[1] - 92.99490883515328*x[4] - 4e-17*p.Omega*p.Omega*p.r_hub*(2.1193775878721972e+16*x[0] + 1.1316767189762511e+18*x[1] + 8.818928796399701e+16*x[2]) - 2e-15*p.Omega*p.Omega*(1.0552254550957819e+17*x[0] + 3.024824166685602e+17*x[1] + 8044373192394559.0*x[2]);
     xdot[5] = 1459.2938998123207*x[0] + 2.317440676728672e-14*x[1] + u[2] - 85408.50594715579*x[2] - 66.19114798329782*x[5] - 2e-16*p.Omega*p.Omega*p.r_hub*(5.5494848748726664e+16*x[0] + 1.7637857592799402e+16*x[1] + 3.134889271756545e+17*x[2]) - 2e-15*p.Omega*p.Omega*(4.233967539117951e+17*x[0] + 8044373192394559.0*x[1] + 1.5076218263184648e+18*x[2]);
-    ldlt_factor(M, 3);
-    ldlt_solve(M, 3, xdot + 3, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, xdot + 3, 1);
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
@@ -235,8 +244,8 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     qdd[0] = 2.741630858313867e-14*x[1] + 1459.2938998123207*x[2] + u[0] - 16750.41764816945*x[0] - 37.23775760189005*x[3] - 4e-17*p.Omega*p.Omega*p.r_hub*(8.190691833029857e+17*x[0] + 2.1193775878721972e+16*x[1] + 2.774742437436333e+17*x[2]) - 1e-14*p.Omega*p.Omega*(1.5460947015388272e+17*x[0] + 2.110450910191564e+16*x[1] + 8.467935078235902e+16*x[2]);
     qdd[1] = 2.741630858313867e-14*x[0] + 2.317440676728672e-14*x[2] + u[1] - 67129.3125250449*x[1] - 92.99490883515328*x[4] - 4e-17*p.Omega*p.Omega*p.r_hub*(2.1193775878721972e+16*x[0] + 1.1316767189762511e+18*x[1] + 8.818928796399701e+16*x[2]) - 2e-15*p.Omega*p.Omega*(1.0552254550957819e+17*x[0] + 3.024824166685602e+17*x[1] + 8044373192394559.0*x[2]);
     qdd[2] = 1459.2938998123207*x[0] + 2.317440676728672e-14*x[1] + u[2] - 85408.50594715579*x[2] - 66.19114798329782*x[5] - 2e-16*p.Omega*p.Omega*p.r_hub*(5.5494848748726664e+16*x[0] + 1.7637857592799402e+16*x[1] + 3.134889271756545e+17*x[2]) - 2e-15*p.Omega*p.Omega*(4.233967539117951e+17*x[0] + 8044373192394559.0*x[1] + 1.5076218263184648e+18*x[2]);
-    ldlt_factor(M, 3);
-    ldlt_solve(M, 3, qdd, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, qdd, 1);
     const double t0 = p.Omega*p.Omega*p.r_hub;
     const double t1 = p.Omega*p.Omega;
     const double t2 = -(0.847751035148879*t0 + 211.0450910191564*t1 - 2.741630858313867e-14);
@@ -259,7 +268,7 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     J[33] = 0.0;
     J[34] = 0.0;
     J[35] = -66.19114798329782;
-    ldlt_solve(M, 3, J + 18, 6);
+    mass_ldlt_solve(M, J + 18, 6);
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
@@ -348,7 +357,7 @@ void state_space(const double* q0, const double* qd0, const double* u0, const Pa
     M[6] = 1.757950909155567;
     M[7] = 132.7732946183086;
     M[8] = 562.5428734352946;
-    ldlt_factor(M, 3);
+    mass_ldlt_factor(M);
     const double t0 = p.Omega*p.Omega*p.r_hub;
     const double t1 = p.Omega*p.Omega;
     const double t2 = -(0.847751035148879*t0 + 211.0450910191564*t1 - 2.741630858313867e-14);
@@ -380,8 +389,8 @@ void state_space(const double* q0, const double* qd0, const double* u0, const Pa
     B[15] = 0.0;
     B[16] = 0.0;
     B[17] = 1.0;
-    ldlt_solve(M, 3, A + 18, 6);
-    ldlt_solve(M, 3, B + 9, 3);
+    mass_ldlt_solve(M, A + 18, 6);
+    mass_ldlt_solve(M, B + 9, 3);
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu

@@ -31,13 +31,13 @@
 //   jacobians         14 adds, 17 muls, 0 divs, 0 calls
 //   outputs_from_qdd  1 adds, 0 muls, 0 divs, 0 calls
 //   outputs           1 adds, 0 muls, 0 divs, 0 calls
-//   rhs               40 adds, 65 muls, 6 divs, 0 calls
-//   rhs_jacobian      90 adds, 118 muls, 24 divs, 0 calls
+//   rhs               40 adds, 67 muls, 3 divs, 0 calls
+//   rhs_jacobian      90 adds, 138 muls, 3 divs, 0 calls
 //   linear            14 adds, 17 muls, 0 divs, 0 calls
-//   state_space       72 adds, 79 muls, 30 divs, 0 calls
+//   state_space       72 adds, 105 muls, 3 divs, 0 calls
 //   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          204 adds, 291 muls, 25 divs, 0 calls
+//   rk4_step          204 adds, 299 muls, 13 divs, 0 calls
 
 #ifndef nrel5mw_blade_YAMSC_GENERATED_H
 #define nrel5mw_blade_YAMSC_GENERATED_H

@@ -71,13 +71,13 @@
 //   jacobians         270 adds, 887 muls, 0 divs, 0 calls
 //   outputs_from_qdd  3 adds, 8 muls, 0 divs, 2 calls
 //   outputs           3 adds, 8 muls, 0 divs, 2 calls
-//   rhs               182 adds, 471 muls, 6 divs, 0 calls
-//   rhs_jacobian      523 adds, 1454 muls, 24 divs, 4 calls
-//   linear            504 adds, 1451 muls, 6 divs, 4 calls
-//   state_space       564 adds, 1511 muls, 36 divs, 4 calls
+//   rhs               182 adds, 473 muls, 3 divs, 0 calls
+//   rhs_jacobian      523 adds, 1474 muls, 3 divs, 4 calls
+//   linear            504 adds, 1453 muls, 3 divs, 4 calls
+//   state_space       564 adds, 1543 muls, 3 divs, 4 calls
 //   output_matrices   3 adds, 10 muls, 0 divs, 2 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          772 adds, 1915 muls, 25 divs, 0 calls
+//   rk4_step          772 adds, 1923 muls, 13 divs, 0 calls
 
 #include "nrel5mw_floating_3dof.h"
 
@@ -89,37 +89,46 @@ const char* const nrel5mw_floating_3dof_input_names[4] = {"f_a", "f_H", "tau_H",
 const char* const nrel5mw_floating_3dof_param_names[42] = {"g", "M_F", "z_FG", "J_yF", "J_xF", "J_zF", "theta_t", "M_N", "x_NG", "z_NG", "J_xN", "J_yN", "J_zN", "x_NR", "z_NR", "tower_mass", "tower_n1_origin1_1_1_1", "tower_n1_origin_3_1", "tower_n1_phi_1_1", "tower_n1_phi1_3_1_1", "tower_n1_psi_2_1", "tower_n1_AP_1_1", "tower_n1_AP1_1_3_1", "tower_n1_AP_2_2", "tower_n1_AP1_3_1_1", "tower_n1_AP_3_3", "tower_mdCM1_1_1_1", "tower_mdCM_3_1", "tower_J_1_1", "tower_J1_1_3_1", "tower_J_2_2", "tower_Ct_1_1", "tower_Ct1_1_3_1", "tower_Cr_1_2", "tower_Me_1_1", "tower_Gr_1_3", "tower_Oe1_1_1_1", "tower_Oe1_1_2_1", "tower_Oe1_1_3_1", "tower_Oe_1_6", "tower_Ke_1_1", "tower_De_1_1"};
 const char* const nrel5mw_floating_3dof_output_names[2] = {"PtfmPitch_deg", "tt_fa"};
 
-// In-place LDL^T factorisation of the symmetric positive definite n x n matrix A
-// (row-major; only the lower triangle is read): on return the strict lower
-// triangle holds L (unit diagonal) and the diagonal holds D. No pivoting and no
-// square roots: a mass matrix is positive definite.
-static void nrel5mw_floating_3dof_ldlt_factor(double* A, int n) {
-    for (int j = 0; j < n; ++j) {
-        double d = A[j * n + j];
-        for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k] * A[k * n + k];
-        A[j * n + j] = d;
-        for (int i = j + 1; i < n; ++i) {
-            double s = A[i * n + j];
-            for (int k = 0; k < j; ++k) s -= A[i * n + k] * A[j * n + k] * A[k * n + k];
-            A[i * n + j] = s / d;
-        }
-    }
+// A = L D L^T in place for this model's 3 x 3 mass matrix (row-major, lower
+// triangle read), rows and columns eliminated in the order q0 q1 q2 (minimum
+// degree). M has no structural zeros below the diagonal. On return L (unit
+// diagonal) of the permuted matrix is where M's lower triangle was and the
+// diagonal holds 1/D.
+static void nrel5mw_floating_3dof_mass_ldlt_factor(double* A) {
+    const double d0 = A[0];
+    const double r0 = 1.0 / d0;
+    A[0] = r0;
+    const double w1_0 = A[3];
+    const double l1_0 = w1_0 * r0;
+    A[3] = l1_0;
+    const double w2_0 = A[6];
+    const double l2_0 = w2_0 * r0;
+    A[6] = l2_0;
+    const double d1 = A[4] - l1_0 * w1_0;
+    const double r1 = 1.0 / d1;
+    A[4] = r1;
+    const double w2_1 = A[7] - l2_0 * w1_0;
+    const double l2_1 = w2_1 * r1;
+    A[7] = l2_1;
+    const double d2 = A[8] - l2_0 * w2_0 - l2_1 * w2_1;
+    const double r2 = 1.0 / d2;
+    A[8] = r2;
 }
 
-// Solves (L D L^T) X = B in place for the n x m row-major block B.
-static void nrel5mw_floating_3dof_ldlt_solve(const double* LD, int n, double* B, int m) {
+// Solves (L D L^T) X = B in place for the 3 x m row-major block B, with LD
+// from nrel5mw_floating_3dof_mass_ldlt_factor.
+static void nrel5mw_floating_3dof_mass_ldlt_solve(const double* LD, double* B, int m) {
     for (int c = 0; c < m; ++c) {
-        for (int i = 0; i < n; ++i) {
-            double s = B[i * m + c];
-            for (int k = 0; k < i; ++k) s -= LD[i * n + k] * B[k * m + c];
-            B[i * m + c] = s;
-        }
-        for (int i = 0; i < n; ++i) B[i * m + c] /= LD[i * n + i];
-        for (int i = n - 1; i >= 0; --i) {
-            double s = B[i * m + c];
-            for (int k = i + 1; k < n; ++k) s -= LD[k * n + i] * B[k * m + c];
-            B[i * m + c] = s;
-        }
+        double* b = B + c;
+        const double y0 = b[0];
+        const double y1 = b[m] - LD[3] * y0;
+        const double y2 = b[2 * m] - LD[6] * y0 - LD[7] * y1;
+        const double x2 = y2 * LD[8];
+        const double x1 = y1 * LD[4] - LD[7] * x2;
+        const double x0 = y0 * LD[0] - LD[6] * x2 - LD[3] * x1;
+        b[0] = x0;
+        b[m] = x1;
+        b[2 * m] = x2;
     }
 }
 
@@ -721,8 +730,8 @@ void nrel5mw_floating_3dof_rhs(nrel5mw_floating_3dof_real t, const nrel5mw_float
     xdot[3] = p->tower_n1_psi_2_1*(x[1]*(0.5*p->M_N*t14 - x[2]*u[0] - 0.5*x[2]*p->M_N*t15) + 0.5*x[2]*t18 + 0.5*t19 - x[2]*u[0]*p->theta_t) + p->tower_n1_psi_2_1*p->tower_n1_psi_2_1*(x[1]*(0.5*(2.0*t20 + t21 - 0.5*x[2]*x[2]*t18) - 0.5*(2.0*t20 + x[2]*t19)) + 0.5*x[2]*p->M_N*t14 - 0.5*x[2]*x[2]*u[0] - 0.5*(0.5*x[2]*x[2]*p->M_N*t15 - p->M_N*t22)) + x[1]*(t23 + t17 + t24 + 0.5*(4.0*x[4]*x[5]*p->tower_Ct_1_1 + x[4]*x[4]*t8 - 2.0*t23 - 2.0*x[5]*x[5]*p->tower_Ct1_1_3_1) + x[4]*x[4]*p->M_F*p->z_FG + 0.5*t18 - t24) + u[0] + u[1] + 0.5*p->M_N*t15 + x[2]*x[4]*x[4]*p->tower_mdCM1_1_1_1 - 2.0*x[2]*x[4]*x[5]*p->tower_Ct1_1_3_1;
     xdot[4] = p->theta_t*(t31 + t32) + x[1]*(0.5*p->g*p->M_N*t4 + p->g*p->M_F*p->z_FG + 0.5*p->g*t8 + p->g*p->M_N*p->z_NG) + u[2] + 0.25*p->M_N*t4*t15 + x[2]*p->g*p->tower_mdCM1_1_1_1 + 0.5*u[0]*t4 + 0.5*t34 + t36 - p->tower_n1_psi_2_1*(t25 + 0.5*x[2]*u[0]*p->theta_t*t4 + 0.5*t27 + 0.25*(2.0*t29 - x[2]*t4*t18) - 0.5*t26 - t28 - 0.25*(t19*t4 + 2.0*t30)) - p->tower_n1_psi_2_1*p->tower_n1_psi_2_1*(0.5*x[2]*x[2]*x[2]*u[0]*p->theta_t*p->tower_n1_phi_1_1 + 0.5*x[1]*x[2]*x[2]*p->g*p->M_N*p->z_NG + 0.25*x[2]*x[2]*u[0]*t4 + 0.5*p->x_NG*t21 + 0.25*(0.5*x[2]*x[2]*p->M_N*t4*t15 - p->M_N*t4*t22 - 2.0*x[2]*x[2]*p->tower_n1_phi_1_1*t19) - 0.5*p->M_N*p->z_NG*t22 - 0.25*(x[2]*p->M_N*t4*t14 + x[2]*x[2]*x[2]*p->tower_n1_phi_1_1*t18 - 2.0*x[2]*p->tower_n1_phi_1_1*t21)) - 0.5*t33 - 0.5*t35;
     xdot[5] = p->tower_n1_psi_2_1*(x[1]*p->g*p->M_N*p->z_NG + t36 + 0.5*(x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t14 + t33) + 0.5*(t34 - t35) + 0.5*(p->tower_n1_phi_1_1*t19 - x[2]*x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t15) - p->theta_t*(t31 - t32) - x[2]*x[2]*u[0]*p->tower_n1_phi1_3_1_1) + x[1]*(p->g*p->M_N*p->tower_n1_phi_1_1 + p->g*p->tower_Ct_1_1) + u[3] + 0.5*x[2]*p->tower_n1_phi1_3_1_1*t18 + 0.5*p->M_N*p->tower_n1_phi_1_1*t15 + u[0]*p->tower_n1_phi_1_1 - p->tower_n1_psi_2_1*p->tower_n1_psi_2_1*(t25 + 0.5*t28 + 0.5*(0.5*x[2]*x[2]*x[2]*p->tower_n1_phi1_3_1_1*t18 - t29 - x[2]*p->tower_n1_phi1_3_1_1*t21) - 0.5*x[2]*x[2]*x[2]*u[0]*p->theta_t*p->tower_n1_phi1_3_1_1 - 0.5*(t26 - t27) - 0.5*(p->M_N*p->tower_n1_phi_1_1*t22 - 0.5*t30 - x[2]*x[2]*p->tower_n1_phi1_3_1_1*t19)) - x[2]*u[0]*p->theta_t*p->tower_n1_phi1_3_1_1 - x[2]*p->g*p->tower_Ct1_1_3_1 - x[2]*x[4]*x[4]*p->tower_Oe1_1_2_1 - x[2]*p->tower_Ke_1_1 - x[5]*p->tower_De_1_1;
-    nrel5mw_floating_3dof_ldlt_factor(M, 3);
-    nrel5mw_floating_3dof_ldlt_solve(M, 3, xdot + 3, 1);
+    nrel5mw_floating_3dof_mass_ldlt_factor(M);
+    nrel5mw_floating_3dof_mass_ldlt_solve(M, xdot + 3, 1);
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
@@ -808,8 +817,8 @@ void nrel5mw_floating_3dof_rhs_jacobian(nrel5mw_floating_3dof_real t, const nrel
     qdd[0] = p->tower_n1_psi_2_1*(x[1]*t20 + 0.5*t24 + 0.5*t27 - x[2]*u[0]*p->theta_t) + p->tower_n1_psi_2_1*p->tower_n1_psi_2_1*(x[1]*t30 + 0.5*x[2]*p->M_N*t15 - 0.5*x[2]*x[2]*u[0] - 0.5*(0.5*x[2]*x[2]*p->M_N*t18 - p->M_N*t31)) + x[1]*t34 + u[0] + u[1] + 0.5*t35 + x[2]*x[4]*x[4]*p->tower_mdCM1_1_1_1 - 2.0*x[2]*x[4]*x[5]*p->tower_Ct1_1_3_1;
     qdd[1] = p->theta_t*(t42 + t43) + x[1]*t44 + u[2] + 0.25*p->M_N*t4*t18 + x[2]*p->g*p->tower_mdCM1_1_1_1 + 0.5*u[0]*t4 + 0.5*t46 + t48 - p->tower_n1_psi_2_1*(t36 + 0.5*x[2]*u[0]*p->theta_t*t4 + 0.5*t38 + 0.25*(2.0*t40 - x[2]*t4*t23) - 0.5*t37 - t39 - 0.25*(t27*t4 + 2.0*t41)) - p->tower_n1_psi_2_1*p->tower_n1_psi_2_1*(0.5*x[2]*x[2]*x[2]*u[0]*p->theta_t*p->tower_n1_phi_1_1 + 0.5*x[1]*x[2]*x[2]*p->g*p->M_N*p->z_NG + 0.25*x[2]*x[2]*u[0]*t4 + 0.5*p->x_NG*t29 + 0.25*(0.5*x[2]*x[2]*p->M_N*t4*t18 - p->M_N*t4*t31 - 2.0*x[2]*x[2]*p->tower_n1_phi_1_1*t27) - 0.5*p->M_N*p->z_NG*t31 - 0.25*(x[2]*p->M_N*t4*t15 + x[2]*x[2]*x[2]*p->tower_n1_phi_1_1*t23 - 2.0*x[2]*p->tower_n1_phi_1_1*t29)) - 0.5*t45 - 0.5*t47;
     qdd[2] = p->tower_n1_psi_2_1*(x[1]*p->g*p->M_N*p->z_NG + t48 + 0.5*(x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t15 + t45) + 0.5*(t46 - t47) + 0.5*(p->tower_n1_phi_1_1*t27 - x[2]*x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t18) - p->theta_t*(t42 - t43) - x[2]*x[2]*u[0]*p->tower_n1_phi1_3_1_1) + x[1]*t49 + u[3] + 0.5*x[2]*p->tower_n1_phi1_3_1_1*t23 + 0.5*p->M_N*p->tower_n1_phi_1_1*t18 + u[0]*p->tower_n1_phi_1_1 - p->tower_n1_psi_2_1*p->tower_n1_psi_2_1*(t36 + 0.5*t39 + 0.5*(0.5*x[2]*x[2]*x[2]*p->tower_n1_phi1_3_1_1*t23 - t40 - x[2]*p->tower_n1_phi1_3_1_1*t29) - 0.5*x[2]*x[2]*x[2]*u[0]*p->theta_t*p->tower_n1_phi1_3_1_1 - 0.5*(t37 - t38) - 0.5*(p->M_N*p->tower_n1_phi_1_1*t31 - 0.5*t41 - x[2]*x[2]*p->tower_n1_phi1_3_1_1*t27)) - x[2]*u[0]*p->theta_t*p->tower_n1_phi1_3_1_1 - t50 - x[2]*x[4]*x[4]*p->tower_Oe1_1_2_1 - x[2]*p->tower_Ke_1_1 - x[5]*p->tower_De_1_1;
-    nrel5mw_floating_3dof_ldlt_factor(M, 3);
-    nrel5mw_floating_3dof_ldlt_solve(M, 3, qdd, 1);
+    nrel5mw_floating_3dof_mass_ldlt_factor(M);
+    nrel5mw_floating_3dof_mass_ldlt_solve(M, qdd, 1);
     const double t51 = cos(x[1]);
     const double t52 = sin(x[1]);
     const double t53 = p->M_F*qdd[0]*t51*t52;
@@ -913,7 +922,7 @@ void nrel5mw_floating_3dof_rhs_jacobian(nrel5mw_floating_3dof_real t, const nrel
     J[33] = 0.0;
     J[34] = 0.5*x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t91 + 0.5*p->M_N*p->tower_n1_phi_1_1*t86 - p->tower_n1_psi_2_1*p->tower_n1_psi_2_1*(0.5*(t122 + 0.5*x[2]*x[2]*x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t91 + 0.5*x[2]*x[2]*x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t90) + 0.5*(t120 - t121) - 0.5*(x[2]*x[2]*p->M_N*p->tower_n1_phi_1_1*t85 + x[2]*x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t93 - 0.5*t123)) - p->tower_n1_psi_2_1*(0.5*(x[2]*x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t86 + p->M_N*p->tower_n1_phi_1_1*t93) + 0.5*(x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t88 - t124) + 0.5*(t125 - t126)) - 2.0*x[2]*x[4]*p->tower_Oe1_1_2_1;
     J[35] = p->tower_n1_psi_2_1*p->tower_n1_psi_2_1*(0.5*(p->M_N*p->tower_n1_phi_1_1*t98 + 2.0*t129 - x[2]*x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t95) + 0.5*(0.5*x[2]*x[2]*x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t94 + x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t96 + t130) - 0.5*(t127 - t128)) - p->tower_n1_psi_2_1*(0.5*(4.0*t132 - t133) + 0.5*(t131 - x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t97) - 0.5*(p->M_N*p->tower_n1_phi_1_1*t95 + 4.0*x[2]*x[2]*x[2]*x[4]*p->M_N*p->tower_n1_phi1_3_1_1*p->tower_n1_phi1_3_1_1)) - p->tower_De_1_1 - 2.0*x[2]*x[4]*p->M_N*p->tower_n1_phi_1_1*p->tower_n1_phi1_3_1_1 - 0.5*x[2]*p->M_N*p->tower_n1_phi1_3_1_1*t94;
-    nrel5mw_floating_3dof_ldlt_solve(M, 3, J + 18, 6);
+    nrel5mw_floating_3dof_mass_ldlt_solve(M, J + 18, 6);
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
@@ -995,8 +1004,8 @@ void nrel5mw_floating_3dof_linear(const nrel5mw_floating_3dof_real* q0, const nr
     qdd0[0] = p->tower_n1_psi_2_1*(q0[1]*t26 + 0.5*t30 + 0.5*t33 - q0[2]*u0[0]*p->theta_t) + p->tower_n1_psi_2_1*p->tower_n1_psi_2_1*(q0[1]*t36 + 0.5*q0[2]*p->M_N*t21 - 0.5*q0[2]*q0[2]*u0[0] - 0.5*(0.5*q0[2]*q0[2]*p->M_N*t24 - p->M_N*t37)) + q0[1]*t40 + u0[0] + u0[1] + 0.5*t41 + q0[2]*qd0[1]*qd0[1]*p->tower_mdCM1_1_1_1 - 2.0*q0[2]*qd0[1]*qd0[2]*p->tower_Ct1_1_3_1;
     qdd0[1] = p->theta_t*(t48 + t49) + q0[1]*t50 + u0[2] + 0.25*p->M_N*t5*t24 + q0[2]*p->g*p->tower_mdCM1_1_1_1 + 0.5*u0[0]*t5 + 0.5*t52 + t54 - p->tower_n1_psi_2_1*(t42 + 0.5*q0[2]*u0[0]*p->theta_t*t5 + 0.5*t44 + 0.25*(2.0*t46 - q0[2]*t5*t29) - 0.5*t43 - t45 - 0.25*(t33*t5 + 2.0*t47)) - p->tower_n1_psi_2_1*p->tower_n1_psi_2_1*(0.5*q0[2]*q0[2]*q0[2]*u0[0]*p->theta_t*p->tower_n1_phi_1_1 + 0.5*q0[1]*q0[2]*q0[2]*p->g*p->M_N*p->z_NG + 0.25*q0[2]*q0[2]*u0[0]*t5 + 0.5*p->x_NG*t35 + 0.25*(0.5*q0[2]*q0[2]*p->M_N*t5*t24 - p->M_N*t5*t37 - 2.0*q0[2]*q0[2]*p->tower_n1_phi_1_1*t33) - 0.5*p->M_N*p->z_NG*t37 - 0.25*(q0[2]*p->M_N*t5*t21 + q0[2]*q0[2]*q0[2]*p->tower_n1_phi_1_1*t29 - 2.0*q0[2]*p->tower_n1_phi_1_1*t35)) - 0.5*t51 - 0.5*t53;
     qdd0[2] = p->tower_n1_psi_2_1*(q0[1]*p->g*p->M_N*p->z_NG + t54 + 0.5*(q0[2]*p->M_N*p->tower_n1_phi1_3_1_1*t21 + t51) + 0.5*(t52 - t53) + 0.5*(p->tower_n1_phi_1_1*t33 - q0[2]*q0[2]*p->M_N*p->tower_n1_phi1_3_1_1*t24) - p->theta_t*(t48 - t49) - q0[2]*q0[2]*u0[0]*p->tower_n1_phi1_3_1_1) + q0[1]*t55 + u0[3] + 0.5*q0[2]*p->tower_n1_phi1_3_1_1*t29 + 0.5*p->M_N*p->tower_n1_phi_1_1*t24 + u0[0]*p->tower_n1_phi_1_1 - p->tower_n1_psi_2_1*p->tower_n1_psi_2_1*(t42 + 0.5*t45 + 0.5*(0.5*q0[2]*q0[2]*q0[2]*p->tower_n1_phi1_3_1_1*t29 - t46 - q0[2]*p->tower_n1_phi1_3_1_1*t35) - 0.5*q0[2]*q0[2]*q0[2]*u0[0]*p->theta_t*p->tower_n1_phi1_3_1_1 - 0.5*(t43 - t44) - 0.5*(p->M_N*p->tower_n1_phi_1_1*t37 - 0.5*t47 - q0[2]*q0[2]*p->tower_n1_phi1_3_1_1*t33)) - q0[2]*u0[0]*p->theta_t*p->tower_n1_phi1_3_1_1 - t56 - q0[2]*qd0[1]*qd0[1]*p->tower_Oe1_1_2_1 - q0[2]*p->tower_Ke_1_1 - qd0[2]*p->tower_De_1_1;
-    nrel5mw_floating_3dof_ldlt_factor(M, 3);
-    nrel5mw_floating_3dof_ldlt_solve(M, 3, qdd0, 1);
+    nrel5mw_floating_3dof_mass_ldlt_factor(M);
+    nrel5mw_floating_3dof_mass_ldlt_solve(M, qdd0, 1);
     const double t57 = qd0[1]*p->x_NG;
     const double t58 = 2.0*q0[2]*qd0[2]*p->tower_n1_phi1_3_1_1 - 2.0*q0[2]*qd0[1]*p->tower_n1_phi_1_1;
     const double t59 = 4.0*t57 - 2.0*t58;
@@ -1120,11 +1129,11 @@ void nrel5mw_floating_3dof_state_space(const nrel5mw_floating_3dof_real* q0, con
     double qdd0[3];
     double w[30];
     nrel5mw_floating_3dof_state_space_part0(q0, qd0, u0, p, A, B, M, qdd0, w);
-    nrel5mw_floating_3dof_ldlt_factor(M, 3);
-    nrel5mw_floating_3dof_ldlt_solve(M, 3, qdd0, 1);
+    nrel5mw_floating_3dof_mass_ldlt_factor(M);
+    nrel5mw_floating_3dof_mass_ldlt_solve(M, qdd0, 1);
     nrel5mw_floating_3dof_state_space_part1(q0, qd0, u0, p, A, B, M, qdd0, w);
-    nrel5mw_floating_3dof_ldlt_solve(M, 3, A + 18, 6);
-    nrel5mw_floating_3dof_ldlt_solve(M, 3, B + 12, 4);
+    nrel5mw_floating_3dof_mass_ldlt_solve(M, A + 18, 6);
+    nrel5mw_floating_3dof_mass_ldlt_solve(M, B + 12, 4);
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu

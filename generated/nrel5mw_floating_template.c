@@ -70,13 +70,13 @@
 //   jacobians         300 adds, 831 muls, 0 divs, 8 calls
 //   outputs_from_qdd  4 adds, 17 muls, 0 divs, 2 calls
 //   outputs           4 adds, 17 muls, 0 divs, 2 calls
-//   rhs               196 adds, 401 muls, 10 divs, 8 calls
-//   rhs_jacobian      656 adds, 1510 muls, 42 divs, 8 calls
-//   linear            560 adds, 1416 muls, 10 divs, 8 calls
-//   state_space       776 adds, 1632 muls, 82 divs, 8 calls
+//   rhs               184 adds, 386 muls, 4 divs, 8 calls
+//   rhs_jacobian      596 adds, 1479 muls, 4 divs, 8 calls
+//   linear            548 adds, 1401 muls, 4 divs, 8 calls
+//   state_space       656 adds, 1581 muls, 4 divs, 8 calls
 //   output_matrices   3 adds, 11 muls, 0 divs, 2 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          842 adds, 1645 muls, 41 divs, 32 calls
+//   rk4_step          794 adds, 1585 muls, 17 divs, 32 calls
 
 #include "nrel5mw_floating_template.h"
 
@@ -88,37 +88,52 @@ const char* const nrel5mw_floating_template_input_names[10] = {"thrust", "aero_t
 const char* const nrel5mw_floating_template_param_names[26] = {"Gravity", "TowerHt", "TowerBsHt", "Twr2Shft", "OverHang", "ShftTilt", "NacCMxn", "NacCMyn", "NacCMzn", "NacMass", "NacYIner", "GenIner", "GBRatio", "PtfmRefzt", "PtfmCMxt", "PtfmCMyt", "PtfmCMzt", "PtfmMass", "PtfmRIner", "PtfmPIner", "PtfmYIner", "RotMass", "RotCMx", "RotIxx", "RotIyy", "RotIzz"};
 const char* const nrel5mw_floating_template_output_names[10] = {"PtfmSurge", "PtfmPitch", "Q_TFA1", "Azimuth", "RotSpeed", "GenSpeed", "TTDspFA", "TTDspSS", "QD_TFA1", "QD_GeAz"};
 
-// In-place LDL^T factorisation of the symmetric positive definite n x n matrix A
-// (row-major; only the lower triangle is read): on return the strict lower
-// triangle holds L (unit diagonal) and the diagonal holds D. No pivoting and no
-// square roots: a mass matrix is positive definite.
-static void nrel5mw_floating_template_ldlt_factor(double* A, int n) {
-    for (int j = 0; j < n; ++j) {
-        double d = A[j * n + j];
-        for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k] * A[k * n + k];
-        A[j * n + j] = d;
-        for (int i = j + 1; i < n; ++i) {
-            double s = A[i * n + j];
-            for (int k = 0; k < j; ++k) s -= A[i * n + k] * A[j * n + k] * A[k * n + k];
-            A[i * n + j] = s / d;
-        }
-    }
+// A = L D L^T in place for this model's 4 x 4 mass matrix (row-major, lower
+// triangle read), rows and columns eliminated in the order q3 q0 q1 q2 (minimum
+// degree). The 3 entries below the diagonal that are zero in every state are
+// skipped (no fill-in). On return L (unit diagonal) of the permuted matrix is
+// where M's lower triangle was and the diagonal holds 1/D.
+static void nrel5mw_floating_template_mass_ldlt_factor(double* A) {
+    const double d3 = A[15];
+    const double r3 = 1.0 / d3;
+    A[15] = r3;
+    const double d0 = A[0];
+    const double r0 = 1.0 / d0;
+    A[0] = r0;
+    const double w1_0 = A[4];
+    const double l1_0 = w1_0 * r0;
+    A[4] = l1_0;
+    const double w2_0 = A[8];
+    const double l2_0 = w2_0 * r0;
+    A[8] = l2_0;
+    const double d1 = A[5] - l1_0 * w1_0;
+    const double r1 = 1.0 / d1;
+    A[5] = r1;
+    const double w2_1 = A[9] - l2_0 * w1_0;
+    const double l2_1 = w2_1 * r1;
+    A[9] = l2_1;
+    const double d2 = A[10] - l2_0 * w2_0 - l2_1 * w2_1;
+    const double r2 = 1.0 / d2;
+    A[10] = r2;
 }
 
-// Solves (L D L^T) X = B in place for the n x m row-major block B.
-static void nrel5mw_floating_template_ldlt_solve(const double* LD, int n, double* B, int m) {
+// Solves (L D L^T) X = B in place for the 4 x m row-major block B, with LD
+// from nrel5mw_floating_template_mass_ldlt_factor.
+static void nrel5mw_floating_template_mass_ldlt_solve(const double* LD, double* B, int m) {
     for (int c = 0; c < m; ++c) {
-        for (int i = 0; i < n; ++i) {
-            double s = B[i * m + c];
-            for (int k = 0; k < i; ++k) s -= LD[i * n + k] * B[k * m + c];
-            B[i * m + c] = s;
-        }
-        for (int i = 0; i < n; ++i) B[i * m + c] /= LD[i * n + i];
-        for (int i = n - 1; i >= 0; --i) {
-            double s = B[i * m + c];
-            for (int k = i + 1; k < n; ++k) s -= LD[k * n + i] * B[k * m + c];
-            B[i * m + c] = s;
-        }
+        double* b = B + c;
+        const double y3 = b[3 * m];
+        const double y0 = b[0];
+        const double y1 = b[m] - LD[4] * y0;
+        const double y2 = b[2 * m] - LD[8] * y0 - LD[9] * y1;
+        const double x2 = y2 * LD[10];
+        const double x1 = y1 * LD[5] - LD[9] * x2;
+        const double x0 = y0 * LD[0] - LD[8] * x2 - LD[4] * x1;
+        const double x3 = y3 * LD[15];
+        b[3 * m] = x3;
+        b[0] = x0;
+        b[m] = x1;
+        b[2 * m] = x2;
     }
 }
 
@@ -1760,8 +1775,8 @@ void nrel5mw_floating_template_rhs(nrel5mw_floating_template_real t, const nrel5
     xdot[5] = u[6] + 2.5e-35*t72 + 2e-14*t71*t36 + 2.5e-53*t66*(1e+18*t21 + t22) + p->PtfmCMxt*t65 + 1e-18*u[0]*t33 - 2.5e-53*t28*t69 - 2.5e-35*t73 - 2.5e-35*t74 - 2.5e-53*t8*t68*t29 - 5e-15*p->Gravity*t4*t37 - 2.5e-35*t75 - 2.5e-53*t14*t63*t29 - 56573.36164280906*t76 - 2.5e-53*t33*t64 - t67*t25;
     xdot[6] = u[9] + 5e-53*(5e+17*t5 + 9977480275614888.0*t21)*t66 + 7.127931728084054e-37*t72 + 1e-18*u[0]*t41 + 56573.36164280906*t70 + 5e-53*t69*t40 - 3680045.5710173245*x[2] - 6791.735274378734*x[6] - 2.5e-53*t8*t68*t42 - 11336.250122735*t51 - 2.5e-53*t64*t41 - 7.127931728084054e-37*t73 - 7.127931728084054e-37*t74 - 7.127931728084054e-37*t75 - 811.4067722047412*t76 - 2.5e-53*t14*t42*t63;
     xdot[7] = u[1] + 2.5e-35*p->RotIzz*t14*t8*t59*t59 - u[2]*p->GBRatio - 2.5e-35*p->RotIyy*t14*t8*t59*t59;
-    nrel5mw_floating_template_ldlt_factor(M, 4);
-    nrel5mw_floating_template_ldlt_solve(M, 4, xdot + 4, 1);
+    nrel5mw_floating_template_mass_ldlt_factor(M);
+    nrel5mw_floating_template_mass_ldlt_solve(M, xdot + 4, 1);
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
@@ -1770,10 +1785,10 @@ void nrel5mw_floating_template_rhs_jacobian(nrel5mw_floating_template_real t, co
     double qdd[4];
     double w[68];
     nrel5mw_floating_template_rhs_jacobian_part0(t, x, u, p, J, M, qdd, w);
-    nrel5mw_floating_template_ldlt_factor(M, 4);
-    nrel5mw_floating_template_ldlt_solve(M, 4, qdd, 1);
+    nrel5mw_floating_template_mass_ldlt_factor(M);
+    nrel5mw_floating_template_mass_ldlt_solve(M, qdd, 1);
     nrel5mw_floating_template_rhs_jacobian_part1(t, x, u, p, J, M, qdd, w);
-    nrel5mw_floating_template_ldlt_solve(M, 4, J + 32, 8);
+    nrel5mw_floating_template_mass_ldlt_solve(M, J + 32, 8);
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
@@ -1782,8 +1797,8 @@ void nrel5mw_floating_template_linear(const nrel5mw_floating_template_real* q0, 
     double qdd0[4];
     double w[69];
     nrel5mw_floating_template_linear_part0(q0, qd0, u0, p, M0, C0, K0, Q0, M, qdd0, w);
-    nrel5mw_floating_template_ldlt_factor(M, 4);
-    nrel5mw_floating_template_ldlt_solve(M, 4, qdd0, 1);
+    nrel5mw_floating_template_mass_ldlt_factor(M);
+    nrel5mw_floating_template_mass_ldlt_solve(M, qdd0, 1);
     nrel5mw_floating_template_linear_part1(q0, qd0, u0, p, M0, C0, K0, Q0, M, qdd0, w);
 }
 
@@ -1793,11 +1808,11 @@ void nrel5mw_floating_template_state_space(const nrel5mw_floating_template_real*
     double qdd0[4];
     double w[69];
     nrel5mw_floating_template_state_space_part0(q0, qd0, u0, p, A, B, M, qdd0, w);
-    nrel5mw_floating_template_ldlt_factor(M, 4);
-    nrel5mw_floating_template_ldlt_solve(M, 4, qdd0, 1);
+    nrel5mw_floating_template_mass_ldlt_factor(M);
+    nrel5mw_floating_template_mass_ldlt_solve(M, qdd0, 1);
     nrel5mw_floating_template_state_space_part1(q0, qd0, u0, p, A, B, M, qdd0, w);
-    nrel5mw_floating_template_ldlt_solve(M, 4, A + 32, 8);
-    nrel5mw_floating_template_ldlt_solve(M, 4, B + 40, 10);
+    nrel5mw_floating_template_mass_ldlt_solve(M, A + 32, 8);
+    nrel5mw_floating_template_mass_ldlt_solve(M, B + 40, 10);
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu

@@ -69,10 +69,10 @@
 //   jacobians         300 adds, 831 muls, 0 divs, 8 calls
 //   outputs_from_qdd  4 adds, 17 muls, 0 divs, 2 calls
 //   outputs           4 adds, 17 muls, 0 divs, 2 calls
-//   rhs               196 adds, 401 muls, 10 divs, 8 calls
-//   rhs_jacobian      656 adds, 1510 muls, 42 divs, 8 calls
-//   linear            560 adds, 1416 muls, 10 divs, 8 calls
-//   state_space       776 adds, 1632 muls, 82 divs, 8 calls
+//   rhs               184 adds, 386 muls, 4 divs, 8 calls
+//   rhs_jacobian      596 adds, 1479 muls, 4 divs, 8 calls
+//   linear            548 adds, 1401 muls, 4 divs, 8 calls
+//   state_space       656 adds, 1581 muls, 4 divs, 8 calls
 //   output_matrices   3 adds, 11 muls, 0 divs, 2 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 

@@ -39,13 +39,13 @@
 //   jacobians         65 adds, 199 muls, 0 divs, 6 calls
 //   outputs_from_qdd  0 adds, 1 muls, 0 divs, 0 calls
 //   outputs           0 adds, 1 muls, 0 divs, 0 calls
-//   rhs               47 adds, 121 muls, 3 divs, 6 calls
-//   rhs_jacobian      108 adds, 296 muls, 11 divs, 6 calls
-//   linear            100 adds, 289 muls, 3 divs, 6 calls
-//   state_space       114 adds, 303 muls, 17 divs, 6 calls
+//   rhs               44 adds, 119 muls, 2 divs, 6 calls
+//   rhs_jacobian      97 adds, 294 muls, 2 divs, 6 calls
+//   linear            97 adds, 287 muls, 2 divs, 6 calls
+//   state_space       97 adds, 301 muls, 2 divs, 6 calls
 //   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          218 adds, 505 muls, 13 divs, 24 calls
+//   rk4_step          206 adds, 497 muls, 9 divs, 24 calls
 
 #include "nrel5mw_land_2dof.h"
 
@@ -57,37 +57,31 @@ const char* const nrel5mw_land_2dof_input_names[3] = {"f_a", "tau_a", "tau_g"};
 const char* const nrel5mw_land_2dof_param_names[12] = {"g", "L_T", "theta_t", "M_N", "x_NG", "z_NG", "J_yN", "M_R", "x_NR", "z_NR", "J_xR", "J_oR"};
 const char* const nrel5mw_land_2dof_output_names[2] = {"tt_fa", "rotor_speed"};
 
-// In-place LDL^T factorisation of the symmetric positive definite n x n matrix A
-// (row-major; only the lower triangle is read): on return the strict lower
-// triangle holds L (unit diagonal) and the diagonal holds D. No pivoting and no
-// square roots: a mass matrix is positive definite.
-static void nrel5mw_land_2dof_ldlt_factor(double* A, int n) {
-    for (int j = 0; j < n; ++j) {
-        double d = A[j * n + j];
-        for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k] * A[k * n + k];
-        A[j * n + j] = d;
-        for (int i = j + 1; i < n; ++i) {
-            double s = A[i * n + j];
-            for (int k = 0; k < j; ++k) s -= A[i * n + k] * A[j * n + k] * A[k * n + k];
-            A[i * n + j] = s / d;
-        }
-    }
+// A = L D L^T in place for this model's 2 x 2 mass matrix (row-major, lower
+// triangle read), rows and columns eliminated in the order q0 q1 (minimum
+// degree). The 1 entries below the diagonal that are zero in every state are
+// skipped (no fill-in). On return L (unit diagonal) of the permuted matrix is
+// where M's lower triangle was and the diagonal holds 1/D.
+static void nrel5mw_land_2dof_mass_ldlt_factor(double* A) {
+    const double d0 = A[0];
+    const double r0 = 1.0 / d0;
+    A[0] = r0;
+    const double d1 = A[3];
+    const double r1 = 1.0 / d1;
+    A[3] = r1;
 }
 
-// Solves (L D L^T) X = B in place for the n x m row-major block B.
-static void nrel5mw_land_2dof_ldlt_solve(const double* LD, int n, double* B, int m) {
+// Solves (L D L^T) X = B in place for the 2 x m row-major block B, with LD
+// from nrel5mw_land_2dof_mass_ldlt_factor.
+static void nrel5mw_land_2dof_mass_ldlt_solve(const double* LD, double* B, int m) {
     for (int c = 0; c < m; ++c) {
-        for (int i = 0; i < n; ++i) {
-            double s = B[i * m + c];
-            for (int k = 0; k < i; ++k) s -= LD[i * n + k] * B[k * m + c];
-            B[i * m + c] = s;
-        }
-        for (int i = 0; i < n; ++i) B[i * m + c] /= LD[i * n + i];
-        for (int i = n - 1; i >= 0; --i) {
-            double s = B[i * m + c];
-            for (int k = i + 1; k < n; ++k) s -= LD[k * n + i] * B[k * m + c];
-            B[i * m + c] = s;
-        }
+        double* b = B + c;
+        const double y0 = b[0];
+        const double y1 = b[m];
+        const double x1 = y1 * LD[3];
+        const double x0 = y0 * LD[0];
+        b[0] = x0;
+        b[m] = x1;
     }
 }
 
@@ -313,8 +307,8 @@ void nrel5mw_land_2dof_rhs(nrel5mw_land_2dof_real t, const nrel5mw_land_2dof_rea
     M[3] = p->J_xR;
     xdot[2] = 1.8520547945205551e-38*p->x_NG*t16 + 1e-54*t10*t11*(p->M_R*t10*t20 + 1e+36*p->g*p->M_R*t10*t21) + 1e-54*t9*(1e+36*p->g*p->M_R*(t2*t6 + t3*t0) - p->M_R*(t6*t19 + t0*t17)) + 1064.8511218419937*x[0]*p->g + 1e-18*u[0]*t9 + 1e-54*t12*t11*(1e+36*p->g*p->M_R*t12*t21 + p->M_R*t12*t20) - 1912686.284595107*x[0] - 6426.575286577631*x[2] - 4.8e-53*(2.0833333333333376e+16*t2 - 313137786358641.0*t4)*t16 - 4.8e-53*t22*(2.0833333333333376e+16*t3 + 313137786358641.0*t7) - 1.8520547945205551e-38*p->z_NG*t22;
     xdot[3] = u[1] - u[2];
-    nrel5mw_land_2dof_ldlt_factor(M, 2);
-    nrel5mw_land_2dof_ldlt_solve(M, 2, xdot + 2, 1);
+    nrel5mw_land_2dof_mass_ldlt_factor(M);
+    nrel5mw_land_2dof_mass_ldlt_solve(M, xdot + 2, 1);
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
@@ -369,8 +363,8 @@ void nrel5mw_land_2dof_rhs_jacobian(nrel5mw_land_2dof_real t, const nrel5mw_land
     M[3] = p->J_xR;
     qdd[0] = 1.8520547945205551e-38*p->x_NG*t17 + 1e-54*t10*t11*t25 + 1e-54*t9*t28 + 1064.8511218419937*x[0]*p->g + 1e-18*u[0]*t9 + 1e-54*t12*t11*t33 - 1912686.284595107*x[0] - 6426.575286577631*x[2] - 4.8e-53*t29*t17 - 4.8e-53*t31*t32 - 1.8520547945205551e-38*p->z_NG*t31;
     qdd[1] = u[1] - u[2];
-    nrel5mw_land_2dof_ldlt_factor(M, 2);
-    nrel5mw_land_2dof_ldlt_solve(M, 2, qdd, 1);
+    nrel5mw_land_2dof_mass_ldlt_factor(M);
+    nrel5mw_land_2dof_mass_ldlt_solve(M, qdd, 1);
     const double t34 = 1.8520547945205552e+34*t15 - 2.783752025141157e+32*x[2]*x[2]*p->M_N*t3;
     const double t35 = 2.783752025141157e+32*x[2]*x[2]*p->M_N*t2 - 1.8520547945205552e+34*t30;
     const double t36 = t2 + 0.01852054794520555*t4;
@@ -398,7 +392,7 @@ void nrel5mw_land_2dof_rhs_jacobian(nrel5mw_land_2dof_real t, const nrel5mw_land
     J[13] = 0.0;
     J[14] = 0.0;
     J[15] = 0.0;
-    nrel5mw_land_2dof_ldlt_solve(M, 2, J + 8, 4);
+    nrel5mw_land_2dof_mass_ldlt_solve(M, J + 8, 4);
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
@@ -449,8 +443,8 @@ void nrel5mw_land_2dof_linear(const nrel5mw_land_2dof_real* q0, const nrel5mw_la
     M[3] = p->J_xR;
     qdd0[0] = 1.8520547945205551e-38*p->x_NG*t18 + 1e-54*t10*t11*t26 + 1e-54*t9*t29 + 1064.8511218419937*q0[0]*p->g + 1e-18*u0[0]*t9 + 1e-54*t12*t11*t34 - 1912686.284595107*q0[0] - 6426.575286577631*qd0[0] - 4.8e-53*t30*t18 - 4.8e-53*t32*t33 - 1.8520547945205551e-38*p->z_NG*t32;
     qdd0[1] = u0[1] - u0[2];
-    nrel5mw_land_2dof_ldlt_factor(M, 2);
-    nrel5mw_land_2dof_ldlt_solve(M, 2, qdd0, 1);
+    nrel5mw_land_2dof_mass_ldlt_factor(M);
+    nrel5mw_land_2dof_mass_ldlt_solve(M, qdd0, 1);
     const double t35 = qd0[0]*t2;
     const double t36 = 6.860213923813151e+32*qd0[0]*p->x_NG - 3.0061227490429535e+34*t35;
     const double t37 = 6.860213923813151e+32*qd0[0]*p->x_NR - 3.0061227490429535e+34*t35;
@@ -543,8 +537,8 @@ void nrel5mw_land_2dof_state_space(const nrel5mw_land_2dof_real* q0, const nrel5
     M[3] = p->J_xR;
     qdd0[0] = 1.8520547945205551e-38*p->x_NG*t17 + 1e-54*t10*t11*t25 + 1e-54*t9*t28 + 1064.8511218419937*q0[0]*p->g + 1e-18*u0[0]*t9 + 1e-54*t12*t11*t33 - 1912686.284595107*q0[0] - 6426.575286577631*qd0[0] - 4.8e-53*t29*t17 - 4.8e-53*t31*t32 - 1.8520547945205551e-38*p->z_NG*t31;
     qdd0[1] = u0[1] - u0[2];
-    nrel5mw_land_2dof_ldlt_factor(M, 2);
-    nrel5mw_land_2dof_ldlt_solve(M, 2, qdd0, 1);
+    nrel5mw_land_2dof_mass_ldlt_factor(M);
+    nrel5mw_land_2dof_mass_ldlt_solve(M, qdd0, 1);
     const double t34 = 1.8520547945205552e+34*t15 - 2.783752025141157e+32*qd0[0]*qd0[0]*p->M_N*t3;
     const double t35 = 2.783752025141157e+32*qd0[0]*qd0[0]*p->M_N*t2 - 1.8520547945205552e+34*t30;
     const double t36 = t2 + 0.01852054794520555*t4;
@@ -578,8 +572,8 @@ void nrel5mw_land_2dof_state_space(const nrel5mw_land_2dof_real* q0, const nrel5
     B[9] = 0.0;
     B[10] = 1.0;
     B[11] = -1.0;
-    nrel5mw_land_2dof_ldlt_solve(M, 2, A + 8, 4);
-    nrel5mw_land_2dof_ldlt_solve(M, 2, B + 6, 3);
+    nrel5mw_land_2dof_mass_ldlt_solve(M, A + 8, 4);
+    nrel5mw_land_2dof_mass_ldlt_solve(M, B + 6, 3);
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu

@@ -39,13 +39,13 @@
 //   jacobians         65 adds, 199 muls, 0 divs, 6 calls
 //   outputs_from_qdd  0 adds, 1 muls, 0 divs, 0 calls
 //   outputs           0 adds, 1 muls, 0 divs, 0 calls
-//   rhs               47 adds, 121 muls, 3 divs, 6 calls
-//   rhs_jacobian      108 adds, 296 muls, 11 divs, 6 calls
-//   linear            100 adds, 289 muls, 3 divs, 6 calls
-//   state_space       114 adds, 303 muls, 17 divs, 6 calls
+//   rhs               44 adds, 119 muls, 2 divs, 6 calls
+//   rhs_jacobian      97 adds, 294 muls, 2 divs, 6 calls
+//   linear            97 adds, 287 muls, 2 divs, 6 calls
+//   state_space       97 adds, 301 muls, 2 divs, 6 calls
 //   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          218 adds, 505 muls, 13 divs, 24 calls
+//   rk4_step          206 adds, 497 muls, 9 divs, 24 calls
 
 #ifndef nrel5mw_land_2dof_YAMSC_GENERATED_H
 #define nrel5mw_land_2dof_YAMSC_GENERATED_H

@@ -95,13 +95,13 @@
 //   jacobians         365 adds, 1516 muls, 0 divs, 2 calls
 //   outputs_from_qdd  0 adds, 2 muls, 0 divs, 0 calls
 //   outputs           0 adds, 2 muls, 0 divs, 0 calls
-//   rhs               313 adds, 1071 muls, 6 divs, 2 calls
-//   rhs_jacobian      815 adds, 2835 muls, 24 divs, 8 calls
-//   linear            789 adds, 2845 muls, 6 divs, 8 calls
-//   state_space       849 adds, 2905 muls, 36 divs, 8 calls
+//   rhs               313 adds, 1073 muls, 3 divs, 2 calls
+//   rhs_jacobian      815 adds, 2855 muls, 3 divs, 8 calls
+//   linear            789 adds, 2847 muls, 3 divs, 8 calls
+//   state_space       849 adds, 2937 muls, 3 divs, 8 calls
 //   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          1296 adds, 4315 muls, 25 divs, 8 calls
+//   rk4_step          1296 adds, 4323 muls, 13 divs, 8 calls
 
 #include "nrel5mw_land_3dof.h"
 
@@ -113,37 +113,46 @@ const char* const nrel5mw_land_3dof_input_names[4] = {"f_a", "tau_a", "f_e1", "f
 const char* const nrel5mw_land_3dof_param_names[65] = {"g", "theta_t", "M_N", "x_NG", "z_NG", "J_xN", "J_yN", "M_R", "x_NR", "z_NR", "J_xR", "J_oR", "Omega", "tower_mass", "tower_n1_origin1_1_1_1", "tower_n1_origin1_2_1_2", "tower_n1_origin_3_1", "tower_n1_phi_1_1", "tower_n1_phi_2_2", "tower_n1_phi1_3_1_1", "tower_n1_phi1_3_2_2", "tower_n1_psi_1_2", "tower_n1_psi_2_1", "tower_n1_AP_1_1", "tower_n1_AP1_1_3_1", "tower_n1_AP_2_2", "tower_n1_AP1_2_3_2", "tower_n1_AP1_3_1_1", "tower_n1_AP1_3_2_2", "tower_n1_AP_3_3", "tower_mdCM1_1_1_1", "tower_mdCM1_2_1_2", "tower_mdCM_3_1", "tower_J_1_1", "tower_J1_1_3_1", "tower_J_2_2", "tower_J1_2_3_2", "tower_Ct_1_1", "tower_Ct1_1_3_1", "tower_Ct_2_2", "tower_Ct1_2_3_2", "tower_Cr_1_2", "tower_Cr1_1_3_2", "tower_Cr_2_1", "tower_Cr1_2_3_1", "tower_Me_1_1", "tower_Me_2_2", "tower_Gr_1_3", "tower_Gr_2_6", "tower_Ge_1_6", "tower_Ge_2_3", "tower_Oe1_1_1_1", "tower_Oe1_1_2_1", "tower_Oe1_1_3_1", "tower_Oe1_1_4_2", "tower_Oe_1_6", "tower_Oe1_2_1_2", "tower_Oe1_2_2_2", "tower_Oe1_2_3_2", "tower_Oe1_2_4_1", "tower_Oe_2_5", "tower_Ke_1_1", "tower_Ke_2_2", "tower_De_1_1", "tower_De_2_2"};
 const char* const nrel5mw_land_3dof_output_names[3] = {"tt_fa", "tt_ss", "rotor_speed"};
 
-// In-place LDL^T factorisation of the symmetric positive definite n x n matrix A
-// (row-major; only the lower triangle is read): on return the strict lower
-// triangle holds L (unit diagonal) and the diagonal holds D. No pivoting and no
-// square roots: a mass matrix is positive definite.
-static void nrel5mw_land_3dof_ldlt_factor(double* A, int n) {
-    for (int j = 0; j < n; ++j) {
-        double d = A[j * n + j];
-        for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k] * A[k * n + k];
-        A[j * n + j] = d;
-        for (int i = j + 1; i < n; ++i) {
-            double s = A[i * n + j];
-            for (int k = 0; k < j; ++k) s -= A[i * n + k] * A[j * n + k] * A[k * n + k];
-            A[i * n + j] = s / d;
-        }
-    }
+// A = L D L^T in place for this model's 3 x 3 mass matrix (row-major, lower
+// triangle read), rows and columns eliminated in the order q0 q1 q2 (minimum
+// degree). M has no structural zeros below the diagonal. On return L (unit
+// diagonal) of the permuted matrix is where M's lower triangle was and the
+// diagonal holds 1/D.
+static void nrel5mw_land_3dof_mass_ldlt_factor(double* A) {
+    const double d0 = A[0];
+    const double r0 = 1.0 / d0;
+    A[0] = r0;
+    const double w1_0 = A[3];
+    const double l1_0 = w1_0 * r0;
+    A[3] = l1_0;
+    const double w2_0 = A[6];
+    const double l2_0 = w2_0 * r0;
+    A[6] = l2_0;
+    const double d1 = A[4] - l1_0 * w1_0;
+    const double r1 = 1.0 / d1;
+    A[4] = r1;
+    const double w2_1 = A[7] - l2_0 * w1_0;
+    const double l2_1 = w2_1 * r1;
+    A[7] = l2_1;
+    const double d2 = A[8] - l2_0 * w2_0 - l2_1 * w2_1;
+    const double r2 = 1.0 / d2;
+    A[8] = r2;
 }
 
-// Solves (L D L^T) X = B in place for the n x m row-major block B.
-static void nrel5mw_land_3dof_ldlt_solve(const double* LD, int n, double* B, int m) {
+// Solves (L D L^T) X = B in place for the 3 x m row-major block B, with LD
+// from nrel5mw_land_3dof_mass_ldlt_factor.
+static void nrel5mw_land_3dof_mass_ldlt_solve(const double* LD, double* B, int m) {
     for (int c = 0; c < m; ++c) {
-        for (int i = 0; i < n; ++i) {
-            double s = B[i * m + c];
-            for (int k = 0; k < i; ++k) s -= LD[i * n + k] * B[k * m + c];
-            B[i * m + c] = s;
-        }
-        for (int i = 0; i < n; ++i) B[i * m + c] /= LD[i * n + i];
-        for (int i = n - 1; i >= 0; --i) {
-            double s = B[i * m + c];
-            for (int k = i + 1; k < n; ++k) s -= LD[k * n + i] * B[k * m + c];
-            B[i * m + c] = s;
-        }
+        double* b = B + c;
+        const double y0 = b[0];
+        const double y1 = b[m] - LD[3] * y0;
+        const double y2 = b[2 * m] - LD[6] * y0 - LD[7] * y1;
+        const double x2 = y2 * LD[8];
+        const double x1 = y1 * LD[4] - LD[7] * x2;
+        const double x0 = y0 * LD[0] - LD[6] * x2 - LD[3] * x1;
+        b[0] = x0;
+        b[m] = x1;
+        b[2 * m] = x2;
     }
 }
 
@@ -1363,8 +1372,8 @@ void nrel5mw_land_3dof_rhs(nrel5mw_land_3dof_real t, const nrel5mw_land_3dof_rea
     xdot[3] = p->tower_n1_psi_2_1*(p->theta_t*(u[0]*t4 + t25*t2 + x[0]*p->tower_n1_phi1_3_1_1*t0*t28 + x[0]*p->tower_n1_phi1_3_1_1*t5*t30 - x[0]*p->tower_n1_phi1_3_1_1*t26 - t0*t27*t2 - t5*t2*t29) + t5*t4*t29 + t0*t27*t4 + p->x_NG*t31 + p->tower_n1_phi_1_1*t32 + p->tower_n1_phi_1_1*t26 + u[0]*t2 - x[0]*p->tower_n1_phi_1_1*t31) + p->tower_n1_psi_1_2*p->tower_n1_psi_1_2*(p->theta_t*(0.5*x[0]*x[1]*x[1]*u[0]*p->tower_n1_phi1_3_1_1 + p->tower_n1_phi_1_1*t0*t35 + p->tower_n1_phi_1_1*t5*t36 - p->tower_n1_phi_1_1*(0.5*x[1]*x[1]*p->g*p->M_R + p->M_R*t34)) + x[0]*p->tower_n1_phi1_3_1_1*t38 + 0.5*x[0]*x[1]*x[1]*p->tower_n1_phi1_3_1_1*t31 + 0.5*x[0]*x[1]*x[1]*p->tower_n1_phi1_3_1_1*t5*t29 + x[0]*p->tower_n1_phi1_3_1_1*t5*t36 + 0.5*x[0]*x[1]*x[1]*p->tower_n1_phi1_3_1_1*t0*t27 + x[0]*p->tower_n1_phi1_3_1_1*t0*t35 - x[0]*x[1]*p->tower_n1_phi1_3_1_1*t37 - x[0]*x[1]*p->tower_n1_phi1_3_1_1*t0*t39 - x[0]*x[1]*p->tower_n1_phi1_3_1_1*t5*t40) + p->tower_n1_psi_2_1*p->tower_n1_psi_2_1*(p->theta_t*(0.5*x[0]*x[0]*x[0]*u[0]*p->tower_n1_phi1_3_1_1 + t4*t26 + t5*(0.5*x[0]*x[0]*p->tower_n1_phi_1_1*t29 + p->tower_n1_phi_1_1*t43) + x[0]*x[3]*x[3]*p->M_R*p->x_NR*p->tower_n1_phi1_3_1_1*t5*t5 + t0*(0.5*x[0]*x[0]*p->tower_n1_phi_1_1*t27 + p->tower_n1_phi_1_1*t44) + x[0]*x[3]*x[3]*p->M_R*p->x_NR*p->tower_n1_phi1_3_1_1*t0*t0 - p->tower_n1_phi_1_1*(0.5*x[0]*x[0]*p->g*p->M_R + p->M_R*t42) - 0.5*x[0]*x[0]*p->tower_n1_phi_1_1*t25 - x[0]*x[3]*x[3]*p->M_R*p->x_NR*p->tower_n1_phi1_3_1_1 - t5*t4*t30 - t0*t28*t4) + p->z_NG*t32 + 0.5*x[0]*x[0]*x[0]*p->tower_n1_phi1_3_1_1*t31 + x[0]*p->tower_n1_phi1_3_1_1*t45 + 0.5*x[0]*x[0]*x[0]*p->tower_n1_phi1_3_1_1*t0*t27 + x[0]*p->tower_n1_phi1_3_1_1*t0*t44 + x[3]*x[3]*p->M_R*p->x_NR*p->tower_n1_phi_1_1 + t2*t26 + x[3]*x[3]*p->M_N*p->x_NG*p->tower_n1_phi_1_1 + x[0]*p->tower_n1_phi1_3_1_1*t5*t43 + 0.5*x[0]*x[0]*x[0]*p->tower_n1_phi1_3_1_1*t5*t29 - 0.5*x[0]*x[0]*u[0]*p->tower_n1_phi_1_1 - x[0]*x[0]*p->tower_n1_phi1_3_1_1*t32) + p->tower_n1_psi_1_2*p->tower_n1_psi_2_1*(p->theta_t*(x[1]*u[1] + x[0]*x[1]*p->tower_n1_phi1_3_1_1*t0*t30 + t0*t2*t40 - x[4]*x[5]*p->J_xR*t0*t0 - x[4]*x[5]*p->J_xR*t5*t5 - t5*t2*t39 - x[0]*x[1]*p->tower_n1_phi1_3_1_1*t5*t28) + t5*t4*t39 + t5*t27*t10 - t0*t29*t10 - t0*t4*t40) + p->theta_t*(p->tower_n1_phi_1_1*t25 - p->tower_n1_phi_1_1*t0*t27 - p->tower_n1_phi_1_1*t5*t29 - x[0]*u[0]*p->tower_n1_phi1_3_1_1) + u[2] + u[0]*p->tower_n1_phi_1_1 - p->tower_n1_psi_1_2*(p->theta_t*(p->tower_n1_phi_1_1*t5*t39 - p->tower_n1_phi_1_1*t0*t40) + x[0]*x[1]*p->tower_n1_phi1_3_1_1*t0*t29 + x[0]*p->tower_n1_phi1_3_1_1*t5*t39 - x[0]*x[1]*p->tower_n1_phi1_3_1_1*t5*t27 - x[0]*p->tower_n1_phi1_3_1_1*t0*t40) - x[0]*p->tower_n1_phi1_3_1_1*t0*t27 - x[3]*p->tower_De_1_1 - x[0]*p->g*p->tower_Ct1_1_3_1 - x[0]*p->tower_n1_phi1_3_1_1*t5*t29 - x[0]*p->tower_Ke_1_1 - x[0]*p->tower_n1_phi1_3_1_1*t31;
     xdot[4] = p->theta_t*p->tower_n1_psi_1_2*p->tower_n1_psi_2_1*(x[1]*p->tower_n1_phi_2_2*t26 + x[3]*x[5]*p->J_xR*t5*t5 + x[3]*x[5]*p->J_xR*t0*t0 + t28*t15 + x[0]*x[1]*p->tower_n1_phi1_3_2_2*t5*t39 - x[0]*x[1]*p->tower_n1_phi1_3_2_2*t0*t40 - t14*t30) + p->tower_n1_psi_1_2*(x[1]*u[0]*p->theta_t*p->tower_n1_phi_2_2 + u[1] + x[1]*p->tower_n1_phi_2_2*t31 + t14*t29 - p->tower_n1_phi_2_2*t37 - t40*t16 - t27*t15 - t17*t39) + p->tower_n1_psi_2_1*p->tower_n1_psi_2_1*(p->theta_t*(0.5*x[0]*x[0]*x[1]*u[0]*p->tower_n1_phi1_3_2_2 + x[3]*x[3]*p->M_R*p->x_NR*t5*t17 - x[1]*x[3]*x[3]*p->M_R*p->x_NR*p->tower_n1_phi1_3_2_2 - x[3]*x[3]*p->M_R*p->x_NR*t0*t16) + t17*t43 + 0.5*x[0]*x[0]*x[1]*p->tower_n1_phi1_3_2_2*t5*t29 + 0.5*x[0]*x[0]*x[1]*p->tower_n1_phi1_3_2_2*t0*t27 + 0.5*x[0]*x[0]*x[1]*p->tower_n1_phi1_3_2_2*t31 + x[1]*p->tower_n1_phi1_3_2_2*t45 - x[0]*x[1]*p->tower_n1_phi1_3_2_2*t32 - x[0]*x[1]*p->tower_n1_phi1_3_2_2*t26 - t44*t16) + p->tower_n1_psi_1_2*p->tower_n1_psi_1_2*(0.5*x[1]*x[1]*x[1]*u[0]*p->theta_t*p->tower_n1_phi1_3_2_2 + p->z_NG*t37 + t40*t15 + t27*t20 + t14*t39 + t17*t36 + t29*t21 + x[1]*p->tower_n1_phi1_3_2_2*t38 + 0.5*x[1]*x[1]*x[1]*p->tower_n1_phi1_3_2_2*t31 - x[1]*x[1]*p->tower_n1_phi1_3_2_2*t37 - t35*t16) + u[3] + t27*t16 - p->tower_n1_psi_2_1*(x[0]*x[1]*u[0]*p->tower_n1_phi1_3_2_2 + p->theta_t*(x[0]*x[1]*p->tower_n1_phi1_3_2_2*t25 + x[1]*p->tower_n1_phi1_3_2_2*t26 + t28*t16 - x[0]*x[1]*p->tower_n1_phi1_3_2_2*t0*t27 - t30*t17 - x[0]*x[1]*p->tower_n1_phi1_3_2_2*t5*t29)) - x[1]*u[0]*p->theta_t*p->tower_n1_phi1_3_2_2 - x[1]*p->g*p->tower_Ct1_2_3_2 - t17*t29 - x[4]*p->tower_De_2_2 - x[1]*p->tower_Ke_2_2 - x[1]*p->tower_n1_phi1_3_2_2*t31;
     xdot[5] = u[1] - x[3]*x[4]*p->theta_t*p->J_xR*p->tower_n1_psi_1_2*p->tower_n1_psi_2_1;
-    nrel5mw_land_3dof_ldlt_factor(M, 3);
-    nrel5mw_land_3dof_ldlt_solve(M, 3, xdot + 3, 1);
+    nrel5mw_land_3dof_mass_ldlt_factor(M);
+    nrel5mw_land_3dof_mass_ldlt_solve(M, xdot + 3, 1);
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
@@ -1373,10 +1382,10 @@ void nrel5mw_land_3dof_rhs_jacobian(nrel5mw_land_3dof_real t, const nrel5mw_land
     double qdd[3];
     double w[59];
     nrel5mw_land_3dof_rhs_jacobian_part0(t, x, u, p, J, M, qdd, w);
-    nrel5mw_land_3dof_ldlt_factor(M, 3);
-    nrel5mw_land_3dof_ldlt_solve(M, 3, qdd, 1);
+    nrel5mw_land_3dof_mass_ldlt_factor(M);
+    nrel5mw_land_3dof_mass_ldlt_solve(M, qdd, 1);
     nrel5mw_land_3dof_rhs_jacobian_part1(t, x, u, p, J, M, qdd, w);
-    nrel5mw_land_3dof_ldlt_solve(M, 3, J + 18, 6);
+    nrel5mw_land_3dof_mass_ldlt_solve(M, J + 18, 6);
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
@@ -1385,8 +1394,8 @@ void nrel5mw_land_3dof_linear(const nrel5mw_land_3dof_real* q0, const nrel5mw_la
     double qdd0[3];
     double w[59];
     nrel5mw_land_3dof_linear_part0(q0, qd0, u0, p, M0, C0, K0, Q0, M, qdd0, w);
-    nrel5mw_land_3dof_ldlt_factor(M, 3);
-    nrel5mw_land_3dof_ldlt_solve(M, 3, qdd0, 1);
+    nrel5mw_land_3dof_mass_ldlt_factor(M);
+    nrel5mw_land_3dof_mass_ldlt_solve(M, qdd0, 1);
     nrel5mw_land_3dof_linear_part1(q0, qd0, u0, p, M0, C0, K0, Q0, M, qdd0, w);
 }
 
@@ -1396,11 +1405,11 @@ void nrel5mw_land_3dof_state_space(const nrel5mw_land_3dof_real* q0, const nrel5
     double qdd0[3];
     double w[59];
     nrel5mw_land_3dof_state_space_part0(q0, qd0, u0, p, A, B, M, qdd0, w);
-    nrel5mw_land_3dof_ldlt_factor(M, 3);
-    nrel5mw_land_3dof_ldlt_solve(M, 3, qdd0, 1);
+    nrel5mw_land_3dof_mass_ldlt_factor(M);
+    nrel5mw_land_3dof_mass_ldlt_solve(M, qdd0, 1);
     nrel5mw_land_3dof_state_space_part1(q0, qd0, u0, p, A, B, M, qdd0, w);
-    nrel5mw_land_3dof_ldlt_solve(M, 3, A + 18, 6);
-    nrel5mw_land_3dof_ldlt_solve(M, 3, B + 12, 4);
+    nrel5mw_land_3dof_mass_ldlt_solve(M, A + 18, 6);
+    nrel5mw_land_3dof_mass_ldlt_solve(M, B + 12, 4);
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu

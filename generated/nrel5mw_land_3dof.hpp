@@ -94,10 +94,10 @@
 //   jacobians         365 adds, 1516 muls, 0 divs, 2 calls
 //   outputs_from_qdd  0 adds, 2 muls, 0 divs, 0 calls
 //   outputs           0 adds, 2 muls, 0 divs, 0 calls
-//   rhs               313 adds, 1071 muls, 6 divs, 2 calls
-//   rhs_jacobian      815 adds, 2835 muls, 24 divs, 8 calls
-//   linear            789 adds, 2845 muls, 6 divs, 8 calls
-//   state_space       849 adds, 2905 muls, 36 divs, 8 calls
+//   rhs               313 adds, 1073 muls, 3 divs, 2 calls
+//   rhs_jacobian      815 adds, 2855 muls, 3 divs, 8 calls
+//   linear            789 adds, 2847 muls, 3 divs, 8 calls
+//   state_space       849 adds, 2937 muls, 3 divs, 8 calls
 //   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 

@@ -73,12 +73,12 @@
 //   forcing           167 adds, 488 muls, 0 divs, 12 calls
 //   jacobians         618 adds, 1884 muls, 0 divs, 12 calls
 //   outputs_from_qdd  44 adds, 118 muls, 0 divs, 10 calls
-//   outputs           278 adds, 735 muls, 10 divs, 22 calls
-//   rhs               234 adds, 617 muls, 10 divs, 12 calls
-//   rhs_jacobian      953 adds, 2556 muls, 42 divs, 12 calls
-//   linear            864 adds, 2491 muls, 10 divs, 12 calls
-//   state_space       1044 adds, 2671 muls, 70 divs, 12 calls
-//   output_matrices   1163 adds, 2900 muls, 70 divs, 12 calls
+//   outputs           269 adds, 724 muls, 4 divs, 22 calls
+//   rhs               225 adds, 606 muls, 4 divs, 12 calls
+//   rhs_jacobian      912 adds, 2545 muls, 4 divs, 12 calls
+//   linear            855 adds, 2480 muls, 4 divs, 12 calls
+//   state_space       975 adds, 2660 muls, 4 divs, 12 calls
+//   output_matrices   1094 adds, 2889 muls, 4 divs, 12 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #include "nrel5mw_land_operating.hpp"
@@ -88,37 +88,55 @@
 namespace nrel5mw_land_operating {
 namespace {
 
-// In-place LDL^T factorisation of the symmetric positive definite n x n matrix A
-// (row-major; only the lower triangle is read): on return the strict lower
-// triangle holds L (unit diagonal) and the diagonal holds D. No pivoting and no
-// square roots: a mass matrix is positive definite.
-void ldlt_factor(double* A, int n) {
-    for (int j = 0; j < n; ++j) {
-        double d = A[j * n + j];
-        for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k] * A[k * n + k];
-        A[j * n + j] = d;
-        for (int i = j + 1; i < n; ++i) {
-            double s = A[i * n + j];
-            for (int k = 0; k < j; ++k) s -= A[i * n + k] * A[j * n + k] * A[k * n + k];
-            A[i * n + j] = s / d;
-        }
-    }
+// A = L D L^T in place for this model's 4 x 4 mass matrix (row-major, lower
+// triangle read), rows and columns eliminated in the order q0 q2 q3 q1 (minimum
+// degree). The 2 entries below the diagonal that are zero in every state are
+// skipped (no fill-in). On return L (unit diagonal) of the permuted matrix is
+// where M's lower triangle was and the diagonal holds 1/D.
+void mass_ldlt_factor(double* A) {
+    const double d0 = A[0];
+    const double r0 = 1.0 / d0;
+    A[0] = r0;
+    const double w1_0 = A[4];
+    const double l1_0 = w1_0 * r0;
+    A[4] = l1_0;
+    const double d2 = A[10];
+    const double r2 = 1.0 / d2;
+    A[10] = r2;
+    const double w3_2 = A[14];
+    const double l3_2 = w3_2 * r2;
+    A[14] = l3_2;
+    const double w1_2 = A[9];
+    const double l1_2 = w1_2 * r2;
+    A[9] = l1_2;
+    const double d3 = A[15] - l3_2 * w3_2;
+    const double r3 = 1.0 / d3;
+    A[15] = r3;
+    const double w1_3 = A[13] - l1_2 * w3_2;
+    const double l1_3 = w1_3 * r3;
+    A[13] = l1_3;
+    const double d1 = A[5] - l1_0 * w1_0 - l1_2 * w1_2 - l1_3 * w1_3;
+    const double r1 = 1.0 / d1;
+    A[5] = r1;
 }
 
-// Solves (L D L^T) X = B in place for the n x m row-major block B.
-void ldlt_solve(const double* LD, int n, double* B, int m) {
+// Solves (L D L^T) X = B in place for the 4 x m row-major block B, with LD
+// from mass_ldlt_factor.
+void mass_ldlt_solve(const double* LD, double* B, int m) {
     for (int c = 0; c < m; ++c) {
-        for (int i = 0; i < n; ++i) {
-            double s = B[i * m + c];
-            for (int k = 0; k < i; ++k) s -= LD[i * n + k] * B[k * m + c];
-            B[i * m + c] = s;
-        }
-        for (int i = 0; i < n; ++i) B[i * m + c] /= LD[i * n + i];
-        for (int i = n - 1; i >= 0; --i) {
-            double s = B[i * m + c];
-            for (int k = i + 1; k < n; ++k) s -= LD[k * n + i] * B[k * m + c];
-            B[i * m + c] = s;
-        }
+        double* b = B + c;
+        const double y0 = b[0];
+        const double y2 = b[2 * m];
+        const double y3 = b[3 * m] - LD[14] * y2;
+        const double y1 = b[m] - LD[4] * y0 - LD[9] * y2 - LD[13] * y3;
+        const double x1 = y1 * LD[5];
+        const double x3 = y3 * LD[15] - LD[13] * x1;
+        const double x2 = y2 * LD[10] - LD[9] * x1 - LD[14] * x3;
+        const double x0 = y0 * LD[0] - LD[4] * x1;
+        b[0] = x0;
+        b[2 * m] = x2;
+        b[3 * m] = x3;
+        b[m] = x1;
     }
 }
 
@@ -3291,8 +3309,8 @@ void rhs(double t, const double* x, const double* u, const Params& p, double* xd
     xdot[5] = u[6] + 8.083272069499261e-06*p.GenIner*t99*t50 + 1.023676568570099e-34*t50*(7.89631443922782e+28*t100 + t101 - t102) + 5e-52*(t47 - t48)*t90 + 5e-52*t4*t31*t56 + 2.089135854224692e-36*t96*t38 + 0.02089135854224692*t4*(p.GBRatio*t3*t1*t92*t93 + p.GBRatio*t7*t1*t92*t97 - p.GBRatio*t4*t50*t92) + 1044.8178448925578*x[1]*p.Gravity + 5e-18*u[2]*t46 + 2.089135854224692e-36*t37*t91 + 0.02089135854224692*p.GBRatio*t50*t92 + 5.849580391829138e-35*p.GenIner*t82*t36*t83*t94 - 1838549.327842203*x[1] - 6285.240294776687*x[5] - 0.02089135854224692*t1*(p.GBRatio*t1*t50*t92 + p.GBRatio*t3*t4*t92*t93 + p.GBRatio*t7*t4*t92*t97) - 5e-52*(t42 + t44)*t80 - 2.089135854224692e-36*t1*(4.0*p.NacCMzn*t98 + 3.869194075221632e+30*x[4]*x[5]*t4*t51 + p.NacCMyn*t87) - 0.02089135854224692*u[3]*t50 - 5e-52*t1*t87*t31 - 5.849580391829138e-35*p.GenIner*t84*t36*t83*t85 - 5e-52*t95*t46 - 2e-51*t98*(1.9999999999999997e+17*t3 - 2983727322899657.0*t34) - 2.089135854224692e-36*t4*(3.869194075221632e+30*x[4]*x[5]*t1*t51 - 4.0*p.NacCMxn*t98 - p.NacCMyn*t56);
     xdot[6] = u[3] + 4.9e-33*t102 - 0.0003869194075221632*p.GenIner*p.GBRatio*t99 - p.GBRatio*t92 - 0.0003869194075221632*t100 - 4.9e-33*t101;
     xdot[7] = u[3] + 4.9e-33*t102 - x[3]*p.DTTorSpr - 0.0003869194075221632*t100 - x[7]*p.DTTorDmp - 4.9e-33*t101;
-    ldlt_factor(M, 4);
-    ldlt_solve(M, 4, xdot + 4, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, xdot + 4, 1);
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
@@ -3302,11 +3320,11 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     double w[253];
     rhs_jacobian_part0(t, x, u, p, J, M, qdd, w);
     rhs_jacobian_part1(t, x, u, p, J, M, qdd, w);
-    ldlt_factor(M, 4);
-    ldlt_solve(M, 4, qdd, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, qdd, 1);
     rhs_jacobian_part2(t, x, u, p, J, M, qdd, w);
     rhs_jacobian_part3(t, x, u, p, J, M, qdd, w);
-    ldlt_solve(M, 4, J + 32, 8);
+    mass_ldlt_solve(M, J + 32, 8);
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
@@ -3316,8 +3334,8 @@ void linear(const double* q0, const double* qd0, const double* u0, const Params&
     double w[253];
     linear_part0(q0, qd0, u0, p, M0, C0, K0, Q0, M, qdd0, w);
     linear_part1(q0, qd0, u0, p, M0, C0, K0, Q0, M, qdd0, w);
-    ldlt_factor(M, 4);
-    ldlt_solve(M, 4, qdd0, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, qdd0, 1);
     linear_part2(q0, qd0, u0, p, M0, C0, K0, Q0, M, qdd0, w);
     linear_part3(q0, qd0, u0, p, M0, C0, K0, Q0, M, qdd0, w);
 }
@@ -3329,12 +3347,12 @@ void state_space(const double* q0, const double* qd0, const double* u0, const Pa
     double w[253];
     state_space_part0(q0, qd0, u0, p, A, B, M, qdd0, w);
     state_space_part1(q0, qd0, u0, p, A, B, M, qdd0, w);
-    ldlt_factor(M, 4);
-    ldlt_solve(M, 4, qdd0, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, qdd0, 1);
     state_space_part2(q0, qd0, u0, p, A, B, M, qdd0, w);
     state_space_part3(q0, qd0, u0, p, A, B, M, qdd0, w);
-    ldlt_solve(M, 4, A + 32, 8);
-    ldlt_solve(M, 4, B + 28, 7);
+    mass_ldlt_solve(M, A + 32, 8);
+    mass_ldlt_solve(M, B + 28, 7);
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu
@@ -3344,11 +3362,11 @@ void output_matrices(const double* q0, const double* qd0, const double* u0, cons
     double X[60];
     double w[269];
     output_matrices_part0(q0, qd0, u0, p, C, D, M, qdd0, X, w);
-    ldlt_factor(M, 4);
-    ldlt_solve(M, 4, qdd0, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, qdd0, 1);
     output_matrices_part1(q0, qd0, u0, p, C, D, M, qdd0, X, w);
     output_matrices_part2(q0, qd0, u0, p, C, D, M, qdd0, X, w);
-    ldlt_solve(M, 4, X, 15);
+    mass_ldlt_solve(M, X, 15);
     output_matrices_part3(q0, qd0, u0, p, C, D, M, qdd0, X, w);
     output_matrices_part4(q0, qd0, u0, p, C, D, M, qdd0, X, w);
 }

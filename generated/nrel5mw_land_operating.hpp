@@ -73,12 +73,12 @@
 //   forcing           167 adds, 488 muls, 0 divs, 12 calls
 //   jacobians         618 adds, 1884 muls, 0 divs, 12 calls
 //   outputs_from_qdd  44 adds, 118 muls, 0 divs, 10 calls
-//   outputs           278 adds, 735 muls, 10 divs, 22 calls
-//   rhs               234 adds, 617 muls, 10 divs, 12 calls
-//   rhs_jacobian      953 adds, 2556 muls, 42 divs, 12 calls
-//   linear            864 adds, 2491 muls, 10 divs, 12 calls
-//   state_space       1044 adds, 2671 muls, 70 divs, 12 calls
-//   output_matrices   1163 adds, 2900 muls, 70 divs, 12 calls
+//   outputs           269 adds, 724 muls, 4 divs, 22 calls
+//   rhs               225 adds, 606 muls, 4 divs, 12 calls
+//   rhs_jacobian      912 adds, 2545 muls, 4 divs, 12 calls
+//   linear            855 adds, 2480 muls, 4 divs, 12 calls
+//   state_space       975 adds, 2660 muls, 4 divs, 12 calls
+//   output_matrices   1094 adds, 2889 muls, 4 divs, 12 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once

@@ -66,13 +66,13 @@
 //   jacobians         1192 adds, 3473 muls, 0 divs, 14 calls
 //   outputs_from_qdd  2 adds, 7 muls, 0 divs, 0 calls
 //   outputs           2 adds, 7 muls, 0 divs, 0 calls
-//   rhs               356 adds, 870 muls, 15 divs, 14 calls
-//   rhs_jacobian      1829 adds, 4692 muls, 65 divs, 14 calls
-//   linear            1643 adds, 4538 muls, 15 divs, 14 calls
-//   state_space       1963 adds, 4858 muls, 95 divs, 14 calls
+//   rhs               356 adds, 865 muls, 5 divs, 14 calls
+//   rhs_jacobian      1829 adds, 4737 muls, 5 divs, 14 calls
+//   linear            1643 adds, 4533 muls, 5 divs, 14 calls
+//   state_space       1963 adds, 4933 muls, 5 divs, 14 calls
 //   output_matrices   0 adds, 1 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          1496 adds, 3531 muls, 61 divs, 56 calls
+//   rk4_step          1496 adds, 3511 muls, 21 divs, 56 calls
 
 #include "nrel5mw_land_template.h"
 
@@ -84,37 +84,79 @@ const char* const nrel5mw_land_template_input_names[6] = {"thrust", "aero_torque
 const char* const nrel5mw_land_template_param_names[20] = {"Gravity", "TowerHt", "TowerBsHt", "Twr2Shft", "OverHang", "ShftTilt", "NacCMxn", "NacCMyn", "NacCMzn", "NacMass", "NacYIner", "GenIner", "GBRatio", "DTTorSpr", "DTTorDmp", "RotMass", "RotCMx", "RotIxx", "RotIyy", "RotIzz"};
 const char* const nrel5mw_land_template_output_names[15] = {"Q_TFA1", "Q_TSS1", "NacYaw", "Azimuth", "RotSpeed", "GenSpeed", "Q_DrTr", "TTDspFA", "TTDspSS", "QD_TFA1", "QD_TSS1", "Q_Yaw", "QD_Yaw", "QD_GeAz", "QD_DrTr"};
 
-// In-place LDL^T factorisation of the symmetric positive definite n x n matrix A
-// (row-major; only the lower triangle is read): on return the strict lower
-// triangle holds L (unit diagonal) and the diagonal holds D. No pivoting and no
-// square roots: a mass matrix is positive definite.
-static void nrel5mw_land_template_ldlt_factor(double* A, int n) {
-    for (int j = 0; j < n; ++j) {
-        double d = A[j * n + j];
-        for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k] * A[k * n + k];
-        A[j * n + j] = d;
-        for (int i = j + 1; i < n; ++i) {
-            double s = A[i * n + j];
-            for (int k = 0; k < j; ++k) s -= A[i * n + k] * A[j * n + k] * A[k * n + k];
-            A[i * n + j] = s / d;
-        }
-    }
+// A = L D L^T in place for this model's 5 x 5 mass matrix (row-major, lower
+// triangle read), rows and columns eliminated in the order q0 q1 q2 q3 q4
+// (minimum degree). M has no structural zeros below the diagonal. On return L
+// (unit diagonal) of the permuted matrix is where M's lower triangle was and
+// the diagonal holds 1/D.
+static void nrel5mw_land_template_mass_ldlt_factor(double* A) {
+    const double d0 = A[0];
+    const double r0 = 1.0 / d0;
+    A[0] = r0;
+    const double w1_0 = A[5];
+    const double l1_0 = w1_0 * r0;
+    A[5] = l1_0;
+    const double w2_0 = A[10];
+    const double l2_0 = w2_0 * r0;
+    A[10] = l2_0;
+    const double w3_0 = A[15];
+    const double l3_0 = w3_0 * r0;
+    A[15] = l3_0;
+    const double w4_0 = A[20];
+    const double l4_0 = w4_0 * r0;
+    A[20] = l4_0;
+    const double d1 = A[6] - l1_0 * w1_0;
+    const double r1 = 1.0 / d1;
+    A[6] = r1;
+    const double w2_1 = A[11] - l2_0 * w1_0;
+    const double l2_1 = w2_1 * r1;
+    A[11] = l2_1;
+    const double w3_1 = A[16] - l3_0 * w1_0;
+    const double l3_1 = w3_1 * r1;
+    A[16] = l3_1;
+    const double w4_1 = A[21] - l4_0 * w1_0;
+    const double l4_1 = w4_1 * r1;
+    A[21] = l4_1;
+    const double d2 = A[12] - l2_0 * w2_0 - l2_1 * w2_1;
+    const double r2 = 1.0 / d2;
+    A[12] = r2;
+    const double w3_2 = A[17] - l3_0 * w2_0 - l3_1 * w2_1;
+    const double l3_2 = w3_2 * r2;
+    A[17] = l3_2;
+    const double w4_2 = A[22] - l4_0 * w2_0 - l4_1 * w2_1;
+    const double l4_2 = w4_2 * r2;
+    A[22] = l4_2;
+    const double d3 = A[18] - l3_0 * w3_0 - l3_1 * w3_1 - l3_2 * w3_2;
+    const double r3 = 1.0 / d3;
+    A[18] = r3;
+    const double w4_3 = A[23] - l4_0 * w3_0 - l4_1 * w3_1 - l4_2 * w3_2;
+    const double l4_3 = w4_3 * r3;
+    A[23] = l4_3;
+    const double d4 = A[24] - l4_0 * w4_0 - l4_1 * w4_1 - l4_2 * w4_2 - l4_3 * w4_3;
+    const double r4 = 1.0 / d4;
+    A[24] = r4;
 }
 
-// Solves (L D L^T) X = B in place for the n x m row-major block B.
-static void nrel5mw_land_template_ldlt_solve(const double* LD, int n, double* B, int m) {
+// Solves (L D L^T) X = B in place for the 5 x m row-major block B, with LD
+// from nrel5mw_land_template_mass_ldlt_factor.
+static void nrel5mw_land_template_mass_ldlt_solve(const double* LD, double* B, int m) {
     for (int c = 0; c < m; ++c) {
-        for (int i = 0; i < n; ++i) {
-            double s = B[i * m + c];
-            for (int k = 0; k < i; ++k) s -= LD[i * n + k] * B[k * m + c];
-            B[i * m + c] = s;
-        }
-        for (int i = 0; i < n; ++i) B[i * m + c] /= LD[i * n + i];
-        for (int i = n - 1; i >= 0; --i) {
-            double s = B[i * m + c];
-            for (int k = i + 1; k < n; ++k) s -= LD[k * n + i] * B[k * m + c];
-            B[i * m + c] = s;
-        }
+        double* b = B + c;
+        const double y0 = b[0];
+        const double y1 = b[m] - LD[5] * y0;
+        const double y2 = b[2 * m] - LD[10] * y0 - LD[11] * y1;
+        const double y3 = b[3 * m] - LD[15] * y0 - LD[16] * y1 - LD[17] * y2;
+        const double y4 = b[4 * m] - LD[20] * y0 - LD[21] * y1 - LD[22] * y2 - LD[23] * y3;
+        const double x4 = y4 * LD[24];
+        const double x3 = y3 * LD[18] - LD[23] * x4;
+        const double x2 = y2 * LD[12] - LD[22] * x4 - LD[17] * x3;
+        const double x1 = y1 * LD[6] - LD[21] * x4 - LD[16] * x3 - LD[11] * x2;
+        const double x0 = y0 * LD[0] - LD[20] * x4 - LD[15] * x3 - LD[10] * x2 - LD[5] * x1;
+        b[0] = x0;
+        b[m] = x1;
+        b[2 * m] = x2;
+        b[3 * m] = x3;
+        b[4 * m] = x4;
     }
 }
 
@@ -4046,8 +4088,8 @@ void nrel5mw_land_template_rhs(nrel5mw_land_template_real t, const nrel5mw_land_
     xdot[7] = u[5] + 1e-34*(t74 - t75)*t115 + 0.0003869194075221632*t145 + 1e-34*t4*t128 + 2.8e-33*p->GenIner*t4*t124 + 1e-34*t146 + u[2]*p->GBRatio*t4 - t142 - 1e-34*p->GenIner*t136*t26*t138*t139 - t143 - t144 - 1e-34*t129*t70 - 1e-34*p->GenIner*t137*t26*t140*t139 - 1e-34*t123*(t71 + t72) - 1e-34*t134*t69 - u[1]*t4 - 1e-34*t147;
     xdot[8] = u[1] + 1e-34*t126 - 2.8e-33*t125 - u[2]*p->GBRatio - 2.8e-33*p->GenIner*p->GBRatio*t124 - 1e-34*t127;
     xdot[9] = u[1] + 1e-34*t126 - 2.8e-33*t125 - x[4]*p->DTTorSpr - x[9]*p->DTTorDmp - 1e-34*t127;
-    nrel5mw_land_template_ldlt_factor(M, 5);
-    nrel5mw_land_template_ldlt_solve(M, 5, xdot + 5, 1);
+    nrel5mw_land_template_mass_ldlt_factor(M);
+    nrel5mw_land_template_mass_ldlt_solve(M, xdot + 5, 1);
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
@@ -4057,12 +4099,12 @@ void nrel5mw_land_template_rhs_jacobian(nrel5mw_land_template_real t, const nrel
     double w[369];
     nrel5mw_land_template_rhs_jacobian_part0(t, x, u, p, J, M, qdd, w);
     nrel5mw_land_template_rhs_jacobian_part1(t, x, u, p, J, M, qdd, w);
-    nrel5mw_land_template_ldlt_factor(M, 5);
-    nrel5mw_land_template_ldlt_solve(M, 5, qdd, 1);
+    nrel5mw_land_template_mass_ldlt_factor(M);
+    nrel5mw_land_template_mass_ldlt_solve(M, qdd, 1);
     nrel5mw_land_template_rhs_jacobian_part2(t, x, u, p, J, M, qdd, w);
     nrel5mw_land_template_rhs_jacobian_part3(t, x, u, p, J, M, qdd, w);
     nrel5mw_land_template_rhs_jacobian_part4(t, x, u, p, J, M, qdd, w);
-    nrel5mw_land_template_ldlt_solve(M, 5, J + 50, 10);
+    nrel5mw_land_template_mass_ldlt_solve(M, J + 50, 10);
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
@@ -4072,8 +4114,8 @@ void nrel5mw_land_template_linear(const nrel5mw_land_template_real* q0, const nr
     double w[375];
     nrel5mw_land_template_linear_part0(q0, qd0, u0, p, M0, C0, K0, Q0, M, qdd0, w);
     nrel5mw_land_template_linear_part1(q0, qd0, u0, p, M0, C0, K0, Q0, M, qdd0, w);
-    nrel5mw_land_template_ldlt_factor(M, 5);
-    nrel5mw_land_template_ldlt_solve(M, 5, qdd0, 1);
+    nrel5mw_land_template_mass_ldlt_factor(M);
+    nrel5mw_land_template_mass_ldlt_solve(M, qdd0, 1);
     nrel5mw_land_template_linear_part2(q0, qd0, u0, p, M0, C0, K0, Q0, M, qdd0, w);
     nrel5mw_land_template_linear_part3(q0, qd0, u0, p, M0, C0, K0, Q0, M, qdd0, w);
     nrel5mw_land_template_linear_part4(q0, qd0, u0, p, M0, C0, K0, Q0, M, qdd0, w);
@@ -4086,13 +4128,13 @@ void nrel5mw_land_template_state_space(const nrel5mw_land_template_real* q0, con
     double w[371];
     nrel5mw_land_template_state_space_part0(q0, qd0, u0, p, A, B, M, qdd0, w);
     nrel5mw_land_template_state_space_part1(q0, qd0, u0, p, A, B, M, qdd0, w);
-    nrel5mw_land_template_ldlt_factor(M, 5);
-    nrel5mw_land_template_ldlt_solve(M, 5, qdd0, 1);
+    nrel5mw_land_template_mass_ldlt_factor(M);
+    nrel5mw_land_template_mass_ldlt_solve(M, qdd0, 1);
     nrel5mw_land_template_state_space_part2(q0, qd0, u0, p, A, B, M, qdd0, w);
     nrel5mw_land_template_state_space_part3(q0, qd0, u0, p, A, B, M, qdd0, w);
     nrel5mw_land_template_state_space_part4(q0, qd0, u0, p, A, B, M, qdd0, w);
-    nrel5mw_land_template_ldlt_solve(M, 5, A + 50, 10);
-    nrel5mw_land_template_ldlt_solve(M, 5, B + 30, 6);
+    nrel5mw_land_template_mass_ldlt_solve(M, A + 50, 10);
+    nrel5mw_land_template_mass_ldlt_solve(M, B + 30, 6);
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu

@@ -65,10 +65,10 @@
 //   jacobians         1192 adds, 3473 muls, 0 divs, 14 calls
 //   outputs_from_qdd  2 adds, 7 muls, 0 divs, 0 calls
 //   outputs           2 adds, 7 muls, 0 divs, 0 calls
-//   rhs               356 adds, 870 muls, 15 divs, 14 calls
-//   rhs_jacobian      1829 adds, 4692 muls, 65 divs, 14 calls
-//   linear            1643 adds, 4538 muls, 15 divs, 14 calls
-//   state_space       1963 adds, 4858 muls, 95 divs, 14 calls
+//   rhs               356 adds, 865 muls, 5 divs, 14 calls
+//   rhs_jacobian      1829 adds, 4737 muls, 5 divs, 14 calls
+//   linear            1643 adds, 4533 muls, 5 divs, 14 calls
+//   state_space       1963 adds, 4933 muls, 5 divs, 14 calls
 //   output_matrices   0 adds, 1 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 

@@ -46,10 +46,10 @@
 //   jacobians         53 adds, 177 muls, 0 divs, 6 calls
 //   outputs_from_qdd  1 adds, 3 muls, 0 divs, 1 calls
 //   outputs           1 adds, 3 muls, 0 divs, 1 calls
-//   rhs               64 adds, 144 muls, 6 divs, 6 calls
-//   rhs_jacobian      170 adds, 395 muls, 24 divs, 6 calls
-//   linear            134 adds, 360 muls, 6 divs, 6 calls
-//   state_space       182 adds, 408 muls, 30 divs, 6 calls
+//   rhs               57 adds, 137 muls, 3 divs, 6 calls
+//   rhs_jacobian      139 adds, 382 muls, 3 divs, 6 calls
+//   linear            127 adds, 353 muls, 3 divs, 6 calls
+//   state_space       143 adds, 393 muls, 3 divs, 6 calls
 //   output_matrices   0 adds, 1 muls, 0 divs, 1 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
@@ -60,37 +60,40 @@
 namespace nrel5mw_spar_rigid {
 namespace {
 
-// In-place LDL^T factorisation of the symmetric positive definite n x n matrix A
-// (row-major; only the lower triangle is read): on return the strict lower
-// triangle holds L (unit diagonal) and the diagonal holds D. No pivoting and no
-// square roots: a mass matrix is positive definite.
-void ldlt_factor(double* A, int n) {
-    for (int j = 0; j < n; ++j) {
-        double d = A[j * n + j];
-        for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k] * A[k * n + k];
-        A[j * n + j] = d;
-        for (int i = j + 1; i < n; ++i) {
-            double s = A[i * n + j];
-            for (int k = 0; k < j; ++k) s -= A[i * n + k] * A[j * n + k] * A[k * n + k];
-            A[i * n + j] = s / d;
-        }
-    }
+// A = L D L^T in place for this model's 3 x 3 mass matrix (row-major, lower
+// triangle read), rows and columns eliminated in the order q2 q0 q1 (minimum
+// degree). The 2 entries below the diagonal that are zero in every state are
+// skipped (no fill-in). On return L (unit diagonal) of the permuted matrix is
+// where M's lower triangle was and the diagonal holds 1/D.
+void mass_ldlt_factor(double* A) {
+    const double d2 = A[8];
+    const double r2 = 1.0 / d2;
+    A[8] = r2;
+    const double d0 = A[0];
+    const double r0 = 1.0 / d0;
+    A[0] = r0;
+    const double w1_0 = A[3];
+    const double l1_0 = w1_0 * r0;
+    A[3] = l1_0;
+    const double d1 = A[4] - l1_0 * w1_0;
+    const double r1 = 1.0 / d1;
+    A[4] = r1;
 }
 
-// Solves (L D L^T) X = B in place for the n x m row-major block B.
-void ldlt_solve(const double* LD, int n, double* B, int m) {
+// Solves (L D L^T) X = B in place for the 3 x m row-major block B, with LD
+// from mass_ldlt_factor.
+void mass_ldlt_solve(const double* LD, double* B, int m) {
     for (int c = 0; c < m; ++c) {
-        for (int i = 0; i < n; ++i) {
-            double s = B[i * m + c];
-            for (int k = 0; k < i; ++k) s -= LD[i * n + k] * B[k * m + c];
-            B[i * m + c] = s;
-        }
-        for (int i = 0; i < n; ++i) B[i * m + c] /= LD[i * n + i];
-        for (int i = n - 1; i >= 0; --i) {
-            double s = B[i * m + c];
-            for (int k = i + 1; k < n; ++k) s -= LD[k * n + i] * B[k * m + c];
-            B[i * m + c] = s;
-        }
+        double* b = B + c;
+        const double y2 = b[2 * m];
+        const double y0 = b[0];
+        const double y1 = b[m] - LD[3] * y0;
+        const double x1 = y1 * LD[4];
+        const double x0 = y0 * LD[0] - LD[3] * x1;
+        const double x2 = y2 * LD[8];
+        b[2 * m] = x2;
+        b[0] = x0;
+        b[m] = x1;
     }
 }
 
@@ -305,8 +308,8 @@ void rhs(double t, const double* x, const double* u, const Params& p, double* xd
     xdot[3] = t3*t15*t7 + u[0]*t9 + t1*(x[4]*x[4]*p.M_T*p.z_TG - p.g*p.M_T*t0) + p.g*p.M_P*t0*t1 + p.g*p.M_T*t0*t1 + t0*t19 - t1*t16 - t8*t17*t7 - t9*t18 - t1*(p.g*p.M_P*t0 - x[4]*x[4]*p.M_P*p.z_PG);
     xdot[4] = p.x_NG*t16 + p.z_NG*t19 + u[0]*t6*t11 + p.g*p.M_T*p.z_TG*t1 + p.g*p.M_P*p.z_PG*t1 + t8*t17*t12 + p.L_T*t19 - t3*t15*t12 - t6*t11*t18;
     xdot[5] = u[1];
-    ldlt_factor(M, 3);
-    ldlt_solve(M, 3, xdot + 3, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, xdot + 3, 1);
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
@@ -363,8 +366,8 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     qdd[0] = t3*t15*t7 + u[0]*t9 + t1*t19 + p.g*p.M_P*t0*t1 + p.g*p.M_T*t0*t1 + t0*t21 - t1*t16 - t8*t17*t7 - t9*t18 - t1*t20;
     qdd[1] = p.x_NG*t16 + p.z_NG*t21 + u[0]*t6*t11 + p.g*p.M_T*p.z_TG*t1 + p.g*p.M_P*p.z_PG*t1 + t8*t17*t12 + p.L_T*t21 - t3*t15*t12 - t6*t11*t18;
     qdd[2] = u[1];
-    ldlt_factor(M, 3);
-    ldlt_solve(M, 3, qdd, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, qdd, 1);
     const double t22 = p.g*p.M_T*t1*t1;
     const double t23 = p.g*p.M_P*t1*t1;
     const double t24 = p.M_T*qdd[0]*t0*t1;
@@ -393,7 +396,7 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     J[33] = 0.0;
     J[34] = 0.0;
     J[35] = 0.0;
-    ldlt_solve(M, 3, J + 18, 6);
+    mass_ldlt_solve(M, J + 18, 6);
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
@@ -443,8 +446,8 @@ void linear(const double* q0, const double* qd0, const double* u0, const Params&
     qdd0[0] = t3*t18*t7 + u0[0]*t9 + t1*t22 + p.g*p.M_P*t0*t1 + p.g*p.M_T*t0*t1 + t0*t24 - t1*t19 - t8*t20*t7 - t9*t21 - t1*t23;
     qdd0[1] = p.x_NG*t19 + p.z_NG*t24 + u0[0]*t6*t12 + p.g*p.M_T*p.z_TG*t1 + p.g*p.M_P*p.z_PG*t1 + t8*t20*t13 + p.L_T*t24 - t3*t18*t13 - t6*t12*t21;
     qdd0[2] = u0[1];
-    ldlt_factor(M, 3);
-    ldlt_solve(M, 3, qdd0, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, qdd0, 1);
     const double t25 = qd0[1]*p.L_T;
     const double t26 = 2.0*qd0[1]*p.z_NG + 2.0*t25;
     const double t27 = 2.0*qd0[1]*p.z_NR + 2.0*t25;
@@ -540,8 +543,8 @@ void state_space(const double* q0, const double* qd0, const double* u0, const Pa
     qdd0[0] = t3*t15*t7 + u0[0]*t9 + t1*t19 + p.g*p.M_P*t0*t1 + p.g*p.M_T*t0*t1 + t0*t21 - t1*t16 - t8*t17*t7 - t9*t18 - t1*t20;
     qdd0[1] = p.x_NG*t16 + p.z_NG*t21 + u0[0]*t6*t11 + p.g*p.M_T*p.z_TG*t1 + p.g*p.M_P*p.z_PG*t1 + t8*t17*t12 + p.L_T*t21 - t3*t15*t12 - t6*t11*t18;
     qdd0[2] = u0[1];
-    ldlt_factor(M, 3);
-    ldlt_solve(M, 3, qdd0, 1);
+    mass_ldlt_factor(M);
+    mass_ldlt_solve(M, qdd0, 1);
     const double t22 = p.g*p.M_T*t1*t1;
     const double t23 = p.g*p.M_P*t1*t1;
     const double t24 = p.M_T*qdd0[0]*t0*t1;
@@ -576,8 +579,8 @@ void state_space(const double* q0, const double* qd0, const double* u0, const Pa
     B[9] = 0.0;
     B[10] = 0.0;
     B[11] = 1.0;
-    ldlt_solve(M, 3, A + 18, 6);
-    ldlt_solve(M, 3, B + 6, 2);
+    mass_ldlt_solve(M, A + 18, 6);
+    mass_ldlt_solve(M, B + 6, 2);
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu

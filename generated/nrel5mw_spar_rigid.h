@@ -47,13 +47,13 @@
 //   jacobians         53 adds, 177 muls, 0 divs, 6 calls
 //   outputs_from_qdd  1 adds, 3 muls, 0 divs, 1 calls
 //   outputs           1 adds, 3 muls, 0 divs, 1 calls
-//   rhs               64 adds, 144 muls, 6 divs, 6 calls
-//   rhs_jacobian      170 adds, 395 muls, 24 divs, 6 calls
-//   linear            134 adds, 360 muls, 6 divs, 6 calls
-//   state_space       182 adds, 408 muls, 30 divs, 6 calls
+//   rhs               57 adds, 137 muls, 3 divs, 6 calls
+//   rhs_jacobian      139 adds, 382 muls, 3 divs, 6 calls
+//   linear            127 adds, 353 muls, 3 divs, 6 calls
+//   state_space       143 adds, 393 muls, 3 divs, 6 calls
 //   output_matrices   0 adds, 1 muls, 0 divs, 1 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          300 adds, 607 muls, 25 divs, 24 calls
+//   rk4_step          272 adds, 579 muls, 13 divs, 24 calls
 
 #ifndef nrel5mw_spar_rigid_YAMSC_GENERATED_H
 #define nrel5mw_spar_rigid_YAMSC_GENERATED_H

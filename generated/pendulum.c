@@ -27,13 +27,13 @@
 //   jacobians         0 adds, 3 muls, 0 divs, 1 calls
 //   outputs_from_qdd  0 adds, 2 muls, 0 divs, 2 calls
 //   outputs           0 adds, 2 muls, 0 divs, 2 calls
-//   rhs               0 adds, 5 muls, 1 divs, 1 calls
-//   rhs_jacobian      0 adds, 8 muls, 3 divs, 2 calls
+//   rhs               0 adds, 6 muls, 1 divs, 1 calls
+//   rhs_jacobian      0 adds, 11 muls, 1 divs, 2 calls
 //   linear            0 adds, 5 muls, 0 divs, 1 calls
-//   state_space       0 adds, 5 muls, 2 divs, 1 calls
+//   state_space       0 adds, 7 muls, 1 divs, 1 calls
 //   output_matrices   0 adds, 2 muls, 0 divs, 2 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          16 adds, 31 muls, 5 divs, 4 calls
+//   rk4_step          16 adds, 35 muls, 5 divs, 4 calls
 
 #include "pendulum.h"
 
@@ -45,37 +45,25 @@ const char* const pendulum_input_names[1] = {""};
 const char* const pendulum_param_names[3] = {"m", "L", "g"};
 const char* const pendulum_output_names[2] = {"x_tip", "z_tip"};
 
-// In-place LDL^T factorisation of the symmetric positive definite n x n matrix A
-// (row-major; only the lower triangle is read): on return the strict lower
-// triangle holds L (unit diagonal) and the diagonal holds D. No pivoting and no
-// square roots: a mass matrix is positive definite.
-static void pendulum_ldlt_factor(double* A, int n) {
-    for (int j = 0; j < n; ++j) {
-        double d = A[j * n + j];
-        for (int k = 0; k < j; ++k) d -= A[j * n + k] * A[j * n + k] * A[k * n + k];
-        A[j * n + j] = d;
-        for (int i = j + 1; i < n; ++i) {
-            double s = A[i * n + j];
-            for (int k = 0; k < j; ++k) s -= A[i * n + k] * A[j * n + k] * A[k * n + k];
-            A[i * n + j] = s / d;
-        }
-    }
+// A = L D L^T in place for this model's 1 x 1 mass matrix (row-major, lower
+// triangle read), rows and columns eliminated in the order q0 (minimum degree).
+// M has no structural zeros below the diagonal. On return L (unit diagonal) of
+// the permuted matrix is where M's lower triangle was and the diagonal holds
+// 1/D.
+static void pendulum_mass_ldlt_factor(double* A) {
+    const double d0 = A[0];
+    const double r0 = 1.0 / d0;
+    A[0] = r0;
 }
 
-// Solves (L D L^T) X = B in place for the n x m row-major block B.
-static void pendulum_ldlt_solve(const double* LD, int n, double* B, int m) {
+// Solves (L D L^T) X = B in place for the 1 x m row-major block B, with LD
+// from pendulum_mass_ldlt_factor.
+static void pendulum_mass_ldlt_solve(const double* LD, double* B, int m) {
     for (int c = 0; c < m; ++c) {
-        for (int i = 0; i < n; ++i) {
-            double s = B[i * m + c];
-            for (int k = 0; k < i; ++k) s -= LD[i * n + k] * B[k * m + c];
-            B[i * m + c] = s;
-        }
-        for (int i = 0; i < n; ++i) B[i * m + c] /= LD[i * n + i];
-        for (int i = n - 1; i >= 0; --i) {
-            double s = B[i * m + c];
-            for (int k = i + 1; k < n; ++k) s -= LD[k * n + i] * B[k * m + c];
-            B[i * m + c] = s;
-        }
+        double* b = B + c;
+        const double y0 = b[0];
+        const double x0 = y0 * LD[0];
+        b[0] = x0;
     }
 }
 
@@ -162,8 +150,8 @@ void pendulum_rhs(pendulum_real t, const pendulum_real* x, const pendulum_real* 
     xdot[0] = x[1];
     M[0] = p->m*p->L*p->L;
     xdot[1] = -p->m*p->L*p->g*t0;
-    pendulum_ldlt_factor(M, 1);
-    pendulum_ldlt_solve(M, 1, xdot + 1, 1);
+    pendulum_mass_ldlt_factor(M);
+    pendulum_mass_ldlt_solve(M, xdot + 1, 1);
 }
 
 // d(rhs)/dx, 2nq x 2nq, row-major
@@ -177,12 +165,12 @@ void pendulum_rhs_jacobian(pendulum_real t, const pendulum_real* x, const pendul
     J[1] = 1.0;
     M[0] = p->m*p->L*p->L;
     qdd[0] = -p->m*p->L*p->g*t0;
-    pendulum_ldlt_factor(M, 1);
-    pendulum_ldlt_solve(M, 1, qdd, 1);
+    pendulum_mass_ldlt_factor(M);
+    pendulum_mass_ldlt_solve(M, qdd, 1);
     const double t1 = cos(x[0]);
     J[2] = -p->m*p->L*p->g*t1;
     J[3] = 0.0;
-    pendulum_ldlt_solve(M, 1, J + 2, 2);
+    pendulum_mass_ldlt_solve(M, J + 2, 2);
 }
 
 // M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 (eq. 25)
@@ -205,11 +193,11 @@ void pendulum_state_space(const pendulum_real* q0, const pendulum_real* qd0, con
     A[0] = 0.0;
     A[1] = 1.0;
     M[0] = p->m*p->L*p->L;
-    pendulum_ldlt_factor(M, 1);
+    pendulum_mass_ldlt_factor(M);
     const double t0 = cos(q0[0]);
     A[2] = -p->m*p->L*p->g*t0;
     A[3] = 0.0;
-    pendulum_ldlt_solve(M, 1, A + 2, 2);
+    pendulum_mass_ldlt_solve(M, A + 2, 2);
 }
 
 // dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu

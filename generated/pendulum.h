@@ -27,13 +27,13 @@
 //   jacobians         0 adds, 3 muls, 0 divs, 1 calls
 //   outputs_from_qdd  0 adds, 2 muls, 0 divs, 2 calls
 //   outputs           0 adds, 2 muls, 0 divs, 2 calls
-//   rhs               0 adds, 5 muls, 1 divs, 1 calls
-//   rhs_jacobian      0 adds, 8 muls, 3 divs, 2 calls
+//   rhs               0 adds, 6 muls, 1 divs, 1 calls
+//   rhs_jacobian      0 adds, 11 muls, 1 divs, 2 calls
 //   linear            0 adds, 5 muls, 0 divs, 1 calls
-//   state_space       0 adds, 5 muls, 2 divs, 1 calls
+//   state_space       0 adds, 7 muls, 1 divs, 1 calls
 //   output_matrices   0 adds, 2 muls, 0 divs, 2 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          16 adds, 31 muls, 5 divs, 4 calls
+//   rk4_step          16 adds, 35 muls, 5 divs, 4 calls
 
 #ifndef pendulum_YAMSC_GENERATED_H
 #define pendulum_YAMSC_GENERATED_H

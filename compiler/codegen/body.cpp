@@ -1,8 +1,8 @@
 #include "codegen/body.hpp"
 
-#include "codegen/helper_sources.hpp"
-
 #include "codegen/body_plan.hpp"
+#include "codegen/helper_sources.hpp"
+#include "codegen/ldlt_text.hpp"
 
 #include "diag/diagnostics.hpp"
 
@@ -11,10 +11,6 @@
 
 namespace yamsc::codegen {
 namespace {
-
-std::string array_at(const std::string& array, int offset) {
-    return offset == 0 ? array : fmt::format("{} + {}", array, offset);
-}
 
 std::string join(const std::vector<std::string>& items, const char* separator) {
     std::string out;
@@ -105,9 +101,10 @@ std::string sweep_text(const Sweep& w, const Syntax& syntax, const CalleeCosts& 
 }
 
 // One statement, appended to `main` (factorisations, solves, sweeps) or `part`.
-void print_statement(const Statement& s, const Routine& routine, const BodyPlan& plan,
-                     const Syntax& syntax, const CalleeCosts& callee_costs, ExprPrinter& printer,
-                     std::string& main, std::string& part, OperationCount& count) {
+void print_statement(const Statement& s, const Routine& routine, const LdltPlan& solver,
+                     const BodyPlan& plan, const Syntax& syntax, const CalleeCosts& callee_costs,
+                     ExprPrinter& printer, std::string& main, std::string& part,
+                     OperationCount& count) {
     switch (s.kind) {
     case Statement::Kind::define: {
         const int number = routine.exprs[static_cast<std::size_t>(s.expr)].temporary;
@@ -122,15 +119,9 @@ void print_statement(const Statement& s, const Routine& routine, const BodyPlan&
                             printer.reference(s.expr));
         break;
     case Statement::Kind::factor:
-        main += fmt::format("    {}ldlt_factor({}, {});\n", syntax.helper_prefix, s.step->matrix,
-                            s.step->n);
-        count += ldlt_factor_count(s.step->n);
-        break;
     case Statement::Kind::solve:
-        main +=
-            fmt::format("    {}ldlt_solve({}, {}, {}, {});\n", syntax.helper_prefix, s.step->matrix,
-                        s.step->n, array_at(s.step->target, s.step->offset), s.step->columns);
-        count += ldlt_solve_count(s.step->n, s.step->columns);
+        main += solver_statement(solver, *s.step, syntax);
+        count += solver_step_count(solver, *s.step);
         break;
     case Statement::Kind::sweep:
         main += sweep_text(s.step->sweep, syntax, callee_costs, count);
@@ -146,13 +137,13 @@ void print_statement(const Statement& s, const Routine& routine, const BodyPlan&
 
 } // namespace
 
-BodyText body_text(const Routine& routine, const ModelInfo& model, const Syntax& syntax,
+BodyText body_text(const Routine& routine, const Module& module, const Syntax& syntax,
                    const std::vector<std::string>& signature, int max_statements,
                    const CalleeCosts& callee_costs) {
     check_signature(routine, signature);
     const BodyPlan plan = plan_body(routine, max_statements);
     const bool cut = plan.part_count > 0;
-    ExprPrinter printer(routine, model, syntax);
+    ExprPrinter printer(routine, module.model, syntax);
     if (cut) {
         std::vector<std::string> names;
         for (int k = 0; k < routine.temporary_count; ++k)
@@ -191,7 +182,7 @@ BodyText body_text(const Routine& routine, const ModelInfo& model, const Syntax&
                 if (!std::binary_search(used.begin(), used.end(), p))
                     body.helpers += fmt::format("    (void){};\n", p);
         }
-        print_statement(s, routine, plan, syntax, callee_costs, printer, main,
+        print_statement(s, routine, module.mass_ldlt, plan, syntax, callee_costs, printer, main,
                         s.part >= 0 ? body.helpers : main, body.count);
     }
     if (open_part >= 0) body.helpers += "}\n\n";
@@ -199,16 +190,30 @@ BodyText body_text(const Routine& routine, const ModelInfo& model, const Syntax&
     return body;
 }
 
-bool uses_solver(const Module& module) {
+namespace {
+
+/// Whether some factor or solve step calls the straight-line functions
+/// (`straight`) or the generic loops (`!straight`).
+bool uses_solver(const Module& module, bool straight) {
     for (const Routine& r : module.routines)
         for (const Step& s : r.steps)
-            if (s.kind == StepKind::factor || s.kind == StepKind::solve) return true;
+            if ((s.kind == StepKind::factor || s.kind == StepKind::solve) &&
+                straight_line_step(module.mass_ldlt, s) == straight)
+                return true;
     return false;
 }
 
-std::string solver_helpers_text(const Syntax& syntax, const std::string& linkage) {
-    // Mirrors ldlt_factor_count and ldlt_solve_count in printer.cpp.
-    return ldlt_source(syntax, linkage);
+} // namespace
+
+std::string solver_helpers_text(const Module& module, const Syntax& syntax,
+                                const std::string& linkage) {
+    std::string out;
+    // Counted by ldlt_factor_count and ldlt_solve_count (printer.cpp) and by
+    // straight_factor_count and straight_solve_count (ldlt_text.cpp).
+    if (uses_solver(module, false)) out += ldlt_source(syntax, linkage);
+    if (uses_solver(module, true))
+        out += (out.empty() ? "" : "\n") + straight_ldlt_text(module.mass_ldlt, syntax, linkage);
+    return out;
 }
 
 } // namespace yamsc::codegen

@@ -1,6 +1,6 @@
 #pragma once
 // What the C and C++ emitters share: the statements of a routine's body and
-// the fixed-size LDL^T solver both languages call.
+// the LDL^T solver functions both languages call.
 #include "codegen/module.hpp"
 #include "codegen/printer.hpp"
 #include "codegen/syntax.hpp"
@@ -26,15 +26,16 @@ struct BodyText {
 /// over it costs per column.
 using CalleeCosts = std::map<std::string, OperationCount>;
 
-BodyText body_text(const Routine& routine, const ModelInfo& model, const Syntax& syntax,
+BodyText body_text(const Routine& routine, const Module& module, const Syntax& syntax,
                    const std::vector<std::string>& signature, int max_statements = 0,
                    const CalleeCosts& callee_costs = {});
 
-/// True when some routine factorises or solves (then the helpers must be emitted).
-bool uses_solver(const Module& module);
-
-/// Definitions of <helper_prefix>ldlt_factor and <helper_prefix>ldlt_solve, each
-/// declared with `linkage` ("static " in C, "" inside an anonymous namespace).
-std::string solver_helpers_text(const Syntax& syntax, const std::string& linkage);
+/// The solver functions the module's factor and solve steps call
+/// (ldlt_text.hpp), each declared with `linkage` ("static " in C, "" inside an
+/// anonymous namespace): <helper_prefix>mass_ldlt_factor and _solve for the
+/// module's straight-line plan, <helper_prefix>ldlt_factor and ldlt_solve for
+/// the other steps; "" when no routine solves.
+std::string solver_helpers_text(const Module& module, const Syntax& syntax,
+                                const std::string& linkage);
 
 } // namespace yamsc::codegen

@@ -169,10 +169,10 @@ std::string params_functions(const ModelInfo& m, const CNames& names) {
 
 // The body of a plan's function; a constant out of the float range is
 // reported with the function it is in.
-BodyText printed_body(const FunctionPlan& plan, const ModelInfo& model, const Syntax& syntax,
+BodyText printed_body(const FunctionPlan& plan, const Module& module, const Syntax& syntax,
                       int max_statements, const CalleeCosts& callee_costs) {
     try {
-        return body_text(*plan.routine, model, syntax, parameter_names(plan), max_statements,
+        return body_text(*plan.routine, module, syntax, parameter_names(plan), max_statements,
                          callee_costs);
     } catch (const NumberOutOfRange& e) {
         throw NumberOutOfRange("in " + plan.routine->name + ": " + e.what());
@@ -192,8 +192,7 @@ Definitions internal_definitions(const Module& module, const CNames& names, int 
     const Syntax syntax = syntax_of(names);
     Definitions d;
     for (const FunctionPlan& plan : internal_function_plans(module)) {
-        const BodyText body =
-            printed_body(plan, module.model, syntax, max_statements, callee_costs);
+        const BodyText body = printed_body(plan, module, syntax, max_statements, callee_costs);
         d.helpers += body.helpers;
         d.helpers += "// " + plan.routine->summary + "\nstatic " + signature(names, plan) + " {\n" +
                      body.text + "}\n\n";
@@ -218,7 +217,7 @@ Definitions definitions(const Module& module, const CNames& names,
                 if (a->name == "t" || a->name == "u") texts[i] += "    (void)" + a->name + ";\n";
             texts[i] += fmt::format("    {}_mass_matrix(q, p, M);\n", names.prefix);
         } else {
-            BodyText body = printed_body(plan, module.model, syntax, max_statements, callee_costs);
+            BodyText body = printed_body(plan, module, syntax, max_statements, callee_costs);
             texts[i] = std::move(body.text);
             helpers[i] = std::move(body.helpers);
             costs[i] = FunctionCost{plan.routine->name, body.count};
@@ -275,10 +274,9 @@ EmittedFiles emit_c(const Module& module, const EmitOptions& options) {
     const std::string decls = declarations(module, names, plans);
 
     std::string body = data_definitions(module, names);
-    if (uses_solver(module)) {
-        const Syntax syntax = syntax_of(names);
-        body += "\n" + solver_helpers_text(syntax, "static ");
-    }
+    if (const std::string solver = solver_helpers_text(module, syntax_of(names), "static ");
+        !solver.empty())
+        body += "\n" + solver;
     if (!defs.helpers.empty()) body += "\n" + defs.helpers;
     body += "\n" + defs.text;
 

@@ -161,8 +161,8 @@ Definitions internal_definitions(const Module& module, int max_statements, Calle
     const Syntax syntax = cpp_syntax();
     Definitions d;
     for (const FunctionPlan& plan : internal_function_plans(module)) {
-        BodyText body = body_text(*plan.routine, module.model, syntax, parameter_names(plan),
-                                  max_statements, costs);
+        BodyText body =
+            body_text(*plan.routine, module, syntax, parameter_names(plan), max_statements, costs);
         d.helpers += body.helpers;
         d.helpers +=
             "// " + plan.routine->summary + "\n" + signature(plan) + " {\n" + body.text + "}\n\n";
@@ -189,7 +189,7 @@ Definitions definitions(const Module& module, const std::vector<FunctionPlan>& p
                 if (a->name == "t" || a->name == "u") text += "    (void)" + a->name + ";\n";
             text += "    mass_matrix(q, p, M);\n";
         } else {
-            BodyText body = body_text(*plan.routine, module.model, syntax, parameter_names(plan),
+            BodyText body = body_text(*plan.routine, module, syntax, parameter_names(plan),
                                       max_statements, callee_costs);
             text = std::move(body.text);
             helpers[i] = std::move(body.helpers);
@@ -238,7 +238,7 @@ EmittedFiles emit_cpp(const Module& module, const EmitOptions& options) {
 
     std::string body = externals ? external_weak_declarations(module) + "\n" : "";
     body += fmt::format("namespace {} {{\n", ns);
-    std::string helpers = uses_solver(module) ? solver_helpers_text(cpp_syntax(), "") : "";
+    std::string helpers = solver_helpers_text(module, cpp_syntax(), "");
     if (!defs.helpers.empty()) helpers += (helpers.empty() ? "" : "\n") + defs.helpers;
     if (!helpers.empty()) body += "namespace {\n\n" + helpers + "\n} // namespace\n";
     body += "\n" + defs.text + "\n" + fmt::format("}} // namespace {}\n", ns);

@@ -3,6 +3,7 @@
 // by routine, with the shared work made explicit (named temporaries computed
 // once, local arrays, the factorisation of M and the solves with it). Emitters
 // only print a Module; `yamsc --dump=module` prints it with dump().
+#include "codegen/sparse_ldlt.hpp"
 #include "ir/graph.hpp"
 #include "ir/system.hpp"
 
@@ -81,7 +82,7 @@ struct Assignment {
 
 enum class StepKind {
     evaluate, // define `temporaries` (in order), then perform `assignments`
-    factor,   // LDL^T-factorise the n x n local `matrix` in place (lower triangle read)
+    factor,   // LDL^T-factorise the n x n local `matrix` (M) in place (lower triangle read)
     solve,    // target + offset, an n x columns row-major block, := matrix^-1 * itself
     sweep,    // a loop calling an internal routine once per unit direction (Sweep)
     call,     // one call of an internal routine (Call), e.g. the prologue of sweeps
@@ -204,6 +205,9 @@ struct Module {
     /// M depends on q and the parameters only: `mass_matrix(q, p, M)` exists
     /// besides the full `mass_matrix(t, q, u, p, M)`.
     bool mass_matrix_short_form = false;
+    /// The symbolic LDL^T of M (codegen/sparse_ldlt.hpp) that the factor and
+    /// solve steps of its size print; n = 0: none, every step calls the loops.
+    LdltPlan mass_ldlt;
     std::vector<Routine> routines;
 
     /// The routine of that name; throws diag::InternalError if there is none.

@@ -6,6 +6,7 @@
 #include "codegen/output_routines.hpp"
 #include "codegen/routine_builder.hpp"
 #include "codegen/sensitivity_routines.hpp"
+#include "codegen/sparse_ldlt.hpp"
 #include "codegen/symbol_binding.hpp"
 #include "codegen/tangent_routines.hpp"
 #include "diag/diagnostics.hpp"
@@ -236,6 +237,7 @@ Module build_module(const ir::System& s, const Options& options) {
         m.model = model_info(s);
         m.options = options;
         add_tangent_routines(m, s);
+        m.mass_ldlt = plan_ldlt(dense_pattern(s.nq())); // M by columns: no structure known
         return m;
     }
     check_shapes(s, options);
@@ -256,6 +258,7 @@ Module build_module(const ir::System& s, const Options& options) {
     for (const NodeRow& row : in.M)
         for (NodeId id : row) mass_depends |= graph.node(id).depends;
     m.mass_matrix_short_form = (mass_depends & ~q_and_p) == 0;
+    m.mass_ldlt = plan_ldlt(mass_pattern(graph, in.M));
 
     m.routines.push_back(mass_matrix_routine(graph, in, nq, options));
     m.routines.push_back(forcing_routine(graph, in, nq, options));

@@ -1,4 +1,5 @@
 // dump(Module): the module as text, for `yamsc --dump=module` and for tests.
+#include "codegen/ldlt_text.hpp"
 #include "codegen/module.hpp"
 #include "codegen/printer.hpp"
 #include "codegen/syntax.hpp"
@@ -16,7 +17,8 @@ std::string names_of(const std::vector<NamedDoc>& items) {
     return out;
 }
 
-void dump_routine(std::string& out, const Routine& r, const ModelInfo& model) {
+void dump_routine(std::string& out, const Routine& r, const Module& module) {
+    const ModelInfo& model = module.model;
     std::string args, unused;
     for (const Argument& a : r.arguments) {
         args += (args.empty() ? "" : ", ") + a.name;
@@ -43,12 +45,12 @@ void dump_routine(std::string& out, const Routine& r, const ModelInfo& model) {
             break;
         case StepKind::factor:
             out += fmt::format("  factor {} = L D L^T  (n = {})\n", s.matrix, s.n);
-            solver += ldlt_factor_count(s.n);
+            solver += solver_step_count(module.mass_ldlt, s);
             break;
         case StepKind::solve:
             out += fmt::format("  solve {} X = {}[{}..]  (n = {}, {} columns)\n", s.matrix,
                                s.target, s.offset, s.n, s.columns);
-            solver += ldlt_solve_count(s.n, s.columns);
+            solver += solver_step_count(module.mass_ldlt, s);
             break;
         case StepKind::call: {
             std::string args;
@@ -91,7 +93,16 @@ std::string dump(const Module& module) {
     out += fmt::format("  outputs: {}\n", names_of(m.outputs));
     out += fmt::format("  mass_matrix short form: {}\n",
                        module.mass_matrix_short_form ? "yes (M depends on q and p only)" : "no");
-    for (const Routine& r : module.routines) dump_routine(out, r, m);
+    const LdltPlan& plan = module.mass_ldlt;
+    if (plan.n > 0) {
+        std::string order;
+        for (int a : plan.order) order += (order.empty() ? "" : " ") + std::to_string(a);
+        out += fmt::format("  mass LDL^T: {}, order {}; {} structural zeros, {} fill-in, {} "
+                           "updates\n",
+                           plan.straight_line ? "straight-line" : "loops", order,
+                           plan.structural_zeros, plan.fill_in, plan.updates);
+    }
+    for (const Routine& r : module.routines) dump_routine(out, r, module);
     return out;
 }
 

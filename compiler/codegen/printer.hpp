@@ -20,8 +20,8 @@ struct OperationCount {
     OperationCount& operator+=(const OperationCount& o);
 };
 
-/// The operations of the solver helpers for an n x n system (as emitted by
-/// solver_helpers_text in body.hpp).
+/// The operations of the generic LDL^T loops for an n x n system
+/// (helpers/ldlt.inc; the straight-line code counts its own, ldlt_text.hpp).
 OperationCount ldlt_factor_count(int n);
 OperationCount ldlt_solve_count(int n, int columns);
 

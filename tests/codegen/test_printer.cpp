@@ -39,7 +39,7 @@ struct OneForce {
     BodyText forcing(const ex& f, const Syntax& syntax = cpp_syntax()) {
         eq.F = {f};
         const Module m = build_module(eq);
-        return body_text(m.routine("forcing"), m.model, syntax, {"t", "q", "qd", "u", "p", "F"});
+        return body_text(m.routine("forcing"), m, syntax, {"t", "q", "qd", "u", "p", "F"});
     }
     /// The statements after the (void) casts.
     std::string text(const ex& f, const Syntax& syntax = cpp_syntax()) {
