@@ -130,29 +130,64 @@ const OpenFastChannel* openfast_channel(std::string_view name) {
     return nullptr;
 }
 
-Table openfast_table(const runtime::SimulationResult& result, int first_output_column) {
-    Table all = table_of(result);
-    Table t;
-    t.columns.push_back("Time_[s]");
-    t.data.push_back(std::move(all.data.front()));
-    for (std::size_t j = static_cast<std::size_t>(first_output_column); j < all.columns.size();
-         ++j) {
-        const OpenFastChannel* c = openfast_channel(all.columns[j]);
-        if (!c) continue;
-        std::vector<double> values = std::move(all.data[j]); // each column is taken once
-        if (c->wrap_360)
-            for (double& v : values) {
-                v = std::fmod(v, 360.0);
-                if (v < 0) v += 360.0;
-            }
-        t.columns.push_back(std::string(c->name) + "_[" + c->unit + "]");
-        t.data.push_back(std::move(values));
-    }
-    if (t.columns.size() == 1)
+std::vector<OpenFastColumn> openfast_columns(const runtime::SimulationResult& result,
+                                             int first_output_column) {
+    std::vector<OpenFastColumn> out;
+    const auto first = static_cast<std::size_t>(first_output_column);
+    for (std::size_t j = first; j < result.columns.size(); ++j)
+        if (const OpenFastChannel* c = openfast_channel(result.columns[j]))
+            out.push_back({std::string(c->name) + "_[" + c->unit + "]", j - first, c->wrap_360});
+    if (out.empty())
         throw UserError("--channels openfast: the model has no output named as an OpenFAST "
                         "channel (Q_TFA1, PtfmPitch, Azimuth, ...; models written by `yamsc "
                         "from-openfast` have them)");
+    return out;
+}
+
+namespace {
+
+double openfast_value(const OpenFastColumn& c, const double* outputs) {
+    double v = outputs[c.output];
+    if (c.wrap_360) {
+        v = std::fmod(v, 360.0);
+        if (v < 0) v += 360.0;
+    }
+    return v;
+}
+
+} // namespace
+
+Table openfast_table(const runtime::SimulationResult& result, int first_output_column) {
+    const std::vector<OpenFastColumn> columns = openfast_columns(result, first_output_column);
+    Table t;
+    t.columns.push_back("Time_[s]");
+    t.data.push_back(result.time);
+    for (const OpenFastColumn& c : columns) {
+        t.columns.push_back(c.name);
+        std::vector<double> values(result.rows());
+        for (std::size_t row = 0; row < result.rows(); ++row)
+            values[row] = openfast_value(c, result.output_row(row));
+        t.data.push_back(std::move(values));
+    }
     return t;
+}
+
+void write_openfast_csv(const runtime::SimulationResult& result, int first_output_column,
+                        const std::string& path) {
+    const std::vector<OpenFastColumn> columns = openfast_columns(result, first_output_column);
+    runtime::write_file_atomically(path, [&](std::ostream& out) {
+        out << "Time_[s]";
+        for (const OpenFastColumn& c : columns) out << ',' << c.name;
+        out << '\n';
+        // Row by row from the stored arrays: no table of the columns in between.
+        runtime::CsvBuffer text(out);
+        for (std::size_t row = 0; row < result.rows(); ++row) {
+            text.value(result.time[row]);
+            const double* outputs = result.output_row(row);
+            for (const OpenFastColumn& c : columns) text.value(openfast_value(c, outputs), ',');
+            text.end_line();
+        }
+    });
 }
 
 std::string base_name(const std::string& column) {

@@ -46,9 +46,26 @@ const OpenFastChannel* openfast_channel(std::string_view name);
 /// All channels yamsc knows, for documentation and messages.
 const std::vector<OpenFastChannel>& openfast_channels();
 
-/// `Time_[s]` and the outputs named as OpenFAST channels, as `NAME_[unit]`. Throws
-/// UserError when the model has no such output (it was not made for OpenFAST).
+/// An output named as an OpenFAST channel: `NAME_[unit]`, its index among the
+/// outputs, and whether it is an angle OpenFAST writes in [0, 360).
+struct OpenFastColumn {
+    std::string name;
+    std::size_t output = 0;
+    bool wrap_360 = false;
+};
+
+/// The outputs named as OpenFAST channels, in the result's order. Throws
+/// UserError when the model has none (it was not made for OpenFAST).
+std::vector<OpenFastColumn> openfast_columns(const runtime::SimulationResult& result,
+                                             int first_output_column);
+
+/// `Time_[s]` and the outputs named as OpenFAST channels (openfast_columns).
 Table openfast_table(const runtime::SimulationResult& result, int first_output_column);
+
+/// The same columns written straight from the result as CSV (atomically), with
+/// no table in between: the same bytes as write_table_csv(openfast_table(..)).
+void write_openfast_csv(const runtime::SimulationResult& result, int first_output_column,
+                        const std::string& path);
 
 /// The columns with these names (or base names before `_[`); all when `names` is
 /// empty. Throws UserError naming an unknown channel.

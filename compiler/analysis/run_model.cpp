@@ -140,16 +140,12 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     if (!loaded) return 1;
     const SimRun run = simulate_case(*loaded, o, out, err);
     const runtime::SimulationResult& result = run.result;
-    // The table (a copy of the columns) only for what reads it; OpenFAST's
-    // channels always, which also checks that the model has them.
-    const bool need_table = reference || !o.plot.empty() || o.channels == Channels::openfast;
+    // That the model has OpenFAST's channels is checked before anything is written.
+    if (o.channels == Channels::openfast) openfast_columns(result, 1 + run.view.nx());
+    // The table (a copy of the columns) only for what reads it.
+    const bool need_table = reference || !o.plot.empty();
     const Table table = need_table ? sim_table(run, o.channels) : Table{};
-    if (!o.output.empty()) {
-        if (o.channels == Channels::openfast)
-            write_table_csv(table, o.output);
-        else
-            write_sim_csv(run, o.channels, o.output);
-    }
+    if (!o.output.empty()) write_sim_csv(run, o.channels, o.output);
     out << runtime::format_summary(result);
     if (!o.output.empty()) out << "wrote " << result.rows() << " rows to " << o.output << "\n";
     std::optional<Comparison> comparison;

@@ -88,7 +88,7 @@ Table sim_table(const SimRun& run, Channels channels) {
 
 void write_sim_csv(const SimRun& run, Channels channels, const std::string& path) {
     if (channels == Channels::openfast)
-        write_table_csv(sim_table(run, channels), path);
+        write_openfast_csv(run.result, 1 + run.view.nx(), path);
     else
         runtime::write_csv(run.result, path);
 }
