@@ -70,4 +70,13 @@ struct Reference {
 /// Everything the generated functions compute, from the expressions directly.
 Reference reference(const Equations& eq, const Point& x);
 
+/// How often `what` occurs in `text` (occurrences that do not overlap).
+inline std::size_t occurrences(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t pos = text.find(what); pos != std::string::npos;
+         pos = text.find(what, pos + what.size()))
+        ++n;
+    return n;
+}
+
 } // namespace codegen_test

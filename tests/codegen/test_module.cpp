@@ -24,14 +24,6 @@ std::vector<StepKind> step_kinds(const Routine& r) {
     return kinds;
 }
 
-std::size_t occurrences(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (std::size_t pos = text.find(what); pos != std::string::npos;
-         pos = text.find(what, pos + what.size()))
-        ++n;
-    return n;
-}
-
 /// Function definitions of an emitted C++ source, by name (overloads joined).
 std::map<std::string, std::string> function_bodies(const std::string& source) {
     std::map<std::string, std::string> bodies;

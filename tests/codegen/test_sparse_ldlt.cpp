@@ -13,6 +13,7 @@
 #include <doctest/doctest.h>
 
 using namespace yamsc::codegen;
+using codegen_test::occurrences;
 
 namespace {
 
@@ -21,14 +22,6 @@ LowerPattern pattern_of(int n, bool (*coupled)(int, int)) {
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < i; ++j) p[i][j] = coupled(i, j);
     return p;
-}
-
-std::size_t occurrences(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (std::size_t pos = text.find(what); pos != std::string::npos;
-         pos = text.find(what, pos + what.size()))
-        ++n;
-    return n;
 }
 
 /// The printed text without its comment lines.
