@@ -29,18 +29,18 @@
 // Operations per call, worst case: the code is straight-line (loops of fixed
 // length only), so every call does exactly these (the LDL^T solves and the
 // functions called included: rhs in outputs, four rhs in rk4_step):
-//   mass_matrix       3 adds, 12 muls, 0 divs, 2 calls
-//   forcing           16 adds, 36 muls, 0 divs, 4 calls
-//   jacobians         26 adds, 85 muls, 0 divs, 4 calls
+//   mass_matrix       4 adds, 10 muls, 0 divs, 1 calls
+//   forcing           16 adds, 35 muls, 0 divs, 4 calls
+//   jacobians         26 adds, 81 muls, 0 divs, 4 calls
 //   outputs_from_qdd  7 adds, 15 muls, 0 divs, 4 calls
 //   outputs           7 adds, 15 muls, 0 divs, 4 calls
-//   rhs               22 adds, 54 muls, 2 divs, 4 calls
-//   rhs_jacobian      54 adds, 147 muls, 2 divs, 4 calls
-//   linear            48 adds, 136 muls, 2 divs, 4 calls
-//   state_space       60 adds, 160 muls, 2 divs, 4 calls
+//   rhs               23 adds, 51 muls, 2 divs, 4 calls
+//   rhs_jacobian      56 adds, 141 muls, 2 divs, 4 calls
+//   linear            50 adds, 130 muls, 2 divs, 4 calls
+//   state_space       62 adds, 154 muls, 2 divs, 4 calls
 //   output_matrices   12 adds, 22 muls, 0 divs, 4 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          118 adds, 237 muls, 9 divs, 16 calls
+//   rk4_step          122 adds, 225 muls, 9 divs, 16 calls
 
 #include "double_pendulum.h"
 
@@ -120,11 +120,11 @@ double_pendulum_params double_pendulum_params_from_array(const double_pendulum_r
 // M(q) of M q'' = F (symmetric, row-major)
 void double_pendulum_mass_matrix(const double_pendulum_real* q, const double_pendulum_params* p, double_pendulum_real* M) {
     const double t0 = cos(q[1]);
-    const double t1 = p->L2 + p->L1*t0;
-    const double t2 = sin(q[1]);
-    M[0] = p->m2*(t1*t1 + p->L1*p->L1*t2*t2) + p->m1*p->L1*p->L1;
-    M[2] = p->m2*p->L2*t1;
-    M[3] = p->m2*p->L2*p->L2;
+    const double t1 = p->m2*p->L1*p->L2*t0;
+    const double t2 = p->m2*p->L2*p->L2;
+    M[0] = 2.0*t1 + p->m1*p->L1*p->L1 + t2 + p->m2*p->L1*p->L1;
+    M[2] = t1 + t2;
+    M[3] = t2;
     M[1] = M[2];
 }
 
@@ -138,18 +138,18 @@ void double_pendulum_mass_matrix_tu(double_pendulum_real t, const double_pendulu
 // F(q, q', u, t) of M q'' = F
 void double_pendulum_forcing(double_pendulum_real t, const double_pendulum_real* q, const double_pendulum_real* qd, const double_pendulum_real* u, const double_pendulum_params* p, double_pendulum_real* F) {
     (void)t;
-    const double t0 = sin(q[1]);
+    const double t0 = cos(q[1]);
     const double t1 = sin(q[0]);
-    const double t2 = cos(q[1]);
+    const double t2 = sin(q[1]);
     const double t3 = cos(q[0]);
-    const double t4 = t0*t1 - t2*t3;
-    const double t5 = u[1]*p->L2*t4;
-    const double t6 = qd[0] + qd[1];
-    const double t7 = t2*t1 + t0*t3;
-    const double t8 = p->m2*p->g*t7 + qd[0]*qd[0]*p->m2*p->L1*t0;
-    const double t9 = p->L2*t8;
-    F[0] = u[0] + t5 + u[1]*p->L1*t2*t4 - p->L1*t0*(p->m2*p->g*t4 - p->m2*(qd[0]*qd[0]*p->L1*t2 + p->L2*t6*t6)) - p->m1*p->L1*p->g*t1 - p->L1*t2*t8 - t9 - u[1]*p->L1*t0*t7;
-    F[1] = t5 - q[1]*p->k - qd[1]*p->c - t9;
+    const double t4 = t0*t1 + t2*t3;
+    const double t5 = p->m2*p->g*t4 + qd[0]*qd[0]*p->m2*p->L1*t2;
+    const double t6 = t2*t1 - t0*t3;
+    const double t7 = qd[0] + qd[1];
+    const double t8 = u[1]*p->L2*t6;
+    const double t9 = p->L2*t5;
+    F[0] = u[0] + t8 + u[1]*p->L1*t0*t6 - p->L1*(t0*t5 + t2*(p->m2*p->g*t6 - p->m2*(qd[0]*qd[0]*p->L1*t0 + p->L2*t7*t7))) - p->m1*p->L1*p->g*t1 - t9 - u[1]*p->L1*t2*t4;
+    F[1] = t8 - q[1]*p->k - qd[1]*p->c - t9;
 }
 
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
@@ -166,14 +166,14 @@ void double_pendulum_jacobians(double_pendulum_real t, const double_pendulum_rea
     const double t8 = p->m2*p->g*t4;
     const double t9 = t8 - qd[0]*qd[0]*p->m2*p->L1*t3;
     const double t10 = p->L2*t9;
-    const double t11 = p->L1*t1*(p->m2*p->g*t6 + qd[0]*qd[0]*p->m2*p->L1*t1);
+    const double t11 = t1*(p->m2*p->g*t6 + qd[0]*qd[0]*p->m2*p->L1*t1);
     const double t12 = qd[0] + qd[1];
     const double t13 = p->L2*t4;
-    dF_dq[0] = u[1]*p->L1*t1*t4 + t5 + u[1]*p->L1*t3*t6 + p->m2*p->L1*p->g*t3*t4 + t7 - p->m1*p->L1*p->g*t0 - p->m2*p->L1*p->g*t1*t6;
-    dF_dq[1] = t10 + t7 + t11 + p->L1*t3*t9 - t11 - p->L1*t3*(t8 - p->m2*(qd[0]*qd[0]*p->L1*t3 + p->L2*t12*t12));
+    dF_dq[0] = u[1]*p->L1*t1*t4 + t5 + u[1]*p->L1*t3*t6 + p->L1*(p->m2*p->g*t3*t4 - p->m2*p->g*t1*t6) + t7 - p->m1*p->L1*p->g*t0;
+    dF_dq[1] = t10 + t7 - p->L1*(t11 + t3*(t8 - p->m2*(qd[0]*qd[0]*p->L1*t3 + p->L2*t12*t12)) - t11 - t3*t9);
     dF_dq[2] = t5 + t7;
     dF_dq[3] = t10 + t7 - p->k;
-    dF_dqd[0] = p->m2*p->L1*t1*(2.0*p->L2*t12 + 2.0*qd[0]*p->L1*t3) - 2.0*qd[0]*p->m2*p->L1*p->L2*t1 - 2.0*qd[0]*p->m2*p->L1*p->L1*t3*t1;
+    dF_dqd[0] = p->L1*(p->m2*t1*(2.0*p->L2*t12 + 2.0*qd[0]*p->L1*t3) - 2.0*qd[0]*p->m2*p->L1*t3*t1) - 2.0*qd[0]*p->m2*p->L1*p->L2*t1;
     dF_dqd[1] = 2.0*p->m2*p->L1*p->L2*t1*t12;
     dF_dqd[2] = -2.0*qd[0]*p->m2*p->L1*p->L2*t1;
     dF_dqd[3] = -p->c;
@@ -212,23 +212,24 @@ void double_pendulum_rhs(double_pendulum_real t, const double_pendulum_real* x, 
     (void)t;
     double M[4];
     const double t0 = cos(x[1]);
-    const double t1 = p->L2 + p->L1*t0;
-    const double t2 = sin(x[1]);
+    const double t1 = p->m2*p->L1*p->L2*t0;
+    const double t2 = p->m2*p->L2*p->L2;
     const double t3 = sin(x[0]);
-    const double t4 = cos(x[0]);
-    const double t5 = t2*t3 - t0*t4;
-    const double t6 = u[1]*p->L2*t5;
-    const double t7 = x[2] + x[3];
-    const double t8 = t0*t3 + t2*t4;
-    const double t9 = p->m2*p->g*t8 + x[2]*x[2]*p->m2*p->L1*t2;
-    const double t10 = p->L2*t9;
+    const double t4 = sin(x[1]);
+    const double t5 = cos(x[0]);
+    const double t6 = t0*t3 + t4*t5;
+    const double t7 = p->m2*p->g*t6 + x[2]*x[2]*p->m2*p->L1*t4;
+    const double t8 = t4*t3 - t0*t5;
+    const double t9 = x[2] + x[3];
+    const double t10 = u[1]*p->L2*t8;
+    const double t11 = p->L2*t7;
     xdot[0] = x[2];
     xdot[1] = x[3];
-    M[0] = p->m2*(t1*t1 + p->L1*p->L1*t2*t2) + p->m1*p->L1*p->L1;
-    M[2] = p->m2*p->L2*t1;
-    M[3] = p->m2*p->L2*p->L2;
-    xdot[2] = u[0] + t6 + u[1]*p->L1*t0*t5 - p->L1*t2*(p->m2*p->g*t5 - p->m2*(x[2]*x[2]*p->L1*t0 + p->L2*t7*t7)) - p->m1*p->L1*p->g*t3 - p->L1*t0*t9 - t10 - u[1]*p->L1*t2*t8;
-    xdot[3] = t6 - x[1]*p->k - x[3]*p->c - t10;
+    M[0] = 2.0*t1 + p->m1*p->L1*p->L1 + t2 + p->m2*p->L1*p->L1;
+    M[2] = t1 + t2;
+    M[3] = t2;
+    xdot[2] = u[0] + t10 + u[1]*p->L1*t0*t8 - p->L1*(t0*t7 + t4*(p->m2*p->g*t8 - p->m2*(x[2]*x[2]*p->L1*t0 + p->L2*t9*t9))) - p->m1*p->L1*p->g*t3 - t11 - u[1]*p->L1*t4*t6;
+    xdot[3] = t10 - x[1]*p->k - x[3]*p->c - t11;
     double_pendulum_mass_ldlt_factor(M);
     double_pendulum_mass_ldlt_solve(M, xdot + 2, 1);
 }
@@ -239,18 +240,19 @@ void double_pendulum_rhs_jacobian(double_pendulum_real t, const double_pendulum_
     double M[4];
     double qdd[2];
     const double t0 = cos(x[1]);
-    const double t1 = p->L2 + p->L1*t0;
-    const double t2 = sin(x[1]);
+    const double t1 = p->m2*p->L1*p->L2*t0;
+    const double t2 = p->m2*p->L2*p->L2;
     const double t3 = sin(x[0]);
-    const double t4 = cos(x[0]);
-    const double t5 = t2*t3 - t0*t4;
-    const double t6 = u[1]*p->L2*t5;
-    const double t7 = p->m2*p->g*t5;
-    const double t8 = x[2] + x[3];
-    const double t9 = t7 - p->m2*(x[2]*x[2]*p->L1*t0 + p->L2*t8*t8);
-    const double t10 = t0*t3 + t2*t4;
-    const double t11 = p->m2*p->g*t10 + x[2]*x[2]*p->m2*p->L1*t2;
-    const double t12 = p->L2*t11;
+    const double t4 = sin(x[1]);
+    const double t5 = cos(x[0]);
+    const double t6 = t0*t3 + t4*t5;
+    const double t7 = p->m2*p->g*t6 + x[2]*x[2]*p->m2*p->L1*t4;
+    const double t8 = t4*t3 - t0*t5;
+    const double t9 = p->m2*p->g*t8;
+    const double t10 = x[2] + x[3];
+    const double t11 = t9 - p->m2*(x[2]*x[2]*p->L1*t0 + p->L2*t10*t10);
+    const double t12 = u[1]*p->L2*t8;
+    const double t13 = p->L2*t7;
     J[0] = 0.0;
     J[1] = 0.0;
     J[2] = 1.0;
@@ -259,27 +261,27 @@ void double_pendulum_rhs_jacobian(double_pendulum_real t, const double_pendulum_
     J[5] = 0.0;
     J[6] = 0.0;
     J[7] = 1.0;
-    M[0] = p->m2*(t1*t1 + p->L1*p->L1*t2*t2) + p->m1*p->L1*p->L1;
-    M[2] = p->m2*p->L2*t1;
-    M[3] = p->m2*p->L2*p->L2;
-    qdd[0] = u[0] + t6 + u[1]*p->L1*t0*t5 - p->L1*t2*t9 - p->m1*p->L1*p->g*t3 - p->L1*t0*t11 - t12 - u[1]*p->L1*t2*t10;
-    qdd[1] = t6 - x[1]*p->k - x[3]*p->c - t12;
+    M[0] = 2.0*t1 + p->m1*p->L1*p->L1 + t2 + p->m2*p->L1*p->L1;
+    M[2] = t1 + t2;
+    M[3] = t2;
+    qdd[0] = u[0] + t12 + u[1]*p->L1*t0*t8 - p->L1*(t0*t7 + t4*t11) - p->m1*p->L1*p->g*t3 - t13 - u[1]*p->L1*t4*t6;
+    qdd[1] = t12 - x[1]*p->k - x[3]*p->c - t13;
     double_pendulum_mass_ldlt_factor(M);
     double_pendulum_mass_ldlt_solve(M, qdd, 1);
-    const double t13 = p->m2*p->L2*p->g*t5;
-    const double t14 = u[1]*p->L2*t10;
-    const double t15 = p->m2*p->L1*p->L2*qdd[0]*t2;
-    const double t16 = p->m2*p->L1*p->L1*qdd[0]*t0*t2;
-    const double t17 = t7 - x[2]*x[2]*p->m2*p->L1*t0;
-    const double t18 = p->L2*t17;
-    const double t19 = p->L1*t2*t11;
-    J[8] = u[1]*p->L1*t2*t5 + t13 + u[1]*p->L1*t0*t10 + p->m2*p->L1*p->g*t0*t5 + t14 - p->m1*p->L1*p->g*t4 - p->m2*p->L1*p->g*t2*t10;
-    J[9] = t15 + p->m2*p->L1*t2*(qdd[0]*t1 + p->L2*qdd[1]) + t16 + t18 + t14 + t19 + p->L1*t0*t17 - 2.0*t16 - t19 - p->L1*t0*t9;
-    J[10] = p->m2*p->L1*t2*(2.0*p->L2*t8 + 2.0*x[2]*p->L1*t0) - 2.0*x[2]*p->m2*p->L1*p->L2*t2 - 2.0*x[2]*p->m2*p->L1*p->L1*t0*t2;
-    J[11] = 2.0*p->m2*p->L1*p->L2*t2*t8;
-    J[12] = t13 + t14;
-    J[13] = t15 + t18 + t14 - p->k;
-    J[14] = -2.0*x[2]*p->m2*p->L1*p->L2*t2;
+    const double t14 = p->m2*p->L2*p->g*t8;
+    const double t15 = u[1]*p->L2*t6;
+    const double t16 = p->m2*p->L1*p->L2*qdd[0]*t4;
+    const double t17 = p->m2*p->L1*p->L1*qdd[0]*t0*t4;
+    const double t18 = t9 - x[2]*x[2]*p->m2*p->L1*t0;
+    const double t19 = p->L2*t18;
+    const double t20 = t4*t7;
+    J[8] = u[1]*p->L1*t4*t8 + t14 + u[1]*p->L1*t0*t6 + p->L1*(p->m2*p->g*t0*t8 - p->m2*p->g*t4*t6) + t15 - p->m1*p->L1*p->g*t5;
+    J[9] = t16 + p->m2*p->L1*t4*(p->L1*qdd[0]*t0 + p->L2*(qdd[0] + qdd[1])) + t17 + t19 + t15 - 2.0*t17 - p->L1*(t20 + t0*t11 - t20 - t0*t18);
+    J[10] = p->L1*(p->m2*t4*(2.0*p->L2*t10 + 2.0*x[2]*p->L1*t0) - 2.0*x[2]*p->m2*p->L1*t0*t4) - 2.0*x[2]*p->m2*p->L1*p->L2*t4;
+    J[11] = 2.0*p->m2*p->L1*p->L2*t4*t10;
+    J[12] = t14 + t15;
+    J[13] = t16 + t19 + t15 - p->k;
+    J[14] = -2.0*x[2]*p->m2*p->L1*p->L2*t4;
     J[15] = -p->c;
     double_pendulum_mass_ldlt_solve(M, J + 8, 4);
 }
@@ -289,50 +291,50 @@ void double_pendulum_linear(const double_pendulum_real* q0, const double_pendulu
     double M[4];
     double qdd0[2];
     const double t0 = cos(q0[1]);
-    const double t1 = p->L2 + p->L1*t0;
-    const double t2 = sin(q0[1]);
-    const double t3 = p->m2*(t1*t1 + p->L1*p->L1*t2*t2) + p->m1*p->L1*p->L1;
-    const double t4 = p->m2*p->L2*t1;
-    const double t5 = p->m2*p->L2*p->L2;
-    const double t6 = sin(q0[0]);
+    const double t1 = p->m2*p->L1*p->L2*t0;
+    const double t2 = p->m2*p->L2*p->L2;
+    const double t3 = 2.0*t1 + p->m1*p->L1*p->L1 + t2 + p->m2*p->L1*p->L1;
+    const double t4 = t1 + t2;
+    const double t5 = sin(q0[0]);
+    const double t6 = sin(q0[1]);
     const double t7 = cos(q0[0]);
-    const double t8 = t2*t6 - t0*t7;
-    const double t9 = u0[1]*p->L2*t8;
-    const double t10 = p->m2*p->g*t8;
-    const double t11 = qd0[0] + qd0[1];
-    const double t12 = t10 - p->m2*(qd0[0]*qd0[0]*p->L1*t0 + p->L2*t11*t11);
-    const double t13 = t0*t6 + t2*t7;
-    const double t14 = p->m2*p->g*t13 + qd0[0]*qd0[0]*p->m2*p->L1*t2;
-    const double t15 = p->L2*t14;
+    const double t8 = t0*t5 + t6*t7;
+    const double t9 = p->m2*p->g*t8 + qd0[0]*qd0[0]*p->m2*p->L1*t6;
+    const double t10 = t6*t5 - t0*t7;
+    const double t11 = p->m2*p->g*t10;
+    const double t12 = qd0[0] + qd0[1];
+    const double t13 = t11 - p->m2*(qd0[0]*qd0[0]*p->L1*t0 + p->L2*t12*t12);
+    const double t14 = u0[1]*p->L2*t10;
+    const double t15 = p->L2*t9;
     M0[0] = t3;
     M0[2] = t4;
-    M0[3] = t5;
+    M0[3] = t2;
     M0[1] = M0[2];
     M[0] = t3;
     M[2] = t4;
-    M[3] = t5;
-    qdd0[0] = u0[0] + t9 + u0[1]*p->L1*t0*t8 - p->L1*t2*t12 - p->m1*p->L1*p->g*t6 - p->L1*t0*t14 - t15 - u0[1]*p->L1*t2*t13;
-    qdd0[1] = t9 - q0[1]*p->k - qd0[1]*p->c - t15;
+    M[3] = t2;
+    qdd0[0] = u0[0] + t14 + u0[1]*p->L1*t0*t10 - p->L1*(t0*t9 + t6*t13) - p->m1*p->L1*p->g*t5 - t15 - u0[1]*p->L1*t6*t8;
+    qdd0[1] = t14 - q0[1]*p->k - qd0[1]*p->c - t15;
     double_pendulum_mass_ldlt_factor(M);
     double_pendulum_mass_ldlt_solve(M, qdd0, 1);
-    const double t16 = p->m2*p->L2*p->g*t8;
-    const double t17 = u0[1]*p->L2*t13;
-    const double t18 = p->m2*p->L1*p->L2*qdd0[0]*t2;
-    const double t19 = p->m2*p->L1*p->L1*qdd0[0]*t0*t2;
-    const double t20 = t10 - qd0[0]*qd0[0]*p->m2*p->L1*t0;
+    const double t16 = p->m2*p->L2*p->g*t10;
+    const double t17 = u0[1]*p->L2*t8;
+    const double t18 = p->m2*p->L1*p->L2*qdd0[0]*t6;
+    const double t19 = p->m2*p->L1*p->L1*qdd0[0]*t0*t6;
+    const double t20 = t11 - qd0[0]*qd0[0]*p->m2*p->L1*t0;
     const double t21 = p->L2*t20;
-    const double t22 = p->L1*t2*t14;
-    const double t23 = p->L2*t8;
-    C0[0] = 2.0*qd0[0]*p->m2*p->L1*p->L2*t2 + 2.0*qd0[0]*p->m2*p->L1*p->L1*t0*t2 - p->m2*p->L1*t2*(2.0*p->L2*t11 + 2.0*qd0[0]*p->L1*t0);
-    C0[1] = -2.0*p->m2*p->L1*p->L2*t2*t11;
-    C0[2] = 2.0*qd0[0]*p->m2*p->L1*p->L2*t2;
+    const double t22 = t6*t9;
+    const double t23 = p->L2*t10;
+    C0[0] = 2.0*qd0[0]*p->m2*p->L1*p->L2*t6 - p->L1*(p->m2*t6*(2.0*p->L2*t12 + 2.0*qd0[0]*p->L1*t0) - 2.0*qd0[0]*p->m2*p->L1*t0*t6);
+    C0[1] = -2.0*p->m2*p->L1*p->L2*t6*t12;
+    C0[2] = 2.0*qd0[0]*p->m2*p->L1*p->L2*t6;
     C0[3] = p->c;
-    K0[0] = p->m1*p->L1*p->g*t7 + p->m2*p->L1*p->g*t2*t13 - u0[1]*p->L1*t2*t8 - t16 - u0[1]*p->L1*t0*t13 - p->m2*p->L1*p->g*t0*t8 - t17;
-    K0[1] = 2.0*t19 + t22 + p->L1*t0*t12 - t18 - p->m2*p->L1*t2*(qdd0[0]*t1 + p->L2*qdd0[1]) - t19 - t21 - t17 - t22 - p->L1*t0*t20;
+    K0[0] = p->m1*p->L1*p->g*t7 - u0[1]*p->L1*t6*t10 - t16 - u0[1]*p->L1*t0*t8 - p->L1*(p->m2*p->g*t0*t10 - p->m2*p->g*t6*t8) - t17;
+    K0[1] = 2.0*t19 + p->L1*(t22 + t0*t13 - t22 - t0*t20) - t18 - p->m2*p->L1*t6*(p->L1*qdd0[0]*t0 + p->L2*(qdd0[0] + qdd0[1])) - t19 - t21 - t17;
     K0[2] = -t16 - t17;
     K0[3] = p->k - t18 - t21 - t17;
     Q0[0] = 1.0;
-    Q0[1] = t23 + p->L1*t0*t8 - p->L1*t2*t13;
+    Q0[1] = t23 + p->L1*t0*t10 - p->L1*t6*t8;
     Q0[2] = 0.0;
     Q0[3] = t23;
 }
@@ -342,18 +344,19 @@ void double_pendulum_state_space(const double_pendulum_real* q0, const double_pe
     double M[4];
     double qdd0[2];
     const double t0 = cos(q0[1]);
-    const double t1 = p->L2 + p->L1*t0;
-    const double t2 = sin(q0[1]);
+    const double t1 = p->m2*p->L1*p->L2*t0;
+    const double t2 = p->m2*p->L2*p->L2;
     const double t3 = sin(q0[0]);
-    const double t4 = cos(q0[0]);
-    const double t5 = t2*t3 - t0*t4;
-    const double t6 = u0[1]*p->L2*t5;
-    const double t7 = p->m2*p->g*t5;
-    const double t8 = qd0[0] + qd0[1];
-    const double t9 = t7 - p->m2*(qd0[0]*qd0[0]*p->L1*t0 + p->L2*t8*t8);
-    const double t10 = t0*t3 + t2*t4;
-    const double t11 = p->m2*p->g*t10 + qd0[0]*qd0[0]*p->m2*p->L1*t2;
-    const double t12 = p->L2*t11;
+    const double t4 = sin(q0[1]);
+    const double t5 = cos(q0[0]);
+    const double t6 = t0*t3 + t4*t5;
+    const double t7 = p->m2*p->g*t6 + qd0[0]*qd0[0]*p->m2*p->L1*t4;
+    const double t8 = t4*t3 - t0*t5;
+    const double t9 = p->m2*p->g*t8;
+    const double t10 = qd0[0] + qd0[1];
+    const double t11 = t9 - p->m2*(qd0[0]*qd0[0]*p->L1*t0 + p->L2*t10*t10);
+    const double t12 = u0[1]*p->L2*t8;
+    const double t13 = p->L2*t7;
     A[0] = 0.0;
     A[1] = 0.0;
     A[2] = 1.0;
@@ -366,33 +369,33 @@ void double_pendulum_state_space(const double_pendulum_real* q0, const double_pe
     B[1] = 0.0;
     B[2] = 0.0;
     B[3] = 0.0;
-    M[0] = p->m2*(t1*t1 + p->L1*p->L1*t2*t2) + p->m1*p->L1*p->L1;
-    M[2] = p->m2*p->L2*t1;
-    M[3] = p->m2*p->L2*p->L2;
-    qdd0[0] = u0[0] + t6 + u0[1]*p->L1*t0*t5 - p->L1*t2*t9 - p->m1*p->L1*p->g*t3 - p->L1*t0*t11 - t12 - u0[1]*p->L1*t2*t10;
-    qdd0[1] = t6 - q0[1]*p->k - qd0[1]*p->c - t12;
+    M[0] = 2.0*t1 + p->m1*p->L1*p->L1 + t2 + p->m2*p->L1*p->L1;
+    M[2] = t1 + t2;
+    M[3] = t2;
+    qdd0[0] = u0[0] + t12 + u0[1]*p->L1*t0*t8 - p->L1*(t0*t7 + t4*t11) - p->m1*p->L1*p->g*t3 - t13 - u0[1]*p->L1*t4*t6;
+    qdd0[1] = t12 - q0[1]*p->k - qd0[1]*p->c - t13;
     double_pendulum_mass_ldlt_factor(M);
     double_pendulum_mass_ldlt_solve(M, qdd0, 1);
-    const double t13 = p->m2*p->L2*p->g*t5;
-    const double t14 = u0[1]*p->L2*t10;
-    const double t15 = p->m2*p->L1*p->L2*qdd0[0]*t2;
-    const double t16 = p->m2*p->L1*p->L1*qdd0[0]*t0*t2;
-    const double t17 = t7 - qd0[0]*qd0[0]*p->m2*p->L1*t0;
-    const double t18 = p->L2*t17;
-    const double t19 = p->L1*t2*t11;
-    const double t20 = p->L2*t5;
-    A[8] = u0[1]*p->L1*t2*t5 + t13 + u0[1]*p->L1*t0*t10 + p->m2*p->L1*p->g*t0*t5 + t14 - p->m1*p->L1*p->g*t4 - p->m2*p->L1*p->g*t2*t10;
-    A[9] = t15 + p->m2*p->L1*t2*(qdd0[0]*t1 + p->L2*qdd0[1]) + t16 + t18 + t14 + t19 + p->L1*t0*t17 - 2.0*t16 - t19 - p->L1*t0*t9;
-    A[10] = p->m2*p->L1*t2*(2.0*p->L2*t8 + 2.0*qd0[0]*p->L1*t0) - 2.0*qd0[0]*p->m2*p->L1*p->L2*t2 - 2.0*qd0[0]*p->m2*p->L1*p->L1*t0*t2;
-    A[11] = 2.0*p->m2*p->L1*p->L2*t2*t8;
-    A[12] = t13 + t14;
-    A[13] = t15 + t18 + t14 - p->k;
-    A[14] = -2.0*qd0[0]*p->m2*p->L1*p->L2*t2;
+    const double t14 = p->m2*p->L2*p->g*t8;
+    const double t15 = u0[1]*p->L2*t6;
+    const double t16 = p->m2*p->L1*p->L2*qdd0[0]*t4;
+    const double t17 = p->m2*p->L1*p->L1*qdd0[0]*t0*t4;
+    const double t18 = t9 - qd0[0]*qd0[0]*p->m2*p->L1*t0;
+    const double t19 = p->L2*t18;
+    const double t20 = t4*t7;
+    const double t21 = p->L2*t8;
+    A[8] = u0[1]*p->L1*t4*t8 + t14 + u0[1]*p->L1*t0*t6 + p->L1*(p->m2*p->g*t0*t8 - p->m2*p->g*t4*t6) + t15 - p->m1*p->L1*p->g*t5;
+    A[9] = t16 + p->m2*p->L1*t4*(p->L1*qdd0[0]*t0 + p->L2*(qdd0[0] + qdd0[1])) + t17 + t19 + t15 - 2.0*t17 - p->L1*(t20 + t0*t11 - t20 - t0*t18);
+    A[10] = p->L1*(p->m2*t4*(2.0*p->L2*t10 + 2.0*qd0[0]*p->L1*t0) - 2.0*qd0[0]*p->m2*p->L1*t0*t4) - 2.0*qd0[0]*p->m2*p->L1*p->L2*t4;
+    A[11] = 2.0*p->m2*p->L1*p->L2*t4*t10;
+    A[12] = t14 + t15;
+    A[13] = t16 + t19 + t15 - p->k;
+    A[14] = -2.0*qd0[0]*p->m2*p->L1*p->L2*t4;
     A[15] = -p->c;
     B[4] = 1.0;
-    B[5] = t20 + p->L1*t0*t5 - p->L1*t2*t10;
+    B[5] = t21 + p->L1*t0*t8 - p->L1*t4*t6;
     B[6] = 0.0;
-    B[7] = t20;
+    B[7] = t21;
     double_pendulum_mass_ldlt_solve(M, A + 8, 4);
     double_pendulum_mass_ldlt_solve(M, B + 4, 2);
 }

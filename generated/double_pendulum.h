@@ -29,18 +29,18 @@
 // Operations per call, worst case: the code is straight-line (loops of fixed
 // length only), so every call does exactly these (the LDL^T solves and the
 // functions called included: rhs in outputs, four rhs in rk4_step):
-//   mass_matrix       3 adds, 12 muls, 0 divs, 2 calls
-//   forcing           16 adds, 36 muls, 0 divs, 4 calls
-//   jacobians         26 adds, 85 muls, 0 divs, 4 calls
+//   mass_matrix       4 adds, 10 muls, 0 divs, 1 calls
+//   forcing           16 adds, 35 muls, 0 divs, 4 calls
+//   jacobians         26 adds, 81 muls, 0 divs, 4 calls
 //   outputs_from_qdd  7 adds, 15 muls, 0 divs, 4 calls
 //   outputs           7 adds, 15 muls, 0 divs, 4 calls
-//   rhs               22 adds, 54 muls, 2 divs, 4 calls
-//   rhs_jacobian      54 adds, 147 muls, 2 divs, 4 calls
-//   linear            48 adds, 136 muls, 2 divs, 4 calls
-//   state_space       60 adds, 160 muls, 2 divs, 4 calls
+//   rhs               23 adds, 51 muls, 2 divs, 4 calls
+//   rhs_jacobian      56 adds, 141 muls, 2 divs, 4 calls
+//   linear            50 adds, 130 muls, 2 divs, 4 calls
+//   state_space       62 adds, 154 muls, 2 divs, 4 calls
 //   output_matrices   12 adds, 22 muls, 0 divs, 4 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          118 adds, 237 muls, 9 divs, 16 calls
+//   rk4_step          122 adds, 225 muls, 9 divs, 16 calls
 
 #ifndef double_pendulum_YAMSC_GENERATED_H
 #define double_pendulum_YAMSC_GENERATED_H

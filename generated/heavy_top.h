@@ -26,18 +26,18 @@
 // Operations per call, worst case: the code is straight-line (loops of fixed
 // length only), so every call does exactly these (the LDL^T solves and the
 // functions called included: rhs in outputs, four rhs in rk4_step):
-//   mass_matrix       7 adds, 33 muls, 0 divs, 4 calls
+//   mass_matrix       4 adds, 17 muls, 0 divs, 4 calls
 //   forcing           18 adds, 54 muls, 0 divs, 4 calls
 //   jacobians         73 adds, 234 muls, 0 divs, 4 calls
 //   outputs_from_qdd  0 adds, 1 muls, 0 divs, 1 calls
 //   outputs           0 adds, 1 muls, 0 divs, 1 calls
-//   rhs               28 adds, 94 muls, 3 divs, 4 calls
-//   rhs_jacobian      116 adds, 373 muls, 3 divs, 4 calls
-//   linear            104 adds, 343 muls, 3 divs, 4 calls
-//   state_space       116 adds, 373 muls, 3 divs, 4 calls
+//   rhs               25 adds, 78 muls, 3 divs, 4 calls
+//   rhs_jacobian      111 adds, 349 muls, 3 divs, 4 calls
+//   linear            99 adds, 319 muls, 3 divs, 4 calls
+//   state_space       111 adds, 349 muls, 3 divs, 4 calls
 //   output_matrices   0 adds, 1 muls, 0 divs, 1 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          156 adds, 407 muls, 13 divs, 16 calls
+//   rk4_step          144 adds, 343 muls, 13 divs, 16 calls
 
 #ifndef heavy_top_YAMSC_GENERATED_H
 #define heavy_top_YAMSC_GENERATED_H

@@ -72,9 +72,9 @@
 //   outputs_from_qdd  3 adds, 8 muls, 0 divs, 2 calls
 //   outputs           3 adds, 8 muls, 0 divs, 2 calls
 //   rhs               182 adds, 473 muls, 3 divs, 0 calls
-//   rhs_jacobian      523 adds, 1474 muls, 3 divs, 4 calls
-//   linear            504 adds, 1453 muls, 3 divs, 4 calls
-//   state_space       564 adds, 1543 muls, 3 divs, 4 calls
+//   rhs_jacobian      518 adds, 1471 muls, 3 divs, 4 calls
+//   linear            499 adds, 1450 muls, 3 divs, 4 calls
+//   state_space       559 adds, 1540 muls, 3 divs, 4 calls
 //   output_matrices   3 adds, 10 muls, 0 divs, 2 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step          772 adds, 1923 muls, 13 divs, 0 calls

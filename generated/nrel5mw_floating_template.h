@@ -71,9 +71,9 @@
 //   outputs_from_qdd  4 adds, 17 muls, 0 divs, 2 calls
 //   outputs           4 adds, 17 muls, 0 divs, 2 calls
 //   rhs               184 adds, 386 muls, 4 divs, 8 calls
-//   rhs_jacobian      596 adds, 1479 muls, 4 divs, 8 calls
-//   linear            548 adds, 1401 muls, 4 divs, 8 calls
-//   state_space       656 adds, 1581 muls, 4 divs, 8 calls
+//   rhs_jacobian      602 adds, 1495 muls, 4 divs, 8 calls
+//   linear            554 adds, 1417 muls, 4 divs, 8 calls
+//   state_space       662 adds, 1597 muls, 4 divs, 8 calls
 //   output_matrices   3 adds, 11 muls, 0 divs, 2 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step          794 adds, 1585 muls, 17 divs, 32 calls

@@ -39,9 +39,9 @@
 //   outputs_from_qdd  0 adds, 1 muls, 0 divs, 0 calls
 //   outputs           0 adds, 1 muls, 0 divs, 0 calls
 //   rhs               44 adds, 119 muls, 2 divs, 6 calls
-//   rhs_jacobian      97 adds, 294 muls, 2 divs, 6 calls
-//   linear            97 adds, 287 muls, 2 divs, 6 calls
-//   state_space       97 adds, 301 muls, 2 divs, 6 calls
+//   rhs_jacobian      99 adds, 302 muls, 2 divs, 6 calls
+//   linear            99 adds, 295 muls, 2 divs, 6 calls
+//   state_space       99 adds, 309 muls, 2 divs, 6 calls
 //   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 

@@ -96,9 +96,9 @@
 //   outputs_from_qdd  0 adds, 2 muls, 0 divs, 0 calls
 //   outputs           0 adds, 2 muls, 0 divs, 0 calls
 //   rhs               313 adds, 1073 muls, 3 divs, 2 calls
-//   rhs_jacobian      815 adds, 2855 muls, 3 divs, 8 calls
-//   linear            789 adds, 2847 muls, 3 divs, 8 calls
-//   state_space       849 adds, 2937 muls, 3 divs, 8 calls
+//   rhs_jacobian      813 adds, 2867 muls, 3 divs, 8 calls
+//   linear            787 adds, 2859 muls, 3 divs, 8 calls
+//   state_space       847 adds, 2949 muls, 3 divs, 8 calls
 //   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step          1296 adds, 4323 muls, 13 divs, 8 calls

@@ -75,10 +75,10 @@
 //   outputs_from_qdd  44 adds, 118 muls, 0 divs, 10 calls
 //   outputs           269 adds, 724 muls, 4 divs, 22 calls
 //   rhs               225 adds, 606 muls, 4 divs, 12 calls
-//   rhs_jacobian      912 adds, 2545 muls, 4 divs, 12 calls
-//   linear            855 adds, 2480 muls, 4 divs, 12 calls
-//   state_space       975 adds, 2660 muls, 4 divs, 12 calls
-//   output_matrices   1094 adds, 2889 muls, 4 divs, 12 calls
+//   rhs_jacobian      918 adds, 2565 muls, 4 divs, 12 calls
+//   linear            861 adds, 2500 muls, 4 divs, 12 calls
+//   state_space       981 adds, 2680 muls, 4 divs, 12 calls
+//   output_matrices   1100 adds, 2909 muls, 4 divs, 12 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once

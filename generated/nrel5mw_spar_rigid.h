@@ -42,18 +42,18 @@
 // Operations per call, worst case: the code is straight-line (loops of fixed
 // length only), so every call does exactly these (the LDL^T solves and the
 // functions called included: rhs in outputs, four rhs in rk4_step):
-//   mass_matrix       27 adds, 55 muls, 0 divs, 6 calls
-//   forcing           31 adds, 80 muls, 0 divs, 6 calls
-//   jacobians         53 adds, 177 muls, 0 divs, 6 calls
+//   mass_matrix       24 adds, 35 muls, 0 divs, 6 calls
+//   forcing           43 adds, 78 muls, 0 divs, 6 calls
+//   jacobians         71 adds, 165 muls, 0 divs, 6 calls
 //   outputs_from_qdd  1 adds, 3 muls, 0 divs, 1 calls
 //   outputs           1 adds, 3 muls, 0 divs, 1 calls
-//   rhs               57 adds, 137 muls, 3 divs, 6 calls
-//   rhs_jacobian      139 adds, 382 muls, 3 divs, 6 calls
-//   linear            127 adds, 353 muls, 3 divs, 6 calls
-//   state_space       143 adds, 393 muls, 3 divs, 6 calls
+//   rhs               69 adds, 119 muls, 3 divs, 6 calls
+//   rhs_jacobian      161 adds, 340 muls, 3 divs, 6 calls
+//   linear            149 adds, 311 muls, 3 divs, 6 calls
+//   state_space       165 adds, 351 muls, 3 divs, 6 calls
 //   output_matrices   0 adds, 1 muls, 0 divs, 1 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          272 adds, 579 muls, 13 divs, 24 calls
+//   rk4_step          320 adds, 507 muls, 13 divs, 24 calls
 
 #ifndef nrel5mw_spar_rigid_YAMSC_GENERATED_H
 #define nrel5mw_spar_rigid_YAMSC_GENERATED_H

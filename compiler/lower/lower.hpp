@@ -18,4 +18,11 @@ ir::System lower(const symbolic::Equations& eq);
 /// As above, with the model's operating point (parameters only) as well.
 ir::System lower(const symbolic::Equations& eq, const symbolic::OperatingPoint& point);
 
+/// The arithmetic compiled code spends on `roots` (expressions of `eq`'s
+/// symbols), every distinct IR node once: an operation per operand of a sum or
+/// product beyond the first, per coefficient other than ±1 and per factor of an
+/// integer power; 10 per function call (what libm costs). The IR is canonical,
+/// so the count is the same in every process (symbolic::DeriveOptions::cost).
+double operation_count(const symbolic::Equations& eq, const std::vector<GiNaC::ex>& roots);
+
 } // namespace yamsc::lower

@@ -3,6 +3,7 @@
 #include "model/names.hpp"
 #include "symbolic/flexible_body.hpp"
 #include "symbolic/kinematics.hpp"
+#include "symbolic/projection.hpp"
 #include "symbolic/reactions.hpp"
 
 namespace yamsc::symbolic {
@@ -21,86 +22,39 @@ Vec3 change_axes(const Vec3& v, int from, int to, const std::vector<FrameState>&
 
 class Kane {
 public:
-    Kane(const model::Model& m, diag::Diagnostics& diags, bool mass_matrix)
-        : m_(m), diags_(diags), sym_(m), mass_matrix_(mass_matrix) {}
+    Kane(const model::Model& m, diag::Diagnostics& diags, const DeriveOptions& options)
+        : m_(m), diags_(diags), sym_(m), mass_matrix_(options.mass_matrix), options_(options) {}
 
     std::optional<Equations> run() {
         frames_ = body_frames(m_, sym_);
         const std::size_t nq = m_.dofs.size();
         eq_.M.assign(nq, Row(nq, 0));
         for (const auto& d : sym_.dofs()) eq_.a.emplace_back("a_" + d.name);
+        eq_.t = sym_.t(); // the symbols first: options_.cost reads them
+        eq_.dofs = sym_.dofs();
+        eq_.inputs = sym_.inputs();
+        eq_.params = sym_.params();
         Ma_terms_.assign(nq, exvector{});
         std::vector<exvector> F_terms(nq);
         std::vector<exvector> load_terms(nq); // may contain q'': moved into M below
 
         Vec3 g = to_ginac(m_.gravity, sym_);
         std::vector<Wrench> applied = applied_wrenches();
+        std::vector<BodyTerms> terms;
         for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
             const model::Body& body = m_.bodies[b];
             const FrameState& f = frames_[b];
             add_applied_loads(f, applied[b], load_terms);
-            if (body.flex) {
-                add_flexible_body(body, f, transpose_times(f.R, g), sym_, eq_.M, F_terms,
-                                  {eq_.a, Ma_terms_});
-                continue;
-            }
-            ex mass = to_ginac(body.mass, sym_);
-            Vec3 c = to_ginac(body.com, sym_);
-            Mat3 J = inertia_tensor(body, sym_);
-
-            // Partial velocities of the COM (eq. 8).
-            std::map<int, Vec3> JvG;
-            for (const auto& [r, jv] : f.Jv) JvG[r] = jv;
-            for (const auto& [r, jw] : f.Jw) {
-                auto it = JvG.find(r);
-                Vec3 add = cross(jw, c);
-                if (it == JvG.end())
-                    JvG.emplace(r, add);
-                else
-                    it->second = it->second + add;
-            }
-            // Mass matrix: Σ m JvG_r·JvG_s + Jω_r·(J Jω_s), upper triangle mirrored.
-            // O(DOFs²) sums per body, grown with GiNaC's operators: by far the
-            // largest cost of large models, skipped in the tangent form.
-            for (auto it_r = JvG.begin(); mass_matrix_ && it_r != JvG.end(); ++it_r) {
-                for (auto it_s = it_r; it_s != JvG.end(); ++it_s) {
-                    auto r = static_cast<std::size_t>(it_r->first);
-                    auto s = static_cast<std::size_t>(it_s->first);
-                    ex term = mass * dot(it_r->second, it_s->second);
-                    auto wr = f.Jw.find(it_r->first), ws = f.Jw.find(it_s->first);
-                    if (wr != f.Jw.end() && ws != f.Jw.end())
-                        term += dot(wr->second, J * ws->second);
-                    eq_.M[r][s] += term;
-                }
-            }
-            // (M a)_r = Jv_r·(m A_G) + Jω_r·(c × m A_G + J A_ω), A = Σ_s J_s a_s: the
-            // q''-part of the inertia forces with q'' = a (for the Jacobians).
-            Vec3 AG, Aw;
-            for (const auto& [s, jv] : JvG) AG = AG + eq_.a[static_cast<std::size_t>(s)] * jv;
-            for (const auto& [s, jw] : f.Jw) Aw = Aw + eq_.a[static_cast<std::size_t>(s)] * jw;
-            Vec3 fa = mass * AG;
-            Vec3 ma = cross(c, fa) + J * Aw;
-            for (const auto& [r, jv] : f.Jv)
-                Ma_terms_[static_cast<std::size_t>(r)].push_back(dot(jv, fa));
-            for (const auto& [r, jw] : f.Jw)
-                Ma_terms_[static_cast<std::size_t>(r)].push_back(dot(jw, ma));
-            // Inertial force at the COM and torque (eq. 6), plus gravity, as a wrench
-            // about the origin; f_r* + f_r = Jv_r·F + Jω_r·T (eq. 7, 9).
-            Vec3 aG = f.a + cross(f.alpha, c) + cross(f.w, cross(f.w, c));
-            Vec3 g_local = transpose_times(f.R, g);
-            Vec3 force = mass * g_local - mass * aG;
-            Vec3 torque = -(J * f.alpha) - cross(f.w, J * f.w);
-            Vec3 moment = cross(c, force) + torque;
-            for (const auto& [r, jv] : f.Jv)
-                F_terms[static_cast<std::size_t>(r)].push_back(dot(jv, force));
-            for (const auto& [r, jw] : f.Jw)
-                F_terms[static_cast<std::size_t>(r)].push_back(dot(jw, moment));
+            const Vec3 g_local = transpose_times(f.R, g);
+            terms.push_back(body.flex ? flexible_body_terms(body, f, g_local, sym_)
+                                      : rigid_body_terms(body, f, g_local, sym_));
         }
+        project(relative_frames(), terms, F_terms);
         for (std::size_t r = 0; r < nq; ++r)
             for (std::size_t s = 0; s < r; ++s) eq_.M[r][s] = eq_.M[s][r];
         generalized_loads(load_terms);
         if (!move_accelerations_into_mass(load_terms)) return std::nullopt;
-        if (!mass_matrix_) eq_.M.clear(); // partial (flexible bodies wrote their blocks)
+        if (!mass_matrix_) eq_.M.clear(); // only the loads' q'' terms
         eq_.Ma.resize(nq);
         for (std::size_t r = 0; r < nq; ++r)
             eq_.Ma[r] = Ma_terms_[r].empty() ? ex(0) : ex(add(Ma_terms_[r]));
@@ -113,14 +67,68 @@ public:
         outputs();
         eq_.model_name = m_.name;
         eq_.title = m_.title;
-        eq_.t = sym_.t();
-        eq_.dofs = sym_.dofs();
-        eq_.inputs = sym_.inputs();
-        eq_.params = sym_.params();
         return std::move(eq_);
     }
 
 private:
+    /// M (upper triangle), F and M a from the bodies' terms, with the grouping
+    /// into composite bodies that costs the fewest operations for this model.
+    void project(const std::vector<FrameState>& relative, const std::vector<BodyTerms>& terms,
+                 std::vector<exvector>& F_terms) {
+        const std::size_t nq = m_.dofs.size();
+        std::optional<double> best;
+        Matrix best_M;
+        exvector best_F;
+        std::vector<Grouping> groupings{Grouping::all};
+        if (options_.grouping)
+            groupings = {*options_.grouping};
+        else if (options_.cost)
+            groupings = {Grouping::none, Grouping::flexible, Grouping::all};
+        for (Grouping grouping : groupings) {
+            Projection projection(m_, frames_, relative, terms, grouping);
+            Matrix M(nq, Row(nq, 0));
+            exvector F, all;
+            // M: O(DOFs²) entries, by far the largest cost of large models;
+            // skipped in the tangent form, which needs only M a.
+            for (std::size_t r = 0; mass_matrix_ && r < nq; ++r)
+                for (std::size_t s = r; s < nq; ++s) {
+                    M[r][s] = projection.mass(static_cast<int>(r), static_cast<int>(s));
+                    all.push_back(M[r][s]);
+                }
+            for (std::size_t r = 0; r < nq; ++r) {
+                F.push_back(projection.force(static_cast<int>(r)));
+                all.push_back(F.back());
+            }
+            // The first of equal costs: a grouping only where it saves.
+            const double cost = groupings.size() > 1 ? options_.cost(eq_, all) : 0.0;
+            if (best && cost >= *best) continue;
+            best = cost;
+            best_M = std::move(M);
+            best_F = std::move(F);
+        }
+        for (std::size_t r = 0; mass_matrix_ && r < nq; ++r)
+            for (std::size_t s = r; s < nq; ++s) eq_.M[r][s] = best_M[r][s];
+        for (std::size_t r = 0; r < nq; ++r) F_terms[r].push_back(best_F[r]);
+        add_mass_times(frames_, terms, eq_.a, Ma_terms_);
+    }
+
+    /// Each body's frame in its parent's: its joint steps from the identity.
+    std::vector<FrameState> relative_frames() {
+        std::vector<FrameState> out;
+        for (std::size_t b = 0; b < m_.bodies.size(); ++b) {
+            const model::Body& body = m_.bodies[b];
+            if (body.parent < 0) {
+                out.push_back(frames_[b]);
+                continue;
+            }
+            FrameState f = FrameState::ground();
+            const model::Body& parent = m_.bodies[static_cast<std::size_t>(body.parent)];
+            for (const auto& step : body.steps) f = apply_step(f, step, sym_, &parent);
+            out.push_back(std::move(f));
+        }
+        return out;
+    }
+
     /// Applied forces and moments about the body origin (eq. 7, 9, 19).
     static void add_applied_loads(const FrameState& f, const Wrench& w,
                                   std::vector<exvector>& load_terms) {
@@ -264,6 +272,7 @@ private:
     diag::Diagnostics& diags_;
     Symbols sym_;
     bool mass_matrix_;
+    const DeriveOptions& options_;
     std::vector<FrameState> frames_;
     std::vector<exvector> Ma_terms_;                        // terms of (M a)_r
     std::optional<Reactions> reactions_;                    // built when an output asks for one
@@ -273,8 +282,9 @@ private:
 
 } // namespace
 
-std::optional<Equations> derive(const model::Model& m, diag::Diagnostics& diags, bool mass_matrix) {
-    return Kane(m, diags, mass_matrix).run();
+std::optional<Equations> derive(const model::Model& m, diag::Diagnostics& diags,
+                                const DeriveOptions& options) {
+    return Kane(m, diags, options).run();
 }
 
 } // namespace yamsc::symbolic

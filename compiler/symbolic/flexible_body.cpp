@@ -79,6 +79,7 @@ struct Terms {
     Vec3 fx, ft;
     std::vector<ex> fe;
     FrameState frame;
+    Blocks blocks;
     Vec3 jv(int r) const {
         auto it = frame.Jv.find(r);
         return it == frame.Jv.end() ? Vec3{} : it->second;
@@ -95,8 +96,9 @@ Terms flexible_terms(const model::Body& body, const FrameState& f, const Vec3& g
     const sid::Sid& s = el.sid();
     const int nq = el.nq();
     const auto un = static_cast<std::size_t>(nq);
-    Blocks b = evaluate(el);
     Terms out;
+    out.blocks = evaluate(el);
+    const Blocks& b = out.blocks;
     out.frame = f;
 
     // Coordinates that move this body: its frame's and its own modes.
@@ -207,41 +209,26 @@ Rows weighted_rows(const Terms& terms, const std::vector<ex>& a, std::size_t n_m
 
 } // namespace
 
-void add_flexible_body(const model::Body& body, const FrameState& f, const Vec3& g,
-                       const Symbols& symbols, Matrix& M, std::vector<exvector>& F, MaTerms Ma) {
+BodyTerms flexible_body_terms(const model::Body& body, const FrameState& f, const Vec3& g,
+                              const Symbols& symbols) {
     const Terms terms = flexible_terms(body, f, g, symbols);
-    const std::size_t un = terms.fe.size();
-    const auto& mode_of = terms.mode_of;
-
-    // Mass matrix: M_rs = [Jv_r, Jω_r, Je_r]ᵀ M_body [Jv_s, Jω_s, Je_s] (eq. 18, A2-A7).
-    for (auto it_r = terms.rows.begin(); it_r != terms.rows.end(); ++it_r) {
-        int r = it_r->first;
-        Vec3 v = terms.jv(r), w = terms.jw(r);
-        auto mode = mode_of.find(r);
-        for (auto it_s = it_r; it_s != terms.rows.end(); ++it_s) {
-            const Rows& col = it_s->second;
-            exvector t{dot(v, col.x), dot(w, col.theta)};
-            if (mode != mode_of.end()) t.push_back(col.e[static_cast<std::size_t>(mode->second)]);
-            M[static_cast<std::size_t>(r)][static_cast<std::size_t>(it_s->first)] += sum(t);
-        }
+    const Blocks& b = terms.blocks;
+    BodyTerms out;
+    out.inertia.mass = b.mass;
+    out.inertia.md = b.md;
+    out.inertia.J = b.J;
+    out.load = {terms.fx, terms.ft};
+    out.modes.resize(terms.fe.size());
+    for (const auto& [dof, k_] : terms.mode_of) {
+        const auto k = static_cast<std::size_t>(k_);
+        ModeTerms& mode = out.modes[k];
+        mode.dof = dof;
+        mode.ct = b.Ct[k];
+        mode.cr = b.Cr[k];
+        mode.force = terms.fe[k];
     }
-
-    // M a: the momentum rows weighted by the accelerations a_s, projected like M.
-    std::vector<ex> a(Ma.a.begin(), Ma.a.end());
-    const Rows A = weighted_rows(terms, a, un);
-    for (int r : terms.coords) {
-        exvector t{dot(terms.jv(r), A.x), dot(terms.jw(r), A.theta)};
-        auto mode = mode_of.find(r);
-        if (mode != mode_of.end()) t.push_back(A.e[static_cast<std::size_t>(mode->second)]);
-        Ma.terms[static_cast<std::size_t>(r)].push_back(sum(t));
-    }
-
-    for (int r : terms.coords) {
-        exvector t{dot(terms.jv(r), terms.fx), dot(terms.jw(r), terms.ft)};
-        auto mode = mode_of.find(r);
-        if (mode != mode_of.end()) t.push_back(terms.fe[static_cast<std::size_t>(mode->second)]);
-        F[static_cast<std::size_t>(r)].push_back(sum(t));
-    }
+    out.Me = b.Me;
+    return out;
 }
 
 std::pair<Vec3, Vec3> flexible_body_wrench(const model::Body& body, const FrameState& f,

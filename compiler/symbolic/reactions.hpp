@@ -3,17 +3,12 @@
 // body's joint transmits to it from its parent, by Newton-Euler over the bodies
 // it carries, with the accelerations q'' as symbols (the generated `outputs`
 // solves them from M q'' = F).
-#include "symbolic/kinematics.hpp"
+#include "symbolic/body_terms.hpp"
 
 #include <map>
 #include <vector>
 
 namespace yamsc::symbolic {
-
-/// Resultant force and moment about a body's origin.
-struct Wrench {
-    Vec3 force, moment;
-};
 
 /// Inertia tensor about the COM, body axes, from (Ixx, Iyy, Izz, Ixy, Iyz, Ixz).
 Mat3 inertia_tensor(const model::Body& b, const Symbols& s);

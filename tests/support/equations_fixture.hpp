@@ -39,7 +39,10 @@ inline InProcess derive_in_process(const std::string& path, driver::Until until,
     const bool tangent =
         driver::uses_tangent_form(*out.fe.model, until, driver::Derivatives::automatic);
     const model::Model derived = model::with_external_channels(*out.fe.model);
-    out.equations = symbolic::derive(derived, diags, !tangent);
+    symbolic::DeriveOptions options; // as the derivation module derives
+    options.mass_matrix = !tangent;
+    options.cost = lower::operation_count;
+    out.equations = symbolic::derive(derived, diags, options);
     if (!out.equations || diags.has_errors()) return out;
     out.equations->source_path = path;
     out.fe.system =

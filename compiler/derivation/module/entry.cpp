@@ -20,7 +20,10 @@ void derive_system(const DerivationRequest& request, diag::Diagnostics& diags,
     };
     const model::Model& m = *request.model;
     const auto start = clock::now();
-    std::optional<symbolic::Equations> eq = symbolic::derive(m, diags, request.mass_matrix);
+    symbolic::DeriveOptions options;
+    options.mass_matrix = request.mass_matrix;
+    options.cost = lower::operation_count;
+    std::optional<symbolic::Equations> eq = symbolic::derive(m, diags, options);
     result.derive_seconds = seconds_since(start);
     if (!eq || diags.has_errors()) return;
     eq->source_path = request.source_path;
