@@ -29,15 +29,15 @@
 // Operations per call (the LDL^T solves and the functions called, such as
 // rhs in outputs, included):
 //   mass_matrix       4 adds, 10 muls, 0 divs, 1 calls
-//   forcing           16 adds, 35 muls, 0 divs, 4 calls
-//   jacobians         26 adds, 81 muls, 0 divs, 4 calls
-//   outputs_from_qdd  7 adds, 15 muls, 0 divs, 4 calls
-//   outputs           7 adds, 15 muls, 0 divs, 4 calls
-//   rhs               23 adds, 51 muls, 2 divs, 4 calls
-//   rhs_jacobian      56 adds, 141 muls, 2 divs, 4 calls
-//   linear            50 adds, 130 muls, 2 divs, 4 calls
-//   state_space       62 adds, 154 muls, 2 divs, 4 calls
-//   output_matrices   12 adds, 22 muls, 0 divs, 4 calls
+//   forcing           16 adds, 31 muls, 0 divs, 4 calls
+//   jacobians         26 adds, 59 muls, 0 divs, 4 calls
+//   outputs_from_qdd  7 adds, 14 muls, 0 divs, 4 calls
+//   outputs           7 adds, 14 muls, 0 divs, 4 calls
+//   rhs               23 adds, 46 muls, 2 divs, 4 calls
+//   rhs_jacobian      56 adds, 104 muls, 2 divs, 4 calls
+//   linear            50 adds, 91 muls, 2 divs, 4 calls
+//   state_space       62 adds, 115 muls, 2 divs, 4 calls
+//   output_matrices   12 adds, 18 muls, 0 divs, 4 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #include "double_pendulum.hpp"
@@ -128,13 +128,17 @@ void forcing(double t, const double* q, const double* qd, const double* u, const
     const double t2 = std::sin(q[1]);
     const double t3 = std::cos(q[0]);
     const double t4 = t0*t1 + t2*t3;
-    const double t5 = p.m2*p.g*t4 + qd[0]*qd[0]*p.m2*p.L1*t2;
-    const double t6 = t2*t1 - t0*t3;
-    const double t7 = qd[0] + qd[1];
-    const double t8 = u[1]*p.L2*t6;
-    const double t9 = p.L2*t5;
-    F[0] = u[0] + t8 + u[1]*p.L1*t0*t6 - p.L1*(t0*t5 + t2*(p.m2*p.g*t6 - p.m2*(qd[0]*qd[0]*p.L1*t0 + p.L2*t7*t7))) - p.m1*p.L1*p.g*t1 - t9 - u[1]*p.L1*t2*t4;
-    F[1] = t8 - q[1]*p.k - qd[1]*p.c - t9;
+    const double t5 = p.m2*p.g;
+    const double t6 = p.L1*t2;
+    const double t7 = t4*t5 + qd[0]*qd[0]*p.m2*t6;
+    const double t8 = t2*t1 - t0*t3;
+    const double t9 = p.L1*t0;
+    const double t10 = qd[0] + qd[1];
+    const double t11 = t8*u[1];
+    const double t12 = p.L2*t11;
+    const double t13 = p.L2*t7;
+    F[0] = u[0] + t12 + t9*t11 - p.L1*(t0*t7 + t2*(t8*t5 - p.m2*(qd[0]*qd[0]*t9 + p.L2*t10*t10))) - p.m1*p.L1*p.g*t1 - t13 - u[1]*t4*t6;
+    F[1] = t12 - q[1]*p.k - qd[1]*p.c - t13;
 }
 
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
@@ -145,27 +149,35 @@ void jacobians(double t, const double* q, const double* qd, const double* u, con
     const double t2 = std::sin(q[0]);
     const double t3 = std::cos(q[1]);
     const double t4 = t1*t2 - t3*t0;
-    const double t5 = p.m2*p.L2*p.g*t4;
-    const double t6 = t3*t2 + t1*t0;
-    const double t7 = u[1]*p.L2*t6;
-    const double t8 = p.m2*p.g*t4;
-    const double t9 = t8 - qd[0]*qd[0]*p.m2*p.L1*t3;
-    const double t10 = p.L2*t9;
-    const double t11 = t1*(p.m2*p.g*t6 + qd[0]*qd[0]*p.m2*p.L1*t1);
-    const double t12 = qd[0] + qd[1];
-    const double t13 = p.L2*t4;
-    dF_dq[0] = u[1]*p.L1*t1*t4 + t5 + u[1]*p.L1*t3*t6 + p.L1*(p.m2*p.g*t3*t4 - p.m2*p.g*t1*t6) + t7 - p.m1*p.L1*p.g*t0;
-    dF_dq[1] = t10 + t7 - p.L1*(t11 + t3*(t8 - p.m2*(qd[0]*qd[0]*p.L1*t3 + p.L2*t12*t12)) - t11 - t3*t9);
-    dF_dq[2] = t5 + t7;
-    dF_dq[3] = t10 + t7 - p.k;
-    dF_dqd[0] = p.L1*(p.m2*t1*(2.0*p.L2*t12 + 2.0*qd[0]*p.L1*t3) - 2.0*qd[0]*p.m2*p.L1*t3*t1) - 2.0*qd[0]*p.m2*p.L1*p.L2*t1;
-    dF_dqd[1] = 2.0*p.m2*p.L1*p.L2*t1*t12;
-    dF_dqd[2] = -2.0*qd[0]*p.m2*p.L1*p.L2*t1;
+    const double t5 = p.L1*t1;
+    const double t6 = p.g*p.m2;
+    const double t7 = p.L2*t4;
+    const double t8 = t6*t7;
+    const double t9 = t3*t2 + t1*t0;
+    const double t10 = p.L1*t3;
+    const double t11 = u[1]*t9;
+    const double t12 = t4*t6;
+    const double t13 = t1*p.m2;
+    const double t14 = p.L2*t11;
+    const double t15 = t12 - qd[0]*qd[0]*p.m2*t10;
+    const double t16 = p.L2*t15;
+    const double t17 = t1*(t9*t6 + qd[0]*qd[0]*p.m2*t5);
+    const double t18 = qd[0] + qd[1];
+    const double t19 = p.m2*p.L2;
+    const double t20 = qd[0]*t5;
+    const double t21 = t19*t20;
+    dF_dq[0] = u[1]*t4*t5 + t8 + t10*t11 + p.L1*(t3*t12 - p.g*t9*t13) + t14 - p.m1*p.L1*p.g*t0;
+    dF_dq[1] = t16 + t14 - p.L1*(t17 + t3*(t12 - p.m2*(qd[0]*qd[0]*t10 + p.L2*t18*t18)) - t17 - t3*t15);
+    dF_dq[2] = t8 + t14;
+    dF_dq[3] = t16 + t14 - p.k;
+    dF_dqd[0] = p.L1*((2.0*p.L2*t18 + 2.0*qd[0]*t10)*t13 - 2.0*p.m2*t3*t20) - 2.0*t21;
+    dF_dqd[1] = 2.0*t18*t5*t19;
+    dF_dqd[2] = -2.0*t21;
     dF_dqd[3] = -p.c;
     dF_du[0] = 1.0;
-    dF_du[1] = t13 + p.L1*t3*t4 - p.L1*t1*t6;
+    dF_du[1] = t7 + t4*t10 - t9*t5;
     dF_du[2] = 0.0;
-    dF_du[3] = t13;
+    dF_du[3] = t7;
 }
 
 // the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of rhs
@@ -179,9 +191,10 @@ void outputs_from_qdd(double t, const double* q, const double* qd, const double*
     const double t3 = std::cos(q[0]);
     const double t4 = t1*t0 + t2*t3;
     const double t5 = t2*t0 - t1*t3;
+    const double t6 = p.L1*qd[0];
     y[0] = -p.L1*t0 - p.L2*t4;
     y[1] = p.L2*t5 - p.L1*t3;
-    y[2] = (p.L2*(qd[0] + qd[1]) + qd[0]*p.L1*t1)*t5 - qd[0]*p.L1*t2*t4;
+    y[2] = (p.L2*(qd[0] + qd[1]) + t1*t6)*t5 - t2*t4*t6;
 }
 
 // the model's outputs y(q, q', u, t)
@@ -197,24 +210,28 @@ void rhs(double t, const double* x, const double* u, const Params& p, double* xd
     (void)t;
     double M[4];
     const double t0 = std::cos(x[1]);
-    const double t1 = p.m2*p.L1*p.L2*t0;
-    const double t2 = p.m2*p.L2*p.L2;
-    const double t3 = std::sin(x[0]);
-    const double t4 = std::sin(x[1]);
-    const double t5 = std::cos(x[0]);
-    const double t6 = t0*t3 + t4*t5;
-    const double t7 = p.m2*p.g*t6 + x[2]*x[2]*p.m2*p.L1*t4;
-    const double t8 = t4*t3 - t0*t5;
-    const double t9 = x[2] + x[3];
-    const double t10 = u[1]*p.L2*t8;
-    const double t11 = p.L2*t7;
+    const double t1 = p.L1*t0;
+    const double t2 = p.m2*p.L2*t1;
+    const double t3 = p.m2*p.L2*p.L2;
+    const double t4 = std::sin(x[0]);
+    const double t5 = std::sin(x[1]);
+    const double t6 = std::cos(x[0]);
+    const double t7 = t0*t4 + t5*t6;
+    const double t8 = p.m2*p.g;
+    const double t9 = p.L1*t5;
+    const double t10 = t7*t8 + x[2]*x[2]*p.m2*t9;
+    const double t11 = t5*t4 - t0*t6;
+    const double t12 = x[2] + x[3];
+    const double t13 = t11*u[1];
+    const double t14 = p.L2*t13;
+    const double t15 = p.L2*t10;
     xdot[0] = x[2];
     xdot[1] = x[3];
-    M[0] = 2.0*t1 + p.m1*p.L1*p.L1 + t2 + p.m2*p.L1*p.L1;
-    M[2] = t1 + t2;
-    M[3] = t2;
-    xdot[2] = u[0] + t10 + u[1]*p.L1*t0*t8 - p.L1*(t0*t7 + t4*(p.m2*p.g*t8 - p.m2*(x[2]*x[2]*p.L1*t0 + p.L2*t9*t9))) - p.m1*p.L1*p.g*t3 - t11 - u[1]*p.L1*t4*t6;
-    xdot[3] = t10 - x[1]*p.k - x[3]*p.c - t11;
+    M[0] = 2.0*t2 + p.m1*p.L1*p.L1 + t3 + p.m2*p.L1*p.L1;
+    M[2] = t2 + t3;
+    M[3] = t3;
+    xdot[2] = u[0] + t14 + t1*t13 - p.L1*(t0*t10 + t5*(t11*t8 - p.m2*(x[2]*x[2]*t1 + p.L2*t12*t12))) - p.m1*p.L1*p.g*t4 - t15 - u[1]*t7*t9;
+    xdot[3] = t14 - x[1]*p.k - x[3]*p.c - t15;
     mass_ldlt_factor(M);
     mass_ldlt_solve(M, xdot + 2, 1);
 }
@@ -225,19 +242,28 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     double M[4];
     double qdd[2];
     const double t0 = std::cos(x[1]);
-    const double t1 = p.m2*p.L1*p.L2*t0;
-    const double t2 = p.m2*p.L2*p.L2;
-    const double t3 = std::sin(x[0]);
-    const double t4 = std::sin(x[1]);
-    const double t5 = std::cos(x[0]);
-    const double t6 = t0*t3 + t4*t5;
-    const double t7 = p.m2*p.g*t6 + x[2]*x[2]*p.m2*p.L1*t4;
-    const double t8 = t4*t3 - t0*t5;
-    const double t9 = p.m2*p.g*t8;
-    const double t10 = x[2] + x[3];
-    const double t11 = t9 - p.m2*(x[2]*x[2]*p.L1*t0 + p.L2*t10*t10);
-    const double t12 = u[1]*p.L2*t8;
-    const double t13 = p.L2*t7;
+    const double t1 = t0*(p.m2*p.L1);
+    const double t2 = p.L2*t1;
+    const double t3 = p.m2*p.L2*p.L2;
+    const double t4 = std::sin(x[0]);
+    const double t5 = std::sin(x[1]);
+    const double t6 = std::cos(x[0]);
+    const double t7 = t0*t4 + t5*t6;
+    const double t8 = p.m2*p.g;
+    const double t9 = p.m2*t5;
+    const double t10 = p.L1*t9;
+    const double t11 = t7*t8 + x[2]*x[2]*t10;
+    const double t12 = t5*t4 - t0*t6;
+    const double t13 = t12*t8;
+    const double t14 = p.L1*t0;
+    const double t15 = x[2] + x[3];
+    const double t16 = t13 - p.m2*(x[2]*x[2]*t14 + p.L2*t15*t15);
+    const double t17 = t12*u[1];
+    const double t18 = p.L2*t17;
+    const double t19 = p.g*(p.L1*p.m1);
+    const double t20 = p.L2*t11;
+    const double t21 = p.L1*t5;
+    const double t22 = t7*u[1];
     J[0] = 0.0;
     J[1] = 0.0;
     J[2] = 1.0;
@@ -246,27 +272,30 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     J[5] = 0.0;
     J[6] = 0.0;
     J[7] = 1.0;
-    M[0] = 2.0*t1 + p.m1*p.L1*p.L1 + t2 + p.m2*p.L1*p.L1;
-    M[2] = t1 + t2;
-    M[3] = t2;
-    qdd[0] = u[0] + t12 + u[1]*p.L1*t0*t8 - p.L1*(t0*t7 + t4*t11) - p.m1*p.L1*p.g*t3 - t13 - u[1]*p.L1*t4*t6;
-    qdd[1] = t12 - x[1]*p.k - x[3]*p.c - t13;
+    M[0] = 2.0*t2 + p.m1*p.L1*p.L1 + t3 + p.m2*p.L1*p.L1;
+    M[2] = t2 + t3;
+    M[3] = t3;
+    qdd[0] = u[0] + t18 + t14*t17 - p.L1*(t0*t11 + t5*t16) - t4*t19 - t20 - t21*t22;
+    qdd[1] = t18 - x[1]*p.k - x[3]*p.c - t20;
     mass_ldlt_factor(M);
     mass_ldlt_solve(M, qdd, 1);
-    const double t14 = p.m2*p.L2*p.g*t8;
-    const double t15 = u[1]*p.L2*t6;
-    const double t16 = p.m2*p.L1*p.L2*qdd[0]*t4;
-    const double t17 = p.m2*p.L1*p.L1*qdd[0]*t0*t4;
-    const double t18 = t9 - x[2]*x[2]*p.m2*p.L1*t0;
-    const double t19 = p.L2*t18;
-    const double t20 = t4*t7;
-    J[8] = u[1]*p.L1*t4*t8 + t14 + u[1]*p.L1*t0*t6 + p.L1*(p.m2*p.g*t0*t8 - p.m2*p.g*t4*t6) + t15 - p.m1*p.L1*p.g*t5;
-    J[9] = t16 + p.m2*p.L1*t4*(p.L1*qdd[0]*t0 + p.L2*(qdd[0] + qdd[1])) + t17 + t19 + t15 - 2.0*t17 - p.L1*(t20 + t0*t11 - t20 - t0*t18);
-    J[10] = p.L1*(p.m2*t4*(2.0*p.L2*t10 + 2.0*x[2]*p.L1*t0) - 2.0*x[2]*p.m2*p.L1*t0*t4) - 2.0*x[2]*p.m2*p.L1*p.L2*t4;
-    J[11] = 2.0*p.m2*p.L1*p.L2*t4*t10;
-    J[12] = t14 + t15;
-    J[13] = t16 + t19 + t15 - p.k;
-    J[14] = -2.0*x[2]*p.m2*p.L1*p.L2*t4;
+    const double t23 = p.L2*t13;
+    const double t24 = p.L2*t22;
+    const double t25 = t9*(p.L1*p.L2);
+    const double t26 = qdd[0]*t25;
+    const double t27 = p.L1*p.L1*qdd[0]*t0*t9;
+    const double t28 = t13 - x[2]*x[2]*t1;
+    const double t29 = p.L2*t28;
+    const double t30 = t5*t11;
+    const double t31 = x[2]*t25;
+    const double t32 = x[2]*t14;
+    J[8] = t21*t17 + t23 + t14*t22 + p.L1*(t0*t13 - p.g*t7*t9) + t24 - t6*t19;
+    J[9] = t26 + (qdd[0]*t14 + p.L2*(qdd[0] + qdd[1]))*t10 + t27 + t29 + t24 - 2.0*t27 - p.L1*(t30 + t0*t16 - t30 - t0*t28);
+    J[10] = p.L1*((2.0*p.L2*t15 + 2.0*t32)*t9 - 2.0*t9*t32) - 2.0*t31;
+    J[11] = 2.0*t15*t25;
+    J[12] = t23 + t24;
+    J[13] = t26 + t29 + t24 - p.k;
+    J[14] = -2.0*t31;
     J[15] = -p.c;
     mass_ldlt_solve(M, J + 8, 4);
 }
@@ -276,52 +305,64 @@ void linear(const double* q0, const double* qd0, const double* u0, const Params&
     double M[4];
     double qdd0[2];
     const double t0 = std::cos(q0[1]);
-    const double t1 = p.m2*p.L1*p.L2*t0;
-    const double t2 = p.m2*p.L2*p.L2;
-    const double t3 = 2.0*t1 + p.m1*p.L1*p.L1 + t2 + p.m2*p.L1*p.L1;
-    const double t4 = t1 + t2;
-    const double t5 = std::sin(q0[0]);
-    const double t6 = std::sin(q0[1]);
-    const double t7 = std::cos(q0[0]);
-    const double t8 = t0*t5 + t6*t7;
-    const double t9 = p.m2*p.g*t8 + qd0[0]*qd0[0]*p.m2*p.L1*t6;
-    const double t10 = t6*t5 - t0*t7;
-    const double t11 = p.m2*p.g*t10;
-    const double t12 = qd0[0] + qd0[1];
-    const double t13 = t11 - p.m2*(qd0[0]*qd0[0]*p.L1*t0 + p.L2*t12*t12);
-    const double t14 = u0[1]*p.L2*t10;
-    const double t15 = p.L2*t9;
-    M0[0] = t3;
-    M0[2] = t4;
-    M0[3] = t2;
+    const double t1 = t0*(p.m2*p.L1);
+    const double t2 = p.L2*t1;
+    const double t3 = p.m2*p.L2*p.L2;
+    const double t4 = 2.0*t2 + p.m1*p.L1*p.L1 + t3 + p.m2*p.L1*p.L1;
+    const double t5 = t2 + t3;
+    const double t6 = std::sin(q0[0]);
+    const double t7 = std::sin(q0[1]);
+    const double t8 = std::cos(q0[0]);
+    const double t9 = t0*t6 + t7*t8;
+    const double t10 = p.m2*p.g;
+    const double t11 = p.m2*t7;
+    const double t12 = p.L1*t11;
+    const double t13 = t9*t10 + qd0[0]*qd0[0]*t12;
+    const double t14 = t7*t6 - t0*t8;
+    const double t15 = t14*t10;
+    const double t16 = p.L1*t0;
+    const double t17 = qd0[0] + qd0[1];
+    const double t18 = t15 - p.m2*(qd0[0]*qd0[0]*t16 + p.L2*t17*t17);
+    const double t19 = p.L2*t14;
+    const double t20 = u0[1]*t19;
+    const double t21 = t14*u0[1];
+    const double t22 = p.g*(p.L1*p.m1);
+    const double t23 = p.L2*t13;
+    const double t24 = p.L1*t7;
+    const double t25 = t9*u0[1];
+    M0[0] = t4;
+    M0[2] = t5;
+    M0[3] = t3;
     M0[1] = M0[2];
-    M[0] = t3;
-    M[2] = t4;
-    M[3] = t2;
-    qdd0[0] = u0[0] + t14 + u0[1]*p.L1*t0*t10 - p.L1*(t0*t9 + t6*t13) - p.m1*p.L1*p.g*t5 - t15 - u0[1]*p.L1*t6*t8;
-    qdd0[1] = t14 - q0[1]*p.k - qd0[1]*p.c - t15;
+    M[0] = t4;
+    M[2] = t5;
+    M[3] = t3;
+    qdd0[0] = u0[0] + t20 + t16*t21 - p.L1*(t0*t13 + t7*t18) - t6*t22 - t23 - t24*t25;
+    qdd0[1] = t20 - q0[1]*p.k - qd0[1]*p.c - t23;
     mass_ldlt_factor(M);
     mass_ldlt_solve(M, qdd0, 1);
-    const double t16 = p.m2*p.L2*p.g*t10;
-    const double t17 = u0[1]*p.L2*t8;
-    const double t18 = p.m2*p.L1*p.L2*qdd0[0]*t6;
-    const double t19 = p.m2*p.L1*p.L1*qdd0[0]*t0*t6;
-    const double t20 = t11 - qd0[0]*qd0[0]*p.m2*p.L1*t0;
-    const double t21 = p.L2*t20;
-    const double t22 = t6*t9;
-    const double t23 = p.L2*t10;
-    C0[0] = 2.0*qd0[0]*p.m2*p.L1*p.L2*t6 - p.L1*(p.m2*t6*(2.0*p.L2*t12 + 2.0*qd0[0]*p.L1*t0) - 2.0*qd0[0]*p.m2*p.L1*t0*t6);
-    C0[1] = -2.0*p.m2*p.L1*p.L2*t6*t12;
-    C0[2] = 2.0*qd0[0]*p.m2*p.L1*p.L2*t6;
+    const double t26 = t11*(p.L1*p.L2);
+    const double t27 = qd0[0]*t26;
+    const double t28 = qd0[0]*t16;
+    const double t29 = t10*t19;
+    const double t30 = p.L2*t25;
+    const double t31 = qdd0[0]*t26;
+    const double t32 = p.L1*p.L1*qdd0[0]*t0*t11;
+    const double t33 = t15 - qd0[0]*qd0[0]*t1;
+    const double t34 = p.L2*t33;
+    const double t35 = t7*t13;
+    C0[0] = 2.0*t27 - p.L1*((2.0*p.L2*t17 + 2.0*t28)*t11 - 2.0*t11*t28);
+    C0[1] = -2.0*t17*t26;
+    C0[2] = 2.0*t27;
     C0[3] = p.c;
-    K0[0] = p.m1*p.L1*p.g*t7 - u0[1]*p.L1*t6*t10 - t16 - u0[1]*p.L1*t0*t8 - p.L1*(p.m2*p.g*t0*t10 - p.m2*p.g*t6*t8) - t17;
-    K0[1] = 2.0*t19 + p.L1*(t22 + t0*t13 - t22 - t0*t20) - t18 - p.m2*p.L1*t6*(p.L1*qdd0[0]*t0 + p.L2*(qdd0[0] + qdd0[1])) - t19 - t21 - t17;
-    K0[2] = -t16 - t17;
-    K0[3] = p.k - t18 - t21 - t17;
+    K0[0] = t8*t22 - t24*t21 - t29 - t16*t25 - p.L1*(t0*t15 - p.g*t9*t11) - t30;
+    K0[1] = 2.0*t32 + p.L1*(t35 + t0*t18 - t35 - t0*t33) - t31 - (qdd0[0]*t16 + p.L2*(qdd0[0] + qdd0[1]))*t12 - t32 - t34 - t30;
+    K0[2] = -t29 - t30;
+    K0[3] = p.k - t31 - t34 - t30;
     Q0[0] = 1.0;
-    Q0[1] = t23 + p.L1*t0*t10 - p.L1*t6*t8;
+    Q0[1] = t19 + t14*t16 - t9*t24;
     Q0[2] = 0.0;
-    Q0[3] = t23;
+    Q0[3] = t19;
 }
 
 // x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu
@@ -329,19 +370,29 @@ void state_space(const double* q0, const double* qd0, const double* u0, const Pa
     double M[4];
     double qdd0[2];
     const double t0 = std::cos(q0[1]);
-    const double t1 = p.m2*p.L1*p.L2*t0;
-    const double t2 = p.m2*p.L2*p.L2;
-    const double t3 = std::sin(q0[0]);
-    const double t4 = std::sin(q0[1]);
-    const double t5 = std::cos(q0[0]);
-    const double t6 = t0*t3 + t4*t5;
-    const double t7 = p.m2*p.g*t6 + qd0[0]*qd0[0]*p.m2*p.L1*t4;
-    const double t8 = t4*t3 - t0*t5;
-    const double t9 = p.m2*p.g*t8;
-    const double t10 = qd0[0] + qd0[1];
-    const double t11 = t9 - p.m2*(qd0[0]*qd0[0]*p.L1*t0 + p.L2*t10*t10);
-    const double t12 = u0[1]*p.L2*t8;
-    const double t13 = p.L2*t7;
+    const double t1 = t0*(p.m2*p.L1);
+    const double t2 = p.L2*t1;
+    const double t3 = p.m2*p.L2*p.L2;
+    const double t4 = std::sin(q0[0]);
+    const double t5 = std::sin(q0[1]);
+    const double t6 = std::cos(q0[0]);
+    const double t7 = t0*t4 + t5*t6;
+    const double t8 = p.m2*p.g;
+    const double t9 = p.m2*t5;
+    const double t10 = p.L1*t9;
+    const double t11 = t7*t8 + qd0[0]*qd0[0]*t10;
+    const double t12 = t5*t4 - t0*t6;
+    const double t13 = t12*t8;
+    const double t14 = p.L1*t0;
+    const double t15 = qd0[0] + qd0[1];
+    const double t16 = t13 - p.m2*(qd0[0]*qd0[0]*t14 + p.L2*t15*t15);
+    const double t17 = p.L2*t12;
+    const double t18 = u0[1]*t17;
+    const double t19 = t12*u0[1];
+    const double t20 = p.g*(p.L1*p.m1);
+    const double t21 = p.L2*t11;
+    const double t22 = p.L1*t5;
+    const double t23 = t7*u0[1];
     A[0] = 0.0;
     A[1] = 0.0;
     A[2] = 1.0;
@@ -354,33 +405,35 @@ void state_space(const double* q0, const double* qd0, const double* u0, const Pa
     B[1] = 0.0;
     B[2] = 0.0;
     B[3] = 0.0;
-    M[0] = 2.0*t1 + p.m1*p.L1*p.L1 + t2 + p.m2*p.L1*p.L1;
-    M[2] = t1 + t2;
-    M[3] = t2;
-    qdd0[0] = u0[0] + t12 + u0[1]*p.L1*t0*t8 - p.L1*(t0*t7 + t4*t11) - p.m1*p.L1*p.g*t3 - t13 - u0[1]*p.L1*t4*t6;
-    qdd0[1] = t12 - q0[1]*p.k - qd0[1]*p.c - t13;
+    M[0] = 2.0*t2 + p.m1*p.L1*p.L1 + t3 + p.m2*p.L1*p.L1;
+    M[2] = t2 + t3;
+    M[3] = t3;
+    qdd0[0] = u0[0] + t18 + t14*t19 - p.L1*(t0*t11 + t5*t16) - t4*t20 - t21 - t22*t23;
+    qdd0[1] = t18 - q0[1]*p.k - qd0[1]*p.c - t21;
     mass_ldlt_factor(M);
     mass_ldlt_solve(M, qdd0, 1);
-    const double t14 = p.m2*p.L2*p.g*t8;
-    const double t15 = u0[1]*p.L2*t6;
-    const double t16 = p.m2*p.L1*p.L2*qdd0[0]*t4;
-    const double t17 = p.m2*p.L1*p.L1*qdd0[0]*t0*t4;
-    const double t18 = t9 - qd0[0]*qd0[0]*p.m2*p.L1*t0;
-    const double t19 = p.L2*t18;
-    const double t20 = t4*t7;
-    const double t21 = p.L2*t8;
-    A[8] = u0[1]*p.L1*t4*t8 + t14 + u0[1]*p.L1*t0*t6 + p.L1*(p.m2*p.g*t0*t8 - p.m2*p.g*t4*t6) + t15 - p.m1*p.L1*p.g*t5;
-    A[9] = t16 + p.m2*p.L1*t4*(p.L1*qdd0[0]*t0 + p.L2*(qdd0[0] + qdd0[1])) + t17 + t19 + t15 - 2.0*t17 - p.L1*(t20 + t0*t11 - t20 - t0*t18);
-    A[10] = p.L1*(p.m2*t4*(2.0*p.L2*t10 + 2.0*qd0[0]*p.L1*t0) - 2.0*qd0[0]*p.m2*p.L1*t0*t4) - 2.0*qd0[0]*p.m2*p.L1*p.L2*t4;
-    A[11] = 2.0*p.m2*p.L1*p.L2*t4*t10;
-    A[12] = t14 + t15;
-    A[13] = t16 + t19 + t15 - p.k;
-    A[14] = -2.0*qd0[0]*p.m2*p.L1*p.L2*t4;
+    const double t24 = t8*t17;
+    const double t25 = p.L2*t23;
+    const double t26 = t9*(p.L1*p.L2);
+    const double t27 = qdd0[0]*t26;
+    const double t28 = p.L1*p.L1*qdd0[0]*t0*t9;
+    const double t29 = t13 - qd0[0]*qd0[0]*t1;
+    const double t30 = p.L2*t29;
+    const double t31 = t5*t11;
+    const double t32 = qd0[0]*t26;
+    const double t33 = qd0[0]*t14;
+    A[8] = t22*t19 + t24 + t14*t23 + p.L1*(t0*t13 - p.g*t7*t9) + t25 - t6*t20;
+    A[9] = t27 + (qdd0[0]*t14 + p.L2*(qdd0[0] + qdd0[1]))*t10 + t28 + t30 + t25 - 2.0*t28 - p.L1*(t31 + t0*t16 - t31 - t0*t29);
+    A[10] = p.L1*((2.0*p.L2*t15 + 2.0*t33)*t9 - 2.0*t9*t33) - 2.0*t32;
+    A[11] = 2.0*t15*t26;
+    A[12] = t24 + t25;
+    A[13] = t27 + t30 + t25 - p.k;
+    A[14] = -2.0*t32;
     A[15] = -p.c;
     B[4] = 1.0;
-    B[5] = t21 + p.L1*t0*t8 - p.L1*t4*t6;
+    B[5] = t17 + t12*t14 - t7*t22;
     B[6] = 0.0;
-    B[7] = t21;
+    B[7] = t17;
     mass_ldlt_solve(M, A + 8, 4);
     mass_ldlt_solve(M, B + 4, 2);
 }
@@ -396,8 +449,11 @@ void output_matrices(const double* q0, const double* qd0, const double* u0, cons
     const double t5 = p.L2*t4;
     const double t6 = t2*t1 + t0*t3;
     const double t7 = p.L2*t6;
-    const double t8 = t6*(p.L2*(qd0[0] + qd0[1]) + qd0[0]*p.L1*t2);
-    const double t9 = qd0[0]*p.L1*t0*t4;
+    const double t8 = p.L1*t2;
+    const double t9 = qd0[0]*t8;
+    const double t10 = t6*(p.L2*(qd0[0] + qd0[1]) + t9);
+    const double t11 = t0*p.L1;
+    const double t12 = qd0[0]*t4*t11;
     C[0] = t5 - p.L1*t3;
     C[1] = t5;
     C[2] = 0.0;
@@ -406,9 +462,9 @@ void output_matrices(const double* q0, const double* qd0, const double* u0, cons
     C[5] = t7;
     C[6] = 0.0;
     C[7] = 0.0;
-    C[8] = t8 + t9;
-    C[9] = t8 + t9 - t9 - qd0[0]*p.L1*t2*t6;
-    C[10] = (p.L2 + p.L1*t2)*t4 - p.L1*t0*t6;
+    C[8] = t10 + t12;
+    C[9] = t10 + t12 - t12 - t6*t9;
+    C[10] = (p.L2 + t8)*t4 - t6*t11;
     C[11] = t5;
     D[0] = 0.0;
     D[1] = 0.0;

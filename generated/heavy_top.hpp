@@ -26,14 +26,14 @@
 // Operations per call (the LDL^T solves and the functions called, such as
 // rhs in outputs, included):
 //   mass_matrix       4 adds, 17 muls, 0 divs, 4 calls
-//   forcing           18 adds, 54 muls, 0 divs, 4 calls
-//   jacobians         73 adds, 234 muls, 0 divs, 4 calls
+//   forcing           18 adds, 40 muls, 0 divs, 4 calls
+//   jacobians         73 adds, 141 muls, 0 divs, 4 calls
 //   outputs_from_qdd  0 adds, 1 muls, 0 divs, 1 calls
 //   outputs           0 adds, 1 muls, 0 divs, 1 calls
-//   rhs               25 adds, 78 muls, 3 divs, 4 calls
-//   rhs_jacobian      111 adds, 349 muls, 3 divs, 4 calls
-//   linear            99 adds, 319 muls, 3 divs, 4 calls
-//   state_space       111 adds, 349 muls, 3 divs, 4 calls
+//   rhs               25 adds, 64 muls, 3 divs, 4 calls
+//   rhs_jacobian      111 adds, 235 muls, 3 divs, 4 calls
+//   linear            99 adds, 205 muls, 3 divs, 4 calls
+//   state_space       111 adds, 235 muls, 3 divs, 4 calls
 //   output_matrices   0 adds, 1 muls, 0 divs, 1 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 

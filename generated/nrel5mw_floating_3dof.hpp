@@ -65,16 +65,16 @@
 //
 // Operations per call (the LDL^T solves and the functions called, such as
 // rhs in outputs, included):
-//   mass_matrix       66 adds, 170 muls, 0 divs, 0 calls
-//   forcing           108 adds, 293 muls, 0 divs, 0 calls
-//   jacobians         270 adds, 887 muls, 0 divs, 0 calls
+//   mass_matrix       66 adds, 160 muls, 0 divs, 0 calls
+//   forcing           108 adds, 240 muls, 0 divs, 0 calls
+//   jacobians         270 adds, 704 muls, 0 divs, 0 calls
 //   outputs_from_qdd  3 adds, 8 muls, 0 divs, 2 calls
 //   outputs           3 adds, 8 muls, 0 divs, 2 calls
-//   rhs               182 adds, 473 muls, 3 divs, 0 calls
-//   rhs_jacobian      518 adds, 1471 muls, 3 divs, 4 calls
-//   linear            499 adds, 1450 muls, 3 divs, 4 calls
-//   state_space       559 adds, 1540 muls, 3 divs, 4 calls
-//   output_matrices   3 adds, 10 muls, 0 divs, 2 calls
+//   rhs               182 adds, 405 muls, 3 divs, 0 calls
+//   rhs_jacobian      518 adds, 1166 muls, 3 divs, 4 calls
+//   linear            499 adds, 1143 muls, 3 divs, 4 calls
+//   state_space       559 adds, 1233 muls, 3 divs, 4 calls
+//   output_matrices   3 adds, 9 muls, 0 divs, 2 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once

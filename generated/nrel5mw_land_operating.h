@@ -70,18 +70,18 @@
 // Operations per call, worst case: the code is straight-line (loops of fixed
 // length only), so every call does exactly these (the LDL^T solves and the
 // functions called included: rhs in outputs, four rhs in rk4_step):
-//   mass_matrix       69 adds, 170 muls, 0 divs, 10 calls
-//   forcing           167 adds, 488 muls, 0 divs, 12 calls
-//   jacobians         618 adds, 1884 muls, 0 divs, 12 calls
-//   outputs_from_qdd  44 adds, 118 muls, 0 divs, 10 calls
-//   outputs           269 adds, 724 muls, 4 divs, 22 calls
-//   rhs               225 adds, 606 muls, 4 divs, 12 calls
-//   rhs_jacobian      918 adds, 2565 muls, 4 divs, 12 calls
-//   linear            861 adds, 2500 muls, 4 divs, 12 calls
-//   state_space       981 adds, 2680 muls, 4 divs, 12 calls
-//   output_matrices   1100 adds, 2909 muls, 4 divs, 12 calls
+//   mass_matrix       69 adds, 158 muls, 0 divs, 10 calls
+//   forcing           167 adds, 405 muls, 0 divs, 12 calls
+//   jacobians         618 adds, 1487 muls, 0 divs, 12 calls
+//   outputs_from_qdd  44 adds, 105 muls, 0 divs, 10 calls
+//   outputs           269 adds, 625 muls, 4 divs, 22 calls
+//   rhs               225 adds, 520 muls, 4 divs, 12 calls
+//   rhs_jacobian      918 adds, 2045 muls, 4 divs, 12 calls
+//   linear            861 adds, 1972 muls, 4 divs, 12 calls
+//   state_space       981 adds, 2152 muls, 4 divs, 12 calls
+//   output_matrices   1100 adds, 2364 muls, 4 divs, 12 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          958 adds, 2465 muls, 17 divs, 48 calls
+//   rk4_step          958 adds, 2121 muls, 17 divs, 48 calls
 
 #ifndef nrel5mw_land_operating_YAMSC_GENERATED_H
 #define nrel5mw_land_operating_YAMSC_GENERATED_H

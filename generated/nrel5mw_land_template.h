@@ -61,18 +61,18 @@
 // Operations per call, worst case: the code is straight-line (loops of fixed
 // length only), so every call does exactly these (the LDL^T solves and the
 // functions called included: rhs in outputs, four rhs in rk4_step):
-//   mass_matrix       119 adds, 311 muls, 0 divs, 12 calls
-//   forcing           221 adds, 532 muls, 0 divs, 14 calls
-//   jacobians         1256 adds, 3358 muls, 0 divs, 14 calls
+//   mass_matrix       119 adds, 253 muls, 0 divs, 12 calls
+//   forcing           221 adds, 448 muls, 0 divs, 14 calls
+//   jacobians         1256 adds, 2450 muls, 0 divs, 14 calls
 //   outputs_from_qdd  2 adds, 7 muls, 0 divs, 0 calls
 //   outputs           2 adds, 7 muls, 0 divs, 0 calls
-//   rhs               369 adds, 861 muls, 5 divs, 14 calls
-//   rhs_jacobian      1979 adds, 4856 muls, 5 divs, 14 calls
-//   linear            1793 adds, 4652 muls, 5 divs, 14 calls
-//   state_space       2113 adds, 5052 muls, 5 divs, 14 calls
+//   rhs               369 adds, 714 muls, 5 divs, 14 calls
+//   rhs_jacobian      1979 adds, 3668 muls, 5 divs, 14 calls
+//   linear            1793 adds, 3450 muls, 5 divs, 14 calls
+//   state_space       2113 adds, 3850 muls, 5 divs, 14 calls
 //   output_matrices   0 adds, 1 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          1548 adds, 3495 muls, 21 divs, 56 calls
+//   rk4_step          1548 adds, 2907 muls, 21 divs, 56 calls
 
 #ifndef nrel5mw_land_template_YAMSC_GENERATED_H
 #define nrel5mw_land_template_YAMSC_GENERATED_H

@@ -60,15 +60,15 @@
 //
 // Operations per call (the LDL^T solves and the functions called, such as
 // rhs in outputs, included):
-//   mass_matrix       119 adds, 311 muls, 0 divs, 12 calls
-//   forcing           221 adds, 532 muls, 0 divs, 14 calls
-//   jacobians         1256 adds, 3358 muls, 0 divs, 14 calls
+//   mass_matrix       119 adds, 253 muls, 0 divs, 12 calls
+//   forcing           221 adds, 448 muls, 0 divs, 14 calls
+//   jacobians         1256 adds, 2450 muls, 0 divs, 14 calls
 //   outputs_from_qdd  2 adds, 7 muls, 0 divs, 0 calls
 //   outputs           2 adds, 7 muls, 0 divs, 0 calls
-//   rhs               369 adds, 861 muls, 5 divs, 14 calls
-//   rhs_jacobian      1979 adds, 4856 muls, 5 divs, 14 calls
-//   linear            1793 adds, 4652 muls, 5 divs, 14 calls
-//   state_space       2113 adds, 5052 muls, 5 divs, 14 calls
+//   rhs               369 adds, 714 muls, 5 divs, 14 calls
+//   rhs_jacobian      1979 adds, 3668 muls, 5 divs, 14 calls
+//   linear            1793 adds, 3450 muls, 5 divs, 14 calls
+//   state_space       2113 adds, 3850 muls, 5 divs, 14 calls
 //   output_matrices   0 adds, 1 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 

@@ -27,7 +27,7 @@
 //   outputs_from_qdd  0 adds, 2 muls, 0 divs, 2 calls
 //   outputs           0 adds, 2 muls, 0 divs, 2 calls
 //   rhs               0 adds, 6 muls, 1 divs, 1 calls
-//   rhs_jacobian      0 adds, 11 muls, 1 divs, 2 calls
+//   rhs_jacobian      0 adds, 9 muls, 1 divs, 2 calls
 //   linear            0 adds, 5 muls, 0 divs, 1 calls
 //   state_space       0 adds, 7 muls, 1 divs, 1 calls
 //   output_matrices   0 adds, 2 muls, 0 divs, 2 calls
@@ -150,14 +150,15 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     double M[1];
     double qdd[1];
     const double t0 = std::sin(x[0]);
+    const double t1 = p.g*(p.m*p.L);
     J[0] = 0.0;
     J[1] = 1.0;
     M[0] = p.m*p.L*p.L;
-    qdd[0] = -p.m*p.L*p.g*t0;
+    qdd[0] = -t0*t1;
     mass_ldlt_factor(M);
     mass_ldlt_solve(M, qdd, 1);
-    const double t1 = std::cos(x[0]);
-    J[2] = -p.m*p.L*p.g*t1;
+    const double t2 = std::cos(x[0]);
+    J[2] = -t2*t1;
     J[3] = 0.0;
     mass_ldlt_solve(M, J + 2, 2);
 }

@@ -28,7 +28,7 @@
 //   outputs_from_qdd  0 adds, 2 muls, 0 divs, 2 calls
 //   outputs           0 adds, 2 muls, 0 divs, 2 calls
 //   rhs               0 adds, 6 muls, 1 divs, 1 calls
-//   rhs_jacobian      0 adds, 11 muls, 1 divs, 2 calls
+//   rhs_jacobian      0 adds, 9 muls, 1 divs, 2 calls
 //   linear            0 adds, 5 muls, 0 divs, 1 calls
 //   state_space       0 adds, 7 muls, 1 divs, 1 calls
 //   output_matrices   0 adds, 2 muls, 0 divs, 2 calls

@@ -19,12 +19,20 @@ struct BodyText {
 
 /// The body of `routine` for a function whose parameters are `signature` (a
 /// subset of the routine's arguments): unused parameters are cast to void.
-/// With more than `max_statements` statements (> 0) the work is cut into part
-/// functions, returned in `helpers` to be defined before the body's function.
+/// With more than `max_statements` statements (> 0; hot_part_factor times as
+/// many for the routines a simulation calls every step) the work is cut into
+/// part functions, returned in `helpers` to be defined before the body's
+/// function.
 /// Throws diag::InternalError if the body needs an argument not in `signature`.
 /// The operations of one call of each internal routine, by name: what a sweep
 /// over it costs per column.
 using CalleeCosts = std::map<std::string, OperationCount>;
+
+/// rhs and outputs_from_qdd are cut into parts this many times larger: a value
+/// that crosses parts goes through the work array in memory, and fewer parts
+/// made the 16-DOF turbine's rhs 5-7 % faster (docs/benchmarks.md), for about
+/// 20 % more time compiling it.
+inline constexpr int hot_part_factor = 5;
 
 BodyText body_text(const Routine& routine, const Module& module, const Syntax& syntax,
                    const std::vector<std::string>& signature, int max_statements = 0,

@@ -1,5 +1,7 @@
 #include "codegen/routine_builder.hpp"
 
+#include "codegen/shared_products.hpp"
+
 #include "diag/diagnostics.hpp"
 
 #include <algorithm>
@@ -180,6 +182,7 @@ int RoutineBuilder::import(NodeId root) {
 
 Routine RoutineBuilder::finish(const Options& options) && {
     std::vector<Expr>& exprs = routine_.exprs;
+    share_factor_pairs(exprs, step_of_expr_, routine_.steps);
     const std::size_t count = exprs.size();
 
     std::vector<int> uses(count, 0);
