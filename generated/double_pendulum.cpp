@@ -29,14 +29,14 @@
 // Operations per call (the LDL^T solves and the functions called, such as
 // rhs in outputs, included):
 //   mass_matrix       4 adds, 10 muls, 0 divs, 1 calls
-//   forcing           16 adds, 31 muls, 0 divs, 4 calls
-//   jacobians         26 adds, 59 muls, 0 divs, 4 calls
+//   forcing           15 adds, 31 muls, 0 divs, 4 calls
+//   jacobians         24 adds, 59 muls, 0 divs, 4 calls
 //   outputs_from_qdd  7 adds, 14 muls, 0 divs, 4 calls
 //   outputs           7 adds, 14 muls, 0 divs, 4 calls
-//   rhs               23 adds, 46 muls, 2 divs, 4 calls
-//   rhs_jacobian      56 adds, 104 muls, 2 divs, 4 calls
-//   linear            50 adds, 91 muls, 2 divs, 4 calls
-//   state_space       62 adds, 115 muls, 2 divs, 4 calls
+//   rhs               22 adds, 46 muls, 2 divs, 4 calls
+//   rhs_jacobian      53 adds, 104 muls, 2 divs, 4 calls
+//   linear            47 adds, 91 muls, 2 divs, 4 calls
+//   state_space       59 adds, 115 muls, 2 divs, 4 calls
 //   output_matrices   12 adds, 18 muls, 0 divs, 4 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
@@ -135,10 +135,9 @@ void forcing(double t, const double* q, const double* qd, const double* u, const
     const double t9 = p.L1*t0;
     const double t10 = qd[0] + qd[1];
     const double t11 = t8*u[1];
-    const double t12 = p.L2*t11;
-    const double t13 = p.L2*t7;
-    F[0] = u[0] + t12 + t9*t11 - p.L1*(t0*t7 + t2*(t8*t5 - p.m2*(qd[0]*qd[0]*t9 + p.L2*t10*t10))) - p.m1*p.L1*p.g*t1 - t13 - u[1]*t4*t6;
-    F[1] = t12 - q[1]*p.k - qd[1]*p.c - t13;
+    const double t12 = p.L2*t11 - p.L2*t7;
+    F[0] = u[0] + t9*t11 + t12 - p.L1*(t0*t7 + t2*(t8*t5 - p.m2*(qd[0]*qd[0]*t9 + p.L2*t10*t10))) - p.m1*p.L1*p.g*t1 - u[1]*t4*t6;
+    F[1] = t12 - q[1]*p.k - qd[1]*p.c;
 }
 
 // dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)
@@ -152,30 +151,30 @@ void jacobians(double t, const double* q, const double* qd, const double* u, con
     const double t5 = p.L1*t1;
     const double t6 = p.g*p.m2;
     const double t7 = p.L2*t4;
-    const double t8 = t6*t7;
-    const double t9 = t3*t2 + t1*t0;
-    const double t10 = p.L1*t3;
-    const double t11 = u[1]*t9;
-    const double t12 = t4*t6;
-    const double t13 = t1*p.m2;
-    const double t14 = p.L2*t11;
-    const double t15 = t12 - qd[0]*qd[0]*p.m2*t10;
-    const double t16 = p.L2*t15;
-    const double t17 = t1*(t9*t6 + qd[0]*qd[0]*p.m2*t5);
-    const double t18 = qd[0] + qd[1];
+    const double t8 = t3*t2 + t1*t0;
+    const double t9 = p.L1*t3;
+    const double t10 = u[1]*t8;
+    const double t11 = t4*t6;
+    const double t12 = t1*p.m2;
+    const double t13 = p.L2*t10;
+    const double t14 = t6*t7 + t13;
+    const double t15 = t11 - qd[0]*qd[0]*p.m2*t9;
+    const double t16 = t1*(t8*t6 + qd[0]*qd[0]*p.m2*t5);
+    const double t17 = qd[0] + qd[1];
+    const double t18 = t13 + p.L2*t15;
     const double t19 = p.m2*p.L2;
     const double t20 = qd[0]*t5;
     const double t21 = t19*t20;
-    dF_dq[0] = u[1]*t4*t5 + t8 + t10*t11 + p.L1*(t3*t12 - p.g*t9*t13) + t14 - p.m1*p.L1*p.g*t0;
-    dF_dq[1] = t16 + t14 - p.L1*(t17 + t3*(t12 - p.m2*(qd[0]*qd[0]*t10 + p.L2*t18*t18)) - t17 - t3*t15);
-    dF_dq[2] = t8 + t14;
-    dF_dq[3] = t16 + t14 - p.k;
-    dF_dqd[0] = p.L1*((2.0*p.L2*t18 + 2.0*qd[0]*t10)*t13 - 2.0*p.m2*t3*t20) - 2.0*t21;
-    dF_dqd[1] = 2.0*t18*t5*t19;
+    dF_dq[0] = u[1]*t4*t5 + t9*t10 + p.L1*(t3*t11 - p.g*t8*t12) + t14 - p.m1*p.L1*p.g*t0;
+    dF_dq[1] = t18 - p.L1*(t16 + t3*(t11 - p.m2*(qd[0]*qd[0]*t9 + p.L2*t17*t17)) - t16 - t3*t15);
+    dF_dq[2] = t14;
+    dF_dq[3] = t18 - p.k;
+    dF_dqd[0] = p.L1*((2.0*p.L2*t17 + 2.0*qd[0]*t9)*t12 - 2.0*p.m2*t3*t20) - 2.0*t21;
+    dF_dqd[1] = 2.0*t17*t5*t19;
     dF_dqd[2] = -2.0*t21;
     dF_dqd[3] = -p.c;
     dF_du[0] = 1.0;
-    dF_du[1] = t7 + t4*t10 - t9*t5;
+    dF_du[1] = t7 + t4*t9 - t8*t5;
     dF_du[2] = 0.0;
     dF_du[3] = t7;
 }
@@ -223,15 +222,14 @@ void rhs(double t, const double* x, const double* u, const Params& p, double* xd
     const double t11 = t5*t4 - t0*t6;
     const double t12 = x[2] + x[3];
     const double t13 = t11*u[1];
-    const double t14 = p.L2*t13;
-    const double t15 = p.L2*t10;
+    const double t14 = p.L2*t13 - p.L2*t10;
     xdot[0] = x[2];
     xdot[1] = x[3];
     M[0] = 2.0*t2 + p.m1*p.L1*p.L1 + t3 + p.m2*p.L1*p.L1;
     M[2] = t2 + t3;
     M[3] = t3;
-    xdot[2] = u[0] + t14 + t1*t13 - p.L1*(t0*t10 + t5*(t11*t8 - p.m2*(x[2]*x[2]*t1 + p.L2*t12*t12))) - p.m1*p.L1*p.g*t4 - t15 - u[1]*t7*t9;
-    xdot[3] = t14 - x[1]*p.k - x[3]*p.c - t15;
+    xdot[2] = u[0] + t1*t13 + t14 - p.L1*(t0*t10 + t5*(t11*t8 - p.m2*(x[2]*x[2]*t1 + p.L2*t12*t12))) - p.m1*p.L1*p.g*t4 - u[1]*t7*t9;
+    xdot[3] = t14 - x[1]*p.k - x[3]*p.c;
     mass_ldlt_factor(M);
     mass_ldlt_solve(M, xdot + 2, 1);
 }
@@ -259,11 +257,10 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     const double t15 = x[2] + x[3];
     const double t16 = t13 - p.m2*(x[2]*x[2]*t14 + p.L2*t15*t15);
     const double t17 = t12*u[1];
-    const double t18 = p.L2*t17;
-    const double t19 = p.g*(p.L1*p.m1);
-    const double t20 = p.L2*t11;
-    const double t21 = p.L1*t5;
-    const double t22 = t7*u[1];
+    const double t18 = p.g*(p.L1*p.m1);
+    const double t19 = p.L1*t5;
+    const double t20 = t7*u[1];
+    const double t21 = p.L2*t17 - p.L2*t11;
     J[0] = 0.0;
     J[1] = 0.0;
     J[2] = 1.0;
@@ -275,27 +272,27 @@ void rhs_jacobian(double t, const double* x, const double* u, const Params& p, d
     M[0] = 2.0*t2 + p.m1*p.L1*p.L1 + t3 + p.m2*p.L1*p.L1;
     M[2] = t2 + t3;
     M[3] = t3;
-    qdd[0] = u[0] + t18 + t14*t17 - p.L1*(t0*t11 + t5*t16) - t4*t19 - t20 - t21*t22;
-    qdd[1] = t18 - x[1]*p.k - x[3]*p.c - t20;
+    qdd[0] = u[0] + t14*t17 + t21 - p.L1*(t0*t11 + t5*t16) - t4*t18 - t19*t20;
+    qdd[1] = t21 - x[1]*p.k - x[3]*p.c;
     mass_ldlt_factor(M);
     mass_ldlt_solve(M, qdd, 1);
-    const double t23 = p.L2*t13;
-    const double t24 = p.L2*t22;
-    const double t25 = t9*(p.L1*p.L2);
-    const double t26 = qdd[0]*t25;
-    const double t27 = p.L1*p.L1*qdd[0]*t0*t9;
-    const double t28 = t13 - x[2]*x[2]*t1;
-    const double t29 = p.L2*t28;
-    const double t30 = t5*t11;
-    const double t31 = x[2]*t25;
-    const double t32 = x[2]*t14;
-    J[8] = t21*t17 + t23 + t14*t22 + p.L1*(t0*t13 - p.g*t7*t9) + t24 - t6*t19;
-    J[9] = t26 + (qdd[0]*t14 + p.L2*(qdd[0] + qdd[1]))*t10 + t27 + t29 + t24 - 2.0*t27 - p.L1*(t30 + t0*t16 - t30 - t0*t28);
-    J[10] = p.L1*((2.0*p.L2*t15 + 2.0*t32)*t9 - 2.0*t9*t32) - 2.0*t31;
-    J[11] = 2.0*t15*t25;
-    J[12] = t23 + t24;
-    J[13] = t26 + t29 + t24 - p.k;
-    J[14] = -2.0*t31;
+    const double t22 = p.L2*t20;
+    const double t23 = p.L2*t13 + t22;
+    const double t24 = t9*(p.L1*p.L2);
+    const double t25 = qdd[0]*t24;
+    const double t26 = p.L1*p.L1*qdd[0]*t0*t9;
+    const double t27 = t13 - x[2]*x[2]*t1;
+    const double t28 = t5*t11;
+    const double t29 = t22 + p.L2*t27;
+    const double t30 = x[2]*t24;
+    const double t31 = x[2]*t14;
+    J[8] = t19*t17 + t14*t20 + p.L1*(t0*t13 - p.g*t7*t9) + t23 - t6*t18;
+    J[9] = t25 + (qdd[0]*t14 + p.L2*(qdd[0] + qdd[1]))*t10 + t26 + t29 - 2.0*t26 - p.L1*(t28 + t0*t16 - t28 - t0*t27);
+    J[10] = p.L1*((2.0*p.L2*t15 + 2.0*t31)*t9 - 2.0*t9*t31) - 2.0*t30;
+    J[11] = 2.0*t15*t24;
+    J[12] = t23;
+    J[13] = t25 + t29 - p.k;
+    J[14] = -2.0*t30;
     J[15] = -p.c;
     mass_ldlt_solve(M, J + 8, 4);
 }
@@ -324,12 +321,11 @@ void linear(const double* q0, const double* qd0, const double* u0, const Params&
     const double t17 = qd0[0] + qd0[1];
     const double t18 = t15 - p.m2*(qd0[0]*qd0[0]*t16 + p.L2*t17*t17);
     const double t19 = p.L2*t14;
-    const double t20 = u0[1]*t19;
-    const double t21 = t14*u0[1];
-    const double t22 = p.g*(p.L1*p.m1);
-    const double t23 = p.L2*t13;
-    const double t24 = p.L1*t7;
-    const double t25 = t9*u0[1];
+    const double t20 = t14*u0[1];
+    const double t21 = p.g*(p.L1*p.m1);
+    const double t22 = p.L1*t7;
+    const double t23 = t9*u0[1];
+    const double t24 = u0[1]*t19 - p.L2*t13;
     M0[0] = t4;
     M0[2] = t5;
     M0[3] = t3;
@@ -337,30 +333,30 @@ void linear(const double* q0, const double* qd0, const double* u0, const Params&
     M[0] = t4;
     M[2] = t5;
     M[3] = t3;
-    qdd0[0] = u0[0] + t20 + t16*t21 - p.L1*(t0*t13 + t7*t18) - t6*t22 - t23 - t24*t25;
-    qdd0[1] = t20 - q0[1]*p.k - qd0[1]*p.c - t23;
+    qdd0[0] = u0[0] + t16*t20 + t24 - p.L1*(t0*t13 + t7*t18) - t6*t21 - t22*t23;
+    qdd0[1] = t24 - q0[1]*p.k - qd0[1]*p.c;
     mass_ldlt_factor(M);
     mass_ldlt_solve(M, qdd0, 1);
-    const double t26 = t11*(p.L1*p.L2);
-    const double t27 = qd0[0]*t26;
-    const double t28 = qd0[0]*t16;
-    const double t29 = t10*t19;
-    const double t30 = p.L2*t25;
-    const double t31 = qdd0[0]*t26;
-    const double t32 = p.L1*p.L1*qdd0[0]*t0*t11;
-    const double t33 = t15 - qd0[0]*qd0[0]*t1;
-    const double t34 = p.L2*t33;
-    const double t35 = t7*t13;
-    C0[0] = 2.0*t27 - p.L1*((2.0*p.L2*t17 + 2.0*t28)*t11 - 2.0*t11*t28);
-    C0[1] = -2.0*t17*t26;
-    C0[2] = 2.0*t27;
+    const double t25 = t11*(p.L1*p.L2);
+    const double t26 = qd0[0]*t25;
+    const double t27 = qd0[0]*t16;
+    const double t28 = p.L2*t23;
+    const double t29 = t10*t19 + t28;
+    const double t30 = qdd0[0]*t25;
+    const double t31 = p.L1*p.L1*qdd0[0]*t0*t11;
+    const double t32 = t15 - qd0[0]*qd0[0]*t1;
+    const double t33 = t7*t13;
+    const double t34 = t28 + p.L2*t32;
+    C0[0] = 2.0*t26 - p.L1*((2.0*p.L2*t17 + 2.0*t27)*t11 - 2.0*t11*t27);
+    C0[1] = -2.0*t17*t25;
+    C0[2] = 2.0*t26;
     C0[3] = p.c;
-    K0[0] = t8*t22 - t24*t21 - t29 - t16*t25 - p.L1*(t0*t15 - p.g*t9*t11) - t30;
-    K0[1] = 2.0*t32 + p.L1*(t35 + t0*t18 - t35 - t0*t33) - t31 - (qdd0[0]*t16 + p.L2*(qdd0[0] + qdd0[1]))*t12 - t32 - t34 - t30;
-    K0[2] = -t29 - t30;
-    K0[3] = p.k - t31 - t34 - t30;
+    K0[0] = t8*t21 - t22*t20 - t16*t23 - p.L1*(t0*t15 - p.g*t9*t11) - t29;
+    K0[1] = 2.0*t31 + p.L1*(t33 + t0*t18 - t33 - t0*t32) - t30 - (qdd0[0]*t16 + p.L2*(qdd0[0] + qdd0[1]))*t12 - t31 - t34;
+    K0[2] = -t29;
+    K0[3] = p.k - t30 - t34;
     Q0[0] = 1.0;
-    Q0[1] = t19 + t14*t16 - t9*t24;
+    Q0[1] = t19 + t14*t16 - t9*t22;
     Q0[2] = 0.0;
     Q0[3] = t19;
 }
@@ -387,12 +383,11 @@ void state_space(const double* q0, const double* qd0, const double* u0, const Pa
     const double t15 = qd0[0] + qd0[1];
     const double t16 = t13 - p.m2*(qd0[0]*qd0[0]*t14 + p.L2*t15*t15);
     const double t17 = p.L2*t12;
-    const double t18 = u0[1]*t17;
-    const double t19 = t12*u0[1];
-    const double t20 = p.g*(p.L1*p.m1);
-    const double t21 = p.L2*t11;
-    const double t22 = p.L1*t5;
-    const double t23 = t7*u0[1];
+    const double t18 = t12*u0[1];
+    const double t19 = p.g*(p.L1*p.m1);
+    const double t20 = p.L1*t5;
+    const double t21 = t7*u0[1];
+    const double t22 = u0[1]*t17 - p.L2*t11;
     A[0] = 0.0;
     A[1] = 0.0;
     A[2] = 1.0;
@@ -408,30 +403,30 @@ void state_space(const double* q0, const double* qd0, const double* u0, const Pa
     M[0] = 2.0*t2 + p.m1*p.L1*p.L1 + t3 + p.m2*p.L1*p.L1;
     M[2] = t2 + t3;
     M[3] = t3;
-    qdd0[0] = u0[0] + t18 + t14*t19 - p.L1*(t0*t11 + t5*t16) - t4*t20 - t21 - t22*t23;
-    qdd0[1] = t18 - q0[1]*p.k - qd0[1]*p.c - t21;
+    qdd0[0] = u0[0] + t14*t18 + t22 - p.L1*(t0*t11 + t5*t16) - t4*t19 - t20*t21;
+    qdd0[1] = t22 - q0[1]*p.k - qd0[1]*p.c;
     mass_ldlt_factor(M);
     mass_ldlt_solve(M, qdd0, 1);
-    const double t24 = t8*t17;
-    const double t25 = p.L2*t23;
-    const double t26 = t9*(p.L1*p.L2);
-    const double t27 = qdd0[0]*t26;
-    const double t28 = p.L1*p.L1*qdd0[0]*t0*t9;
-    const double t29 = t13 - qd0[0]*qd0[0]*t1;
-    const double t30 = p.L2*t29;
-    const double t31 = t5*t11;
-    const double t32 = qd0[0]*t26;
-    const double t33 = qd0[0]*t14;
-    A[8] = t22*t19 + t24 + t14*t23 + p.L1*(t0*t13 - p.g*t7*t9) + t25 - t6*t20;
-    A[9] = t27 + (qdd0[0]*t14 + p.L2*(qdd0[0] + qdd0[1]))*t10 + t28 + t30 + t25 - 2.0*t28 - p.L1*(t31 + t0*t16 - t31 - t0*t29);
-    A[10] = p.L1*((2.0*p.L2*t15 + 2.0*t33)*t9 - 2.0*t9*t33) - 2.0*t32;
-    A[11] = 2.0*t15*t26;
-    A[12] = t24 + t25;
-    A[13] = t27 + t30 + t25 - p.k;
-    A[14] = -2.0*t32;
+    const double t23 = p.L2*t21;
+    const double t24 = t8*t17 + t23;
+    const double t25 = t9*(p.L1*p.L2);
+    const double t26 = qdd0[0]*t25;
+    const double t27 = p.L1*p.L1*qdd0[0]*t0*t9;
+    const double t28 = t13 - qd0[0]*qd0[0]*t1;
+    const double t29 = t5*t11;
+    const double t30 = t23 + p.L2*t28;
+    const double t31 = qd0[0]*t25;
+    const double t32 = qd0[0]*t14;
+    A[8] = t20*t18 + t14*t21 + p.L1*(t0*t13 - p.g*t7*t9) + t24 - t6*t19;
+    A[9] = t26 + (qdd0[0]*t14 + p.L2*(qdd0[0] + qdd0[1]))*t10 + t27 + t30 - 2.0*t27 - p.L1*(t29 + t0*t16 - t29 - t0*t28);
+    A[10] = p.L1*((2.0*p.L2*t15 + 2.0*t32)*t9 - 2.0*t9*t32) - 2.0*t31;
+    A[11] = 2.0*t15*t25;
+    A[12] = t24;
+    A[13] = t26 + t30 - p.k;
+    A[14] = -2.0*t31;
     A[15] = -p.c;
     B[4] = 1.0;
-    B[5] = t17 + t12*t14 - t7*t22;
+    B[5] = t17 + t12*t14 - t7*t20;
     B[6] = 0.0;
     B[7] = t17;
     mass_ldlt_solve(M, A + 8, 4);

@@ -30,17 +30,17 @@
 // length only), so every call does exactly these (the LDL^T solves and the
 // functions called included: rhs in outputs, four rhs in rk4_step):
 //   mass_matrix       4 adds, 10 muls, 0 divs, 1 calls
-//   forcing           16 adds, 31 muls, 0 divs, 4 calls
-//   jacobians         26 adds, 59 muls, 0 divs, 4 calls
+//   forcing           15 adds, 31 muls, 0 divs, 4 calls
+//   jacobians         24 adds, 59 muls, 0 divs, 4 calls
 //   outputs_from_qdd  7 adds, 14 muls, 0 divs, 4 calls
 //   outputs           7 adds, 14 muls, 0 divs, 4 calls
-//   rhs               23 adds, 46 muls, 2 divs, 4 calls
-//   rhs_jacobian      56 adds, 104 muls, 2 divs, 4 calls
-//   linear            50 adds, 91 muls, 2 divs, 4 calls
-//   state_space       62 adds, 115 muls, 2 divs, 4 calls
+//   rhs               22 adds, 46 muls, 2 divs, 4 calls
+//   rhs_jacobian      53 adds, 104 muls, 2 divs, 4 calls
+//   linear            47 adds, 91 muls, 2 divs, 4 calls
+//   state_space       59 adds, 115 muls, 2 divs, 4 calls
 //   output_matrices   12 adds, 18 muls, 0 divs, 4 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          122 adds, 205 muls, 9 divs, 16 calls
+//   rk4_step          118 adds, 205 muls, 9 divs, 16 calls
 
 #ifndef double_pendulum_YAMSC_GENERATED_H
 #define double_pendulum_YAMSC_GENERATED_H

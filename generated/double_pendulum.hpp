@@ -29,14 +29,14 @@
 // Operations per call (the LDL^T solves and the functions called, such as
 // rhs in outputs, included):
 //   mass_matrix       4 adds, 10 muls, 0 divs, 1 calls
-//   forcing           16 adds, 31 muls, 0 divs, 4 calls
-//   jacobians         26 adds, 59 muls, 0 divs, 4 calls
+//   forcing           15 adds, 31 muls, 0 divs, 4 calls
+//   jacobians         24 adds, 59 muls, 0 divs, 4 calls
 //   outputs_from_qdd  7 adds, 14 muls, 0 divs, 4 calls
 //   outputs           7 adds, 14 muls, 0 divs, 4 calls
-//   rhs               23 adds, 46 muls, 2 divs, 4 calls
-//   rhs_jacobian      56 adds, 104 muls, 2 divs, 4 calls
-//   linear            50 adds, 91 muls, 2 divs, 4 calls
-//   state_space       62 adds, 115 muls, 2 divs, 4 calls
+//   rhs               22 adds, 46 muls, 2 divs, 4 calls
+//   rhs_jacobian      53 adds, 104 muls, 2 divs, 4 calls
+//   linear            47 adds, 91 muls, 2 divs, 4 calls
+//   state_space       59 adds, 115 muls, 2 divs, 4 calls
 //   output_matrices   12 adds, 18 muls, 0 divs, 4 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 

@@ -66,14 +66,14 @@
 // Operations per call (the LDL^T solves and the functions called, such as
 // rhs in outputs, included):
 //   mass_matrix       66 adds, 160 muls, 0 divs, 0 calls
-//   forcing           108 adds, 240 muls, 0 divs, 0 calls
-//   jacobians         270 adds, 704 muls, 0 divs, 0 calls
+//   forcing           105 adds, 237 muls, 0 divs, 0 calls
+//   jacobians         264 adds, 700 muls, 0 divs, 0 calls
 //   outputs_from_qdd  3 adds, 8 muls, 0 divs, 2 calls
 //   outputs           3 adds, 8 muls, 0 divs, 2 calls
-//   rhs               182 adds, 405 muls, 3 divs, 0 calls
-//   rhs_jacobian      518 adds, 1166 muls, 3 divs, 4 calls
-//   linear            499 adds, 1143 muls, 3 divs, 4 calls
-//   state_space       559 adds, 1233 muls, 3 divs, 4 calls
+//   rhs               179 adds, 402 muls, 3 divs, 0 calls
+//   rhs_jacobian      507 adds, 1157 muls, 3 divs, 4 calls
+//   linear            488 adds, 1134 muls, 3 divs, 4 calls
+//   state_space       548 adds, 1224 muls, 3 divs, 4 calls
 //   output_matrices   3 adds, 9 muls, 0 divs, 2 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 

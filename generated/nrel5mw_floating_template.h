@@ -65,18 +65,18 @@
 // Operations per call, worst case: the code is straight-line (loops of fixed
 // length only), so every call does exactly these (the LDL^T solves and the
 // functions called included: rhs in outputs, four rhs in rk4_step):
-//   mass_matrix       88 adds, 152 muls, 0 divs, 8 calls
-//   forcing           108 adds, 230 muls, 0 divs, 8 calls
-//   jacobians         300 adds, 700 muls, 0 divs, 8 calls
+//   mass_matrix       78 adds, 146 muls, 0 divs, 8 calls
+//   forcing           99 adds, 221 muls, 0 divs, 8 calls
+//   jacobians         262 adds, 643 muls, 0 divs, 8 calls
 //   outputs_from_qdd  4 adds, 17 muls, 0 divs, 2 calls
 //   outputs           4 adds, 17 muls, 0 divs, 2 calls
-//   rhs               184 adds, 361 muls, 4 divs, 8 calls
-//   rhs_jacobian      602 adds, 1251 muls, 4 divs, 8 calls
-//   linear            554 adds, 1173 muls, 4 divs, 8 calls
-//   state_space       662 adds, 1353 muls, 4 divs, 8 calls
+//   rhs               166 adds, 346 muls, 4 divs, 8 calls
+//   rhs_jacobian      544 adds, 1170 muls, 4 divs, 8 calls
+//   linear            496 adds, 1092 muls, 4 divs, 8 calls
+//   state_space       604 adds, 1272 muls, 4 divs, 8 calls
 //   output_matrices   3 adds, 11 muls, 0 divs, 2 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          794 adds, 1485 muls, 17 divs, 32 calls
+//   rk4_step          722 adds, 1425 muls, 17 divs, 32 calls
 
 #ifndef nrel5mw_floating_template_YAMSC_GENERATED_H
 #define nrel5mw_floating_template_YAMSC_GENERATED_H

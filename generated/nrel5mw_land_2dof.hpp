@@ -33,15 +33,15 @@
 //
 // Operations per call (the LDL^T solves and the functions called, such as
 // rhs in outputs, included):
-//   mass_matrix       18 adds, 39 muls, 0 divs, 6 calls
-//   forcing           32 adds, 86 muls, 0 divs, 6 calls
-//   jacobians         65 adds, 181 muls, 0 divs, 6 calls
+//   mass_matrix       16 adds, 37 muls, 0 divs, 6 calls
+//   forcing           30 adds, 84 muls, 0 divs, 6 calls
+//   jacobians         59 adds, 175 muls, 0 divs, 6 calls
 //   outputs_from_qdd  0 adds, 1 muls, 0 divs, 0 calls
 //   outputs           0 adds, 1 muls, 0 divs, 0 calls
-//   rhs               44 adds, 114 muls, 2 divs, 6 calls
-//   rhs_jacobian      99 adds, 271 muls, 2 divs, 6 calls
-//   linear            99 adds, 264 muls, 2 divs, 6 calls
-//   state_space       99 adds, 278 muls, 2 divs, 6 calls
+//   rhs               40 adds, 110 muls, 2 divs, 6 calls
+//   rhs_jacobian      91 adds, 263 muls, 2 divs, 6 calls
+//   linear            91 adds, 256 muls, 2 divs, 6 calls
+//   state_space       91 adds, 270 muls, 2 divs, 6 calls
 //   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 

@@ -92,13 +92,13 @@
 // functions called included: rhs in outputs, four rhs in rk4_step):
 //   mass_matrix       146 adds, 419 muls, 0 divs, 2 calls
 //   forcing           167 adds, 382 muls, 0 divs, 2 calls
-//   jacobians         365 adds, 946 muls, 0 divs, 2 calls
+//   jacobians         361 adds, 946 muls, 0 divs, 2 calls
 //   outputs_from_qdd  0 adds, 2 muls, 0 divs, 0 calls
 //   outputs           0 adds, 2 muls, 0 divs, 0 calls
 //   rhs               313 adds, 760 muls, 3 divs, 2 calls
-//   rhs_jacobian      813 adds, 1860 muls, 3 divs, 8 calls
-//   linear            787 adds, 1840 muls, 3 divs, 8 calls
-//   state_space       847 adds, 1930 muls, 3 divs, 8 calls
+//   rhs_jacobian      805 adds, 1860 muls, 3 divs, 8 calls
+//   linear            779 adds, 1840 muls, 3 divs, 8 calls
+//   state_space       839 adds, 1930 muls, 3 divs, 8 calls
 //   output_matrices   0 adds, 0 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step          1296 adds, 3071 muls, 13 divs, 8 calls

@@ -69,16 +69,16 @@
 //
 // Operations per call (the LDL^T solves and the functions called, such as
 // rhs in outputs, included):
-//   mass_matrix       69 adds, 158 muls, 0 divs, 10 calls
-//   forcing           167 adds, 405 muls, 0 divs, 12 calls
-//   jacobians         618 adds, 1487 muls, 0 divs, 12 calls
-//   outputs_from_qdd  44 adds, 105 muls, 0 divs, 10 calls
-//   outputs           269 adds, 625 muls, 4 divs, 22 calls
-//   rhs               225 adds, 520 muls, 4 divs, 12 calls
-//   rhs_jacobian      918 adds, 2045 muls, 4 divs, 12 calls
-//   linear            861 adds, 1972 muls, 4 divs, 12 calls
-//   state_space       981 adds, 2152 muls, 4 divs, 12 calls
-//   output_matrices   1100 adds, 2364 muls, 4 divs, 12 calls
+//   mass_matrix       66 adds, 155 muls, 0 divs, 10 calls
+//   forcing           159 adds, 399 muls, 0 divs, 12 calls
+//   jacobians         577 adds, 1443 muls, 0 divs, 12 calls
+//   outputs_from_qdd  43 adds, 104 muls, 0 divs, 10 calls
+//   outputs           253 adds, 615 muls, 4 divs, 22 calls
+//   rhs               210 adds, 511 muls, 4 divs, 12 calls
+//   rhs_jacobian      864 adds, 1994 muls, 4 divs, 12 calls
+//   linear            807 adds, 1921 muls, 4 divs, 12 calls
+//   state_space       927 adds, 2101 muls, 4 divs, 12 calls
+//   output_matrices   1039 adds, 2306 muls, 4 divs, 12 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once

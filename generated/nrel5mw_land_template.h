@@ -61,18 +61,18 @@
 // Operations per call, worst case: the code is straight-line (loops of fixed
 // length only), so every call does exactly these (the LDL^T solves and the
 // functions called included: rhs in outputs, four rhs in rk4_step):
-//   mass_matrix       119 adds, 253 muls, 0 divs, 12 calls
-//   forcing           221 adds, 448 muls, 0 divs, 14 calls
-//   jacobians         1256 adds, 2450 muls, 0 divs, 14 calls
+//   mass_matrix       112 adds, 249 muls, 0 divs, 12 calls
+//   forcing           193 adds, 434 muls, 0 divs, 14 calls
+//   jacobians         1092 adds, 2342 muls, 0 divs, 14 calls
 //   outputs_from_qdd  2 adds, 7 muls, 0 divs, 0 calls
 //   outputs           2 adds, 7 muls, 0 divs, 0 calls
-//   rhs               369 adds, 714 muls, 5 divs, 14 calls
-//   rhs_jacobian      1979 adds, 3668 muls, 5 divs, 14 calls
-//   linear            1793 adds, 3450 muls, 5 divs, 14 calls
-//   state_space       2113 adds, 3850 muls, 5 divs, 14 calls
+//   rhs               333 adds, 696 muls, 5 divs, 14 calls
+//   rhs_jacobian      1772 adds, 3532 muls, 5 divs, 14 calls
+//   linear            1584 adds, 3314 muls, 5 divs, 14 calls
+//   state_space       1904 adds, 3714 muls, 5 divs, 14 calls
 //   output_matrices   0 adds, 1 muls, 0 divs, 0 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
-//   rk4_step          1548 adds, 2907 muls, 21 divs, 56 calls
+//   rk4_step          1404 adds, 2835 muls, 21 divs, 56 calls
 
 #ifndef nrel5mw_land_template_YAMSC_GENERATED_H
 #define nrel5mw_land_template_YAMSC_GENERATED_H

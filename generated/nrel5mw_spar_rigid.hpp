@@ -41,15 +41,15 @@
 //
 // Operations per call (the LDL^T solves and the functions called, such as
 // rhs in outputs, included):
-//   mass_matrix       24 adds, 35 muls, 0 divs, 6 calls
-//   forcing           43 adds, 64 muls, 0 divs, 6 calls
-//   jacobians         71 adds, 120 muls, 0 divs, 6 calls
+//   mass_matrix       22 adds, 35 muls, 0 divs, 6 calls
+//   forcing           33 adds, 64 muls, 0 divs, 6 calls
+//   jacobians         58 adds, 120 muls, 0 divs, 6 calls
 //   outputs_from_qdd  1 adds, 3 muls, 0 divs, 1 calls
 //   outputs           1 adds, 3 muls, 0 divs, 1 calls
-//   rhs               69 adds, 100 muls, 3 divs, 6 calls
-//   rhs_jacobian      161 adds, 253 muls, 3 divs, 6 calls
-//   linear            149 adds, 223 muls, 3 divs, 6 calls
-//   state_space       165 adds, 263 muls, 3 divs, 6 calls
+//   rhs               57 adds, 100 muls, 3 divs, 6 calls
+//   rhs_jacobian      137 adds, 253 muls, 3 divs, 6 calls
+//   linear            125 adds, 223 muls, 3 divs, 6 calls
+//   state_space       141 adds, 263 muls, 3 divs, 6 calls
 //   output_matrices   0 adds, 1 muls, 0 divs, 1 calls
 //   operating_point   0 adds, 0 muls, 0 divs, 0 calls
 

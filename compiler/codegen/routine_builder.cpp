@@ -182,7 +182,7 @@ int RoutineBuilder::import(NodeId root) {
 
 Routine RoutineBuilder::finish(const Options& options) && {
     std::vector<Expr>& exprs = routine_.exprs;
-    share_factor_pairs(exprs, step_of_expr_, routine_.steps);
+    share_pairs(exprs, step_of_expr_, routine_.steps);
     const std::size_t count = exprs.size();
 
     std::vector<int> uses(count, 0);

@@ -1,45 +1,81 @@
 #include "codegen/shared_products.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <optional>
 #include <utility>
 
 namespace yamsc::codegen {
 namespace {
 
-using Pair = std::pair<int, int>; // two factor expressions, first < second
+/// Two operands a < b of a product (both of exponent 1: ratio 1) or of a sum
+/// (weights w_a and w_b = ratio w_a): the shared node is a*b or a + ratio b.
+struct Pair {
+    int a, b;
+    double ratio;
+    bool operator<(const Pair& o) const {
+        return a != o.a ? a < o.a : b != o.b ? b < o.b : ratio < o.ratio;
+    }
+};
 
-/// The factors of exponent 1 of a product, sorted.
-std::vector<int> unit_factors(const Expr& e) {
-    std::vector<int> out;
+/// The operands of e that can be paired, by expression: a product's factors of
+/// exponent 1, all the terms of a sum.
+std::vector<ExprOperand> pairable(const Expr& e) {
+    std::vector<ExprOperand> out;
     for (const ExprOperand& op : e.operands)
-        if (op.weight == 1.0) out.push_back(op.expr);
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
+        if (e.kind == ExprKind::add || op.weight == 1.0) out.push_back(op);
+    std::sort(out.begin(), out.end(),
+              [](const ExprOperand& x, const ExprOperand& y) { return x.expr < y.expr; });
+    out.erase(
+        std::unique(out.begin(), out.end(),
+                    [](const ExprOperand& x, const ExprOperand& y) { return x.expr == y.expr; }),
+        out.end());
     return out;
 }
 
-bool has_factor(const Expr& e, int f) {
-    return std::any_of(e.operands.begin(), e.operands.end(),
-                       [f](const ExprOperand& op) { return op.expr == f && op.weight == 1.0; });
+/// The pair of x and y (x.expr < y.expr), or none when a sum's weights have no
+/// exact ratio (the shared sum would round its terms differently).
+std::optional<Pair> pair_of(const ExprOperand& x, const ExprOperand& y) {
+    const double ratio = y.weight / x.weight;
+    if (!std::isfinite(ratio) || ratio * x.weight != y.weight) return std::nullopt;
+    return Pair{x.expr, y.expr, ratio};
 }
 
-/// Whether e is exactly the product a*b.
-bool is_pair(const Expr& e, const Pair& p) {
-    return e.kind == ExprKind::mul && e.value == 1.0 && e.operands.size() == 2 &&
-           has_factor(e, p.first) && has_factor(e, p.second);
+/// The weight of operand `expr` in e (0: none pairable).
+double weight_in(const Expr& e, int expr) {
+    for (const ExprOperand& op : e.operands)
+        if (op.expr == expr && (e.kind == ExprKind::add || op.weight == 1.0)) return op.weight;
+    return 0.0;
 }
 
-/// Each shared pair with the products that contain it, most shared first (ties
-/// by the pair, so the result depends on structure only).
-std::vector<std::pair<Pair, std::vector<int>>> shared_pairs(const std::vector<Expr>& exprs) {
+/// Whether e contains the pair, and the weight of its first operand.
+std::optional<double> contains(const Expr& e, const Pair& p) {
+    const double wa = weight_in(e, p.a), wb = weight_in(e, p.b);
+    if (wa == 0.0 || wb == 0.0 || wa * p.ratio != wb) return std::nullopt;
+    return wa;
+}
+
+/// Whether e is exactly the shared node of the pair.
+bool is_pair(const Expr& e, ExprKind kind, const Pair& p) {
+    const double neutral = kind == ExprKind::mul ? 1.0 : 0.0;
+    return e.kind == kind && e.value == neutral && e.operands.size() == 2 &&
+           contains(e, p).value_or(0.0) == 1.0;
+}
+
+/// Each pair shared by expressions of `kind`, with the expressions that contain
+/// it, most shared first (ties by the pair, so the result depends on structure
+/// only).
+std::vector<std::pair<Pair, std::vector<int>>> shared_pairs(const std::vector<Expr>& exprs,
+                                                            ExprKind kind) {
     std::map<Pair, std::vector<int>> users;
     for (std::size_t i = 0; i < exprs.size(); ++i) {
-        if (exprs[i].kind != ExprKind::mul) continue;
-        const std::vector<int> f = unit_factors(exprs[i]);
-        for (std::size_t a = 0; a < f.size(); ++a)
-            for (std::size_t b = a + 1; b < f.size(); ++b)
-                users[{f[a], f[b]}].push_back(static_cast<int>(i));
+        if (exprs[i].kind != kind) continue;
+        const std::vector<ExprOperand> ops = pairable(exprs[i]);
+        for (std::size_t x = 0; x < ops.size(); ++x)
+            for (std::size_t y = x + 1; y < ops.size(); ++y)
+                if (const auto p = pair_of(ops[x], ops[y]))
+                    users[*p].push_back(static_cast<int>(i));
     }
     std::vector<std::pair<Pair, std::vector<int>>> out;
     for (auto& [pair, list] : users)
@@ -50,64 +86,72 @@ std::vector<std::pair<Pair, std::vector<int>>> shared_pairs(const std::vector<Ex
     return out;
 }
 
-/// Replaces the factors a and b of product e by the single factor `with`.
-void replace_pair(Expr& e, const Pair& p, int with) {
+/// Replaces the pair's operands of e by the shared node `with`, of weight wa.
+void replace_pair(Expr& e, const Pair& p, int with, double wa) {
     std::vector<ExprOperand> kept;
     bool dropped_a = false, dropped_b = false;
     for (const ExprOperand& op : e.operands) {
-        if (op.weight == 1.0 && op.expr == p.first && !dropped_a) {
+        const bool pairable_op = e.kind == ExprKind::add || op.weight == 1.0;
+        if (pairable_op && op.expr == p.a && !dropped_a) {
             dropped_a = true;
             continue;
         }
-        if (op.weight == 1.0 && op.expr == p.second && !dropped_b) {
+        if (pairable_op && op.expr == p.b && !dropped_b) {
             dropped_b = true;
             continue;
         }
         kept.push_back(op);
     }
-    kept.push_back({with, 1.0});
+    kept.push_back({with, wa});
     e.operands = std::move(kept);
 }
 
-} // namespace
-
-void share_factor_pairs(std::vector<Expr>& exprs, std::vector<int>& step_of_expr,
-                        std::vector<Step>& steps) {
-    const std::size_t original = exprs.size(); // new products go after these
-    // Rounds: the pairs counted at the start of a round are taken in order while
-    // they are still shared; a round's new products can share pairs in the next.
+/// Greedy rounds for one kind of node: the pairs counted at the start of a
+/// round are taken in order while still shared; a round's new nodes can share
+/// pairs in the next.
+void share_pairs_of(ExprKind kind, std::vector<Expr>& exprs, std::vector<int>& step_of_expr) {
     for (bool changed = true; changed;) {
         changed = false;
-        for (auto& [pair, candidates] : shared_pairs(exprs)) {
-            std::vector<int> users;
+        for (auto& [pair, candidates] : shared_pairs(exprs, kind)) {
+            std::vector<std::pair<int, double>> users; // expression, weight of a
             int existing = -1;
             for (int u : candidates) {
                 const Expr& e = exprs[static_cast<std::size_t>(u)];
-                if (!has_factor(e, pair.first) || !has_factor(e, pair.second)) continue;
-                if (is_pair(e, pair))
+                const std::optional<double> wa = contains(e, pair);
+                if (!wa) continue;
+                if (is_pair(e, kind, pair))
                     existing = u;
                 else
-                    users.push_back(u);
+                    users.emplace_back(u, *wa);
             }
-            if (users.size() + (existing >= 0 ? 1 : 0) < 2 || users.empty()) continue;
+            if (users.empty() || users.size() + (existing >= 0 ? 1 : 0) < 2) continue;
             int with = existing;
             if (with < 0) {
-                Expr product;
-                product.kind = ExprKind::mul;
-                product.value = 1.0;
-                product.operands = {{pair.first, 1.0}, {pair.second, 1.0}};
+                Expr shared;
+                shared.kind = kind;
+                shared.value = kind == ExprKind::mul ? 1.0 : 0.0;
+                shared.operands = {{pair.a, 1.0}, {pair.b, pair.ratio}};
                 with = static_cast<int>(exprs.size());
-                exprs.push_back(std::move(product));
-                step_of_expr.push_back(step_of_expr[static_cast<std::size_t>(users.front())]);
+                exprs.push_back(std::move(shared));
+                step_of_expr.push_back(step_of_expr[static_cast<std::size_t>(users.front().first)]);
             }
-            auto& step = step_of_expr[static_cast<std::size_t>(with)];
-            for (int u : users) {
-                replace_pair(exprs[static_cast<std::size_t>(u)], pair, with);
+            for (const auto& [u, wa] : users) {
+                replace_pair(exprs[static_cast<std::size_t>(u)], pair, with, wa);
+                auto& step = step_of_expr[static_cast<std::size_t>(with)];
                 step = std::min(step, step_of_expr[static_cast<std::size_t>(u)]);
             }
             changed = true;
         }
     }
+}
+
+} // namespace
+
+void share_pairs(std::vector<Expr>& exprs, std::vector<int>& step_of_expr,
+                 std::vector<Step>& steps) {
+    const std::size_t original = exprs.size(); // new products go after these
+    share_pairs_of(ExprKind::mul, exprs, step_of_expr);
+    share_pairs_of(ExprKind::add, exprs, step_of_expr);
     // Operands before users: the old order, each expression preceded by the
     // operands not placed yet (a new product, or an old one a user now reads).
     // Only such products are out of order, so the recursion is as deep as

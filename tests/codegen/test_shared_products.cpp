@@ -1,7 +1,8 @@
-// Shared pairs of factors (codegen/shared_products.hpp): products that share
-// two factors compute the pair once, the expressions stay in operand-first
-// order with every index remapped, the values are unchanged, and products with
-// nothing to share are left alone.
+// Shared pairs (codegen/shared_products.hpp): products that share two factors
+// compute the pair once, sums that share two terms in the same ratio compute
+// their sum once; the expressions stay in operand-first order with every index
+// remapped, the values are unchanged, and what has nothing to share is left
+// alone.
 #include "codegen/shared_products.hpp"
 
 #include <doctest/doctest.h>
@@ -78,7 +79,7 @@ TEST_CASE("products sharing two factors compute the pair once") {
     const std::vector<double> before = values(exprs);
     const int muls_before = multiplications(exprs);
 
-    share_factor_pairs(exprs, step_of_expr, steps);
+    share_pairs(exprs, step_of_expr, steps);
 
     const std::vector<double> after = values(exprs); // also checks the order
     REQUIRE(step_of_expr.size() == exprs.size());
@@ -106,7 +107,7 @@ TEST_CASE("a product that is the pair itself is reused, and moved before its use
     steps[1].assignments = {{"y", 2, 6}};
     const std::vector<double> before = values(exprs);
 
-    share_factor_pairs(exprs, step_of_expr, steps);
+    share_pairs(exprs, step_of_expr, steps);
 
     CHECK(exprs.size() == 7); // no new product
     const std::vector<double> after = values(exprs);
@@ -115,6 +116,39 @@ TEST_CASE("a product that is the pair itself is reused, and moved before its use
     CHECK(after[static_cast<std::size_t>(steps[1].assignments[0].expr)] == before[6]);
     // The pair is now needed by the first step.
     CHECK(step_of_expr[static_cast<std::size_t>(steps[1].assignments[0].expr)] == 0);
+}
+
+TEST_CASE("sums sharing two terms in the same ratio compute them once") {
+    // 4: x0 + 2 x1 + x2; 5: 3 x0 + 6 x1 + x3 (= 3 (x0 + 2 x1) + x3);
+    // 6: x0 + 3 x1 (another ratio); 7: 0.1 x0 + 0.3 x1 (ratio 3 is not exact:
+    // 0.3 / 0.1 * 0.1 != 0.3), all four summed by 8.
+    std::vector<Expr> exprs{load(0),
+                            load(1),
+                            load(2),
+                            load(3),
+                            sum({{0, 1}, {1, 2}, {2, 1}}),
+                            sum({{0, 3}, {1, 6}, {3, 1}}),
+                            sum({{0, 1}, {1, 3}}),
+                            sum({{0, 0.1}, {1, 0.3}}),
+                            sum({{4, 1}, {5, 1}, {6, 1}, {7, 1}})};
+    std::vector<int> step_of_expr(exprs.size(), 0);
+    std::vector<Step> steps(1);
+    steps[0].assignments.push_back({"y", 0, 8});
+    const std::vector<double> before = values(exprs);
+
+    share_pairs(exprs, step_of_expr, steps);
+
+    const std::vector<double> after = values(exprs);
+    CHECK(after[static_cast<std::size_t>(steps[0].assignments[0].expr)] == before[8]);
+    REQUIRE(exprs.size() == 10); // one new sum: x0 + 2 x1
+    int reading_it = 0;
+    for (const Expr& e : exprs)
+        for (const ExprOperand& op : e.operands)
+            if (exprs[static_cast<std::size_t>(op.expr)].kind == ExprKind::add &&
+                exprs[static_cast<std::size_t>(op.expr)].operands.size() == 2 &&
+                exprs[static_cast<std::size_t>(op.expr)].operands[1].weight == 2.0)
+                ++reading_it;
+    CHECK(reading_it == 2); // 4 with weight 1, 5 with weight 3
 }
 
 TEST_CASE("products with no pair in common, and powers, are left alone") {
@@ -129,7 +163,7 @@ TEST_CASE("products with no pair in common, and powers, are left alone") {
     const std::vector<Expr> copy = exprs;
     std::vector<int> step_of_expr(exprs.size(), 0);
     std::vector<Step> steps(1);
-    share_factor_pairs(exprs, step_of_expr, steps);
+    share_pairs(exprs, step_of_expr, steps);
     REQUIRE(exprs.size() == copy.size());
     for (std::size_t i = 0; i < exprs.size(); ++i)
         CHECK(exprs[i].operands.size() == copy[i].operands.size());
