@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <optional>
 #include <utility>
 
@@ -63,23 +62,35 @@ bool is_pair(const Expr& e, ExprKind kind, const Pair& p) {
            contains(e, p).value_or(0.0) == 1.0;
 }
 
-/// Each pair shared by expressions of `kind`, with the expressions that contain
-/// it, most shared first (ties by the pair, so the result depends on structure
-/// only).
+/// Each pair shared by the expressions `scan`, with the expressions that
+/// contain it, most shared first (ties by the pair, so the result depends on
+/// structure only). With `fresh`, only pairs with a fresh operand.
 std::vector<std::pair<Pair, std::vector<int>>> shared_pairs(const std::vector<Expr>& exprs,
-                                                            ExprKind kind) {
-    std::map<Pair, std::vector<int>> users;
-    for (std::size_t i = 0; i < exprs.size(); ++i) {
-        if (exprs[i].kind != kind) continue;
-        const std::vector<ExprOperand> ops = pairable(exprs[i]);
+                                                            const std::vector<int>& scan,
+                                                            const std::vector<bool>* fresh) {
+    std::vector<std::pair<Pair, int>> found; // sorted and grouped below: no map
+    for (int i : scan) {
+        const std::vector<ExprOperand> ops = pairable(exprs[static_cast<std::size_t>(i)]);
         for (std::size_t x = 0; x < ops.size(); ++x)
-            for (std::size_t y = x + 1; y < ops.size(); ++y)
-                if (const auto p = pair_of(ops[x], ops[y]))
-                    users[*p].push_back(static_cast<int>(i));
+            for (std::size_t y = x + 1; y < ops.size(); ++y) {
+                if (fresh && !(*fresh)[static_cast<std::size_t>(ops[x].expr)] &&
+                    !(*fresh)[static_cast<std::size_t>(ops[y].expr)])
+                    continue;
+                if (const auto p = pair_of(ops[x], ops[y])) found.emplace_back(*p, i);
+            }
     }
+    std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) {
+        return x.first < y.first || (!(y.first < x.first) && x.second < y.second);
+    });
     std::vector<std::pair<Pair, std::vector<int>>> out;
-    for (auto& [pair, list] : users)
-        if (list.size() > 1) out.emplace_back(pair, std::move(list));
+    for (std::size_t i = 0; i < found.size();) {
+        std::size_t j = i;
+        std::vector<int> users;
+        for (; j < found.size() && !(found[i].first < found[j].first); ++j)
+            if (users.empty() || users.back() != found[j].second) users.push_back(found[j].second);
+        if (users.size() > 1) out.emplace_back(found[i].first, std::move(users));
+        i = j;
+    }
     std::stable_sort(out.begin(), out.end(), [](const auto& x, const auto& y) {
         return x.second.size() > y.second.size();
     });
@@ -107,12 +118,18 @@ void replace_pair(Expr& e, const Pair& p, int with, double wa) {
 }
 
 /// Greedy rounds for one kind of node: the pairs counted at the start of a
-/// round are taken in order while still shared; a round's new nodes can share
-/// pairs in the next.
+/// round are taken in order while still shared. A pair not shared at the start
+/// of a round is never shared later unless one of its operands is a node the
+/// last round made or reused, so later rounds count only those pairs, in the
+/// expressions that read such a node.
 void share_pairs_of(ExprKind kind, std::vector<Expr>& exprs, std::vector<int>& step_of_expr) {
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (auto& [pair, candidates] : shared_pairs(exprs, kind)) {
+    std::vector<int> scan;
+    for (std::size_t i = 0; i < exprs.size(); ++i)
+        if (exprs[i].kind == kind) scan.push_back(static_cast<int>(i));
+    std::vector<bool> fresh;
+    for (bool first = true; !scan.empty(); first = false) {
+        std::vector<int> shared_nodes;
+        for (auto& [pair, candidates] : shared_pairs(exprs, scan, first ? nullptr : &fresh)) {
             std::vector<std::pair<int, double>> users; // expression, weight of a
             int existing = -1;
             for (int u : candidates) {
@@ -140,8 +157,18 @@ void share_pairs_of(ExprKind kind, std::vector<Expr>& exprs, std::vector<int>& s
                 auto& step = step_of_expr[static_cast<std::size_t>(with)];
                 step = std::min(step, step_of_expr[static_cast<std::size_t>(u)]);
             }
-            changed = true;
+            shared_nodes.push_back(with);
         }
+        fresh.assign(exprs.size(), false);
+        for (int n : shared_nodes) fresh[static_cast<std::size_t>(n)] = true;
+        scan.clear();
+        for (std::size_t i = 0; i < exprs.size() && !shared_nodes.empty(); ++i)
+            if (exprs[i].kind == kind &&
+                std::any_of(exprs[i].operands.begin(), exprs[i].operands.end(),
+                            [&](const ExprOperand& op) {
+                                return fresh[static_cast<std::size_t>(op.expr)];
+                            }))
+                scan.push_back(static_cast<int>(i));
     }
 }
 
