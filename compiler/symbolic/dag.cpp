@@ -208,12 +208,17 @@ double Evaluator::operator()(const ex& e) {
 }
 
 std::size_t dag_size(const std::vector<ex>& roots) {
+    // Every node visited stays alive: the operands of sums and products are made
+    // on the fly (coefficient times term), and a freed one's address could come
+    // back as another's and be taken for a node already seen.
     std::unordered_set<const basic*> seen;
+    std::vector<ex> visited;
     std::vector<ex> stack(roots.begin(), roots.end());
     while (!stack.empty()) {
         ex e = stack.back();
         stack.pop_back();
         if (!seen.insert(node_id(e)).second) continue;
+        visited.push_back(e);
         for (std::size_t i = 0; i < e.nops(); ++i) stack.push_back(e.op(i));
     }
     return seen.size();
