@@ -83,7 +83,8 @@ def main() -> int:
     yamsc = str(Path(a.yamsc).resolve())
     work = a.workdir or Path(tempfile.mkdtemp(prefix="yamsc-sim-speed-"))
     work.mkdir(parents=True, exist_ok=True)
-    controllers = a.controllers or Path(yamsc).parent.parent / "controllers"
+    # Absolute: the cases run in the work directory.
+    controllers = (a.controllers or Path(yamsc).parent.parent / "controllers").resolve()
     model = work / "land16.mbd"
     subprocess.run([yamsc, "from-openfast", str(DECK), "-o", str(model)], check=True,
                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
