@@ -125,9 +125,9 @@ TEST_CASE("M and F through composite bodies equal Kane's sums body by body") {
 }
 
 TEST_CASE("derive() sums M and F with the grouping that costs the fewest operations") {
-    for (const std::string& path : {test::source_path("models/nrel5mw_land_operating.mbd"),
-                                    test::source_path("tests/physics/models/grouping_tree.mbd"),
-                                    turbine_16dof()}) {
+    for (const std::string& path :
+         {test::source_path("models/nrel5mw_land_operating.mbd"),
+          test::source_path("tests/physics/models/grouping_tree.mbd"), turbine_16dof()}) {
         CAPTURE(path);
         const model::Model m = checked(path);
         const double chosen = cost(derive(m, std::nullopt));
