@@ -1,5 +1,6 @@
 #pragma once
-// Beams from OpenFAST ElastoDyn tower and blade input files (docs/beam-preprocessing.md).
+// Beams from OpenFAST ElastoDyn tower and blade input files (docs/beam-preprocessing.md),
+// read by formats/elastodyn.
 // The beam runs along body z from the root; fore-aft and flap modes are along x,
 // side-side and edge modes along y. Bad input gives located diagnostics and nullopt.
 #include "beam/beam.hpp"

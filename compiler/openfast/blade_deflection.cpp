@@ -58,7 +58,7 @@ void second_order_inertia(const beam::Beam& b, const sid::Sid& sid, double hub_r
 
 } // namespace
 
-std::optional<std::vector<BladeTipShapes>> blade_tip_shapes(const OpenFastDeck& deck,
+std::optional<std::vector<BladeTipShapes>> blade_tip_shapes(const openfast::OpenFastDeck& deck,
                                                             diag::Diagnostics& diags) {
     std::vector<BladeTipShapes> out;
     for (const std::string& path : deck.blade_files) {

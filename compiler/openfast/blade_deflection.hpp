@@ -35,7 +35,7 @@ struct BladeTipShapes {
 
 /// The tip shapes (and the second-order spin inertia) of every blade of the deck, from its blade
 /// files discretized as ElastoDyn does (BldNodes elements). nullopt after reporting errors.
-std::optional<std::vector<BladeTipShapes>> blade_tip_shapes(const OpenFastDeck& deck,
+std::optional<std::vector<BladeTipShapes>> blade_tip_shapes(const openfast::OpenFastDeck& deck,
                                                             diag::Diagnostics& diags);
 
 struct BladeInitial {

@@ -53,7 +53,7 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
     const std::vector<NamedFile> output{{"-o", o.output}};
     check_outputs({{"the deck", o.deck}}, output);
     diag::Diagnostics diags;
-    auto deck = read_openfast_deck(o.deck, diags);
+    auto deck = openfast::read_openfast_deck(o.deck, diags);
     if (!deck) {
         err << diags.render();
         return 1;
@@ -72,7 +72,7 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
     std::string switched; // the --dofs given, as the model's comment quotes them
     for (const auto& [name, enabled] : o.dofs) {
         std::string flag;
-        for (const std::string& f : elastodyn_dof_flags())
+        for (const std::string& f : openfast::elastodyn_dof_flags())
             if (f.size() == name.size() &&
                 std::equal(f.begin(), f.end(), name.begin(), [](char a, char b) {
                     return std::tolower(static_cast<unsigned char>(a)) ==
@@ -81,7 +81,7 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
                 flag = f;
         if (flag.empty())
             throw UsageError("--dofs: unknown ElastoDyn DOF '" + name + "'" +
-                             diag::did_you_mean(name, elastodyn_dof_flags()));
+                             diag::did_you_mean(name, openfast::elastodyn_dof_flags()));
         if (flag == "TeetDOF") {
             if (enabled)
                 diags.warning(diag::Kind::NotSupported, {},
@@ -95,9 +95,8 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
     in.name = model_name(o.output);
     in.tower_path = path_from(folder, deck->tower_file);
     for (const std::string& b : deck->blade_files) in.blade_paths.push_back(path_from(folder, b));
-    const bool blades_rigid = !in.dofs["FlapDOF1"] && !in.dofs["FlapDOF2"] && !in.dofs["EdgeDOF"];
-    const bool tower_rigid = !in.dofs["TwFADOF1"] && !in.dofs["TwFADOF2"] && !in.dofs["TwSSDOF1"] &&
-                             !in.dofs["TwSSDOF2"];
+    const bool blades_rigid = !openfast::flexible_blades(in.dofs);
+    const bool tower_rigid = !openfast::flexible_tower(in.dofs);
     if (blades_rigid)
         in.rotor = rigid_rotor(*deck, diags);
     else if (auto tips = blade_tip_shapes(*deck, diags))

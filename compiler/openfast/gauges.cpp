@@ -1,8 +1,8 @@
 #include "openfast/gauges.hpp"
 
 #include "beam/elastodyn.hpp"
-#include "beam/elastodyn_file.hpp"
 #include "driver/files.hpp"
+#include "openfast/gauge_nodes.hpp"
 #include "openfast/model.hpp"
 
 #include <algorithm>
@@ -13,37 +13,6 @@
 namespace yamsc::driver {
 
 namespace {
-
-std::string lower(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-
-/// The whole numbers before `key` on its line: "10, 19, 28   TwrGagNd  - ...".
-std::vector<int> values_before(const diag::SourceFile& f, const std::string& key) {
-    for (int line = 3; line <= f.line_count(); ++line) {
-        const std::vector<beam::Token> t = beam::tokenize(f.line(line));
-        std::vector<int> values;
-        for (const beam::Token& token : t) {
-            if (lower(token.text) == lower(key)) return values;
-            char* end = nullptr;
-            const long v = std::strtol(token.text.c_str(), &end, 10);
-            if (token.text.empty() || *end != '\0') break;
-            values.push_back(static_cast<int>(v));
-        }
-    }
-    return {};
-}
-
-std::vector<int> gauges(const diag::SourceFile& f, const std::string& count_key,
-                        const std::string& list_key) {
-    const std::vector<int> count = values_before(f, count_key);
-    if (count.empty() || count.front() <= 0) return {};
-    std::vector<int> nodes = values_before(f, list_key);
-    if (nodes.size() > static_cast<std::size_t>(count.front()))
-        nodes.resize(static_cast<std::size_t>(count.front()));
-    return nodes;
-}
 
 /// A station property, linear in the span fraction (as ElastoDyn interpolates).
 double twist_at(const beam::Beam& b, double s) {
@@ -71,14 +40,10 @@ std::string combination(double a, const std::string& x, double b, const std::str
 
 } // namespace
 
-GaugeNodes read_gauge_nodes(const diag::SourceFile& elastodyn) {
-    return {gauges(elastodyn, "NTwGages", "TwrGagNd"), gauges(elastodyn, "NBlGages", "BldGagNd")};
-}
-
-std::string gauge_outputs(const OpenFastDeck& deck, bool flexible_tower, bool flexible_blades,
-                          diag::Diagnostics& diags) {
+std::string gauge_outputs(const openfast::OpenFastDeck& deck, bool flexible_tower,
+                          bool flexible_blades, diag::Diagnostics& diags) {
     if (!deck.ed) return "";
-    const GaugeNodes nodes = read_gauge_nodes(*deck.ed);
+    const openfast::GaugeNodes nodes = openfast::read_gauge_nodes(*deck.ed);
     if (nodes.tower.empty() && nodes.blade.empty()) return "";
     std::string out =
         "\n# ---- ElastoDyn's strain gauges: the load the part beyond the gauge puts on it\n"

@@ -10,18 +10,11 @@
 
 namespace yamsc::driver {
 
-/// The gauge nodes of the ElastoDyn file (element numbers, 1-based), as many as
-/// NTwGages and NBlGages say; empty lists when they are 0.
-struct GaugeNodes {
-    std::vector<int> tower, blade;
-};
-GaugeNodes read_gauge_nodes(const diag::SourceFile& elastodyn);
-
 /// The `output` lines of the gauges' moment channels (empty when there are none).
 /// Tower gauges need a flexible tower, blade gauges flexible blades (else a
 /// warning says they are left out); blade 1's structural twist at its gauges comes
 /// from its blade file.
-std::string gauge_outputs(const OpenFastDeck& deck, bool flexible_tower, bool flexible_blades,
-                          diag::Diagnostics& diags);
+std::string gauge_outputs(const openfast::OpenFastDeck& deck, bool flexible_tower,
+                          bool flexible_blades, diag::Diagnostics& diags);
 
 } // namespace yamsc::driver

@@ -88,10 +88,8 @@ private:
             if (v(k) != 0) return true;
         return false;
     }
-    bool flexible_tower() const {
-        return on("TwFADOF1") || on("TwSSDOF1") || on("TwFADOF2") || on("TwSSDOF2");
-    }
-    bool flexible_blades() const { return on("FlapDOF1") || on("FlapDOF2") || on("EdgeDOF"); }
+    bool flexible_tower() const { return openfast::flexible_tower(in_.dofs); }
+    bool flexible_blades() const { return openfast::flexible_blades(in_.dofs); }
     double v(const std::string& key) const { return d_[key]; }
     /// The rotating body the generator torque acts on and the rotor hangs from.
     std::string shaft_body() const {
@@ -136,7 +134,7 @@ private:
                  << " s, DT = " << mbd_number(*d_.dt) << " s.\n";
         if (in_.operation) operation_header(*in_.operation);
         std::string enabled, disabled;
-        for (const std::string& flag : elastodyn_dof_flags()) {
+        for (const std::string& flag : openfast::elastodyn_dof_flags()) {
             if (flag == "TeetDOF") continue;
             (on(flag) ? enabled : disabled) +=
                 (on(flag) ? enabled : disabled).empty() ? flag : ", " + flag;
@@ -911,7 +909,7 @@ private:
     }
 
     const OpenFastModelInput& in_;
-    const OpenFastDeck& d_;
+    const openfast::OpenFastDeck& d_;
     diag::Diagnostics& diags_;
     std::ostringstream out_;
 };

@@ -13,7 +13,7 @@
 namespace yamsc::driver {
 
 struct OpenFastModelInput {
-    const OpenFastDeck* deck = nullptr;
+    const openfast::OpenFastDeck* deck = nullptr;
     std::map<std::string, bool> dofs; ///< ElastoDyn flag -> on, after --dofs
     std::string name;                 ///< the model's name
     std::string source;               ///< how the deck was given, for the header comment

@@ -2,8 +2,8 @@
 // the controller hookup of a yamsc model (see operation.hpp).
 #include "openfast/operation.hpp"
 
-#include "beam/elastodyn_file.hpp"
 #include "driver/files.hpp"
+#include "elastodyn/file.hpp"
 #include "openfast/model.hpp"
 
 #include <cmath>
@@ -16,7 +16,7 @@ using diag::Kind;
 
 namespace {
 
-std::string file_line(const beam::ElastoDynFile& f, const std::string& key) {
+std::string file_line(const elastodyn::ElastoDynFile& f, const std::string& key) {
     const diag::Location at = f.location(key);
     return fs::path(f.file()->path()).filename().string() + ":" + std::to_string(at.line);
 }
@@ -28,8 +28,8 @@ std::string resolve(const std::string& name, const diag::SourceFile& from) {
 }
 
 /// A module file the `.fst` names, read; nullptr (and an error) when it cannot be.
-std::optional<beam::ElastoDynFile> module_file(const OpenFastDeck& deck, const std::string& key,
-                                               diag::Diagnostics& diags) {
+std::optional<elastodyn::ElastoDynFile>
+module_file(const openfast::OpenFastDeck& deck, const std::string& key, diag::Diagnostics& diags) {
     auto it = deck.module_files.find(key);
     if (it == deck.module_files.end()) {
         diags.error(Kind::MissingProperty, {deck.fst, 0, 0},
@@ -38,7 +38,7 @@ std::optional<beam::ElastoDynFile> module_file(const OpenFastDeck& deck, const s
     }
     auto source = read_source(it->second, diags);
     if (!source) return std::nullopt;
-    return beam::ElastoDynFile(source);
+    return elastodyn::ElastoDynFile(source);
 }
 
 /// `PerfFileName` of a ROSCO controller input (`"file"  ! PerfFileName - ...`), resolved.
@@ -50,8 +50,8 @@ std::string rosco_performance_file(const std::string& discon_in, diag::Diagnosti
         const std::string text(source->line(line));
         const auto bang = text.find('!');
         if (bang == std::string::npos) continue;
-        const auto key = beam::tokenize(text.substr(bang + 1));
-        const auto value = beam::tokenize(text.substr(0, bang));
+        const auto key = elastodyn::tokenize(text.substr(bang + 1));
+        const auto value = elastodyn::tokenize(text.substr(0, bang));
         if (key.empty() || value.empty() || key[0].text != "PerfFileName") continue;
         const std::string path = resolve(value[0].text, *source);
         if (!fs::exists(path))
@@ -65,7 +65,7 @@ std::string rosco_performance_file(const std::string& discon_in, diag::Diagnosti
 
 class OperationReader {
 public:
-    OperationReader(const OpenFastDeck& deck, diag::Diagnostics& diags)
+    OperationReader(const openfast::OpenFastDeck& deck, diag::Diagnostics& diags)
         : deck_(deck), diags_(diags) {}
 
     std::optional<Operation> read(const std::string& cp_table) {
@@ -209,15 +209,15 @@ private:
         }
     }
 
-    const OpenFastDeck& deck_;
+    const openfast::OpenFastDeck& deck_;
     diag::Diagnostics& diags_;
     Operation op_;
 };
 
 } // namespace
 
-std::optional<Operation> read_operation(const OpenFastDeck& deck, const std::string& cp_table,
-                                        diag::Diagnostics& diags) {
+std::optional<Operation> read_operation(const openfast::OpenFastDeck& deck,
+                                        const std::string& cp_table, diag::Diagnostics& diags) {
     return OperationReader(deck, diags).read(cp_table);
 }
 

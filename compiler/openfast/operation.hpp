@@ -38,7 +38,7 @@ struct Operation {
 /// nullopt. `cp_table` is `from-openfast --cp-table` (empty: the controller input's
 /// PerfFileName, as ROSCO reads it). What cannot be converted (BEM, dynamic inflow,
 /// unsteady aerodynamics, other wind types, yaw control) is a warning at its line.
-std::optional<Operation> read_operation(const OpenFastDeck& deck, const std::string& cp_table,
-                                        diag::Diagnostics& diags);
+std::optional<Operation> read_operation(const openfast::OpenFastDeck& deck,
+                                        const std::string& cp_table, diag::Diagnostics& diags);
 
 } // namespace yamsc::driver

@@ -1,8 +1,8 @@
 // Lumped rigid rotor and tower of an ElastoDyn deck (see openfast_rotor.hpp).
 #include "openfast/rotor.hpp"
 
-#include "beam/elastodyn_file.hpp"
 #include "driver/files.hpp"
+#include "elastodyn/file.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +24,7 @@ std::optional<Elements> lumped_elements(const std::string& path, const char* cou
                                         diag::Diagnostics& diags) {
     auto source = read_source(path, diags);
     if (!source) return std::nullopt;
-    const beam::ElastoDynFile f(source);
+    const elastodyn::ElastoDynFile f(source);
     auto rows = f.get_int(count_key, diags);
     auto factor = f.get_double(factor_key, diags);
     if (!rows || !factor) return std::nullopt;
@@ -105,7 +105,8 @@ struct Accumulator {
 
 } // namespace
 
-std::optional<RigidProperties> rigid_rotor(const OpenFastDeck& deck, diag::Diagnostics& diags) {
+std::optional<RigidProperties> rigid_rotor(const openfast::OpenFastDeck& deck,
+                                           diag::Diagnostics& diags) {
     Accumulator rotor;
     rotor.add(deck["HubMass"], {deck["HubCM"], 0, 0});
     rotor.inertia[0] += deck["HubIner"]; // about the shaft; ElastoDyn's hub has no other inertia
@@ -134,7 +135,8 @@ std::optional<RigidProperties> rigid_rotor(const OpenFastDeck& deck, diag::Diagn
     return rotor.about_cm();
 }
 
-std::optional<RigidProperties> rigid_tower(const OpenFastDeck& deck, diag::Diagnostics& diags) {
+std::optional<RigidProperties> rigid_tower(const openfast::OpenFastDeck& deck,
+                                           diag::Diagnostics& diags) {
     const double length = deck["TowerHt"] - deck["TowerBsHt"];
     if (!(length > 0)) {
         diags.error(diag::Kind::InvalidValue, {deck.ed, 0, 0},

@@ -20,9 +20,11 @@ struct RigidProperties {
 /// The hub, the blades (with their precone, at equal azimuth spacing) and the tip masses,
 /// in the rotor frame: origin at the apex, x along the shaft (downwind), blade 1 along z.
 /// The generator is not included. nullopt after reporting errors in the blade files.
-std::optional<RigidProperties> rigid_rotor(const OpenFastDeck& deck, diag::Diagnostics& diags);
+std::optional<RigidProperties> rigid_rotor(const openfast::OpenFastDeck& deck,
+                                           diag::Diagnostics& diags);
 
 /// The tower as a rigid body in its base frame (z up), `length` = TowerHt - TowerBsHt.
-std::optional<RigidProperties> rigid_tower(const OpenFastDeck& deck, diag::Diagnostics& diags);
+std::optional<RigidProperties> rigid_tower(const openfast::OpenFastDeck& deck,
+                                           diag::Diagnostics& diags);
 
 } // namespace yamsc::driver

@@ -1,5 +1,7 @@
 #include "yamsc/wind.hpp"
 
+#include "wind/wind_file.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -14,39 +16,6 @@ bool parse_number(const std::string& text, double& value) {
     s.imbue(std::locale::classic());
     s >> value;
     return !s.fail() && s.eof() && std::isfinite(value);
-}
-
-WindSignal read_wind_csv(const std::string& path) {
-    std::ifstream in(path);
-    if (!in)
-        throw std::runtime_error("--wind: '" + path +
-                                 "' is neither a speed, a step:V0:V1:t=T nor a readable file");
-    WindSignal w;
-    std::string line;
-    int line_no = 0;
-    while (std::getline(in, line)) {
-        ++line_no;
-        // '#' comments, and '!' ones of OpenFAST's uniform wind files (InflowWind
-        // WindType 2: time, speed, then direction, shear and gust columns).
-        const auto first = line.find_first_not_of(" \t\r");
-        if (first == std::string::npos || line[first] == '#' || line[first] == '!') continue;
-        std::replace(line.begin(), line.end(), ',', ' ');
-        std::istringstream s(line);
-        s.imbue(std::locale::classic());
-        double t = 0, v = 0;
-        if (!(s >> t >> v)) {
-            if (w.time.empty() && line_no == 1) continue; // the header
-            throw std::runtime_error(path + ":" + std::to_string(line_no) +
-                                     ": expected time and wind speed");
-        }
-        if (!w.time.empty() && !(t > w.time.back()))
-            throw std::runtime_error(path + ":" + std::to_string(line_no) +
-                                     ": times must increase");
-        w.time.push_back(t);
-        w.speed.push_back(v);
-    }
-    if (w.time.empty()) throw std::runtime_error(path + ": no wind samples");
-    return w;
 }
 
 } // namespace
@@ -76,7 +45,12 @@ WindSignal parse_wind(const std::string& spec) {
         // samples 1e-9 s apart).
         return {{t, t + 1e-9}, {v0, v1}};
     }
-    return read_wind_csv(spec);
+    std::ifstream in(spec);
+    if (!in)
+        throw std::runtime_error("--wind: '" + spec +
+                                 "' is neither a speed, a step:V0:V1:t=T nor a readable file");
+    wind::Samples samples = wind::read_wind_file(in, spec);
+    return {std::move(samples.time), std::move(samples.speed)};
 }
 
 } // namespace yamsc::runtime

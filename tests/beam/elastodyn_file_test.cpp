@@ -1,5 +1,5 @@
 // The generic reader of ElastoDyn-style files: values, keys, tables, located errors.
-#include "beam/elastodyn_file.hpp"
+#include "elastodyn/file.hpp"
 
 #include <doctest/doctest.h>
 
@@ -25,15 +25,15 @@ False         Echo        - Echo input data to "<RootName>.ech" (flag)
 ---------------------- END -----------------------------------------------------
 )";
 
-beam::ElastoDynFile file() {
-    return beam::ElastoDynFile(std::make_shared<diag::SourceFile>("main.dat", kText));
+elastodyn::ElastoDynFile file() {
+    return elastodyn::ElastoDynFile(std::make_shared<diag::SourceFile>("main.dat", kText));
 }
 
 } // namespace
 
 TEST_CASE("ElastoDyn file: values by key") {
     diag::Diagnostics diags;
-    const beam::ElastoDynFile f = file();
+    const elastodyn::ElastoDynFile f = file();
     CHECK(f.get_bool("Echo", diags) == false);
     CHECK(f.get_bool("FlapDOF1", diags) == true);
     CHECK(f.get_double("TipRad", diags) == 63.0); // Fortran exponent
@@ -47,7 +47,7 @@ TEST_CASE("ElastoDyn file: values by key") {
 
 TEST_CASE("ElastoDyn file: bad and missing values are located") {
     diag::Diagnostics diags;
-    const beam::ElastoDynFile f = file();
+    const elastodyn::ElastoDynFile f = file();
     CHECK(!f.get_double("HubRad", diags));
     REQUIRE(diags.all().size() == 1);
     CHECK(diags.all()[0].kind == diag::Kind::InvalidValue);
@@ -69,7 +69,7 @@ TEST_CASE("ElastoDyn file: bad and missing values are located") {
 
 TEST_CASE("ElastoDyn file: tables") {
     diag::Diagnostics diags;
-    const beam::ElastoDynFile f = file();
+    const elastodyn::ElastoDynFile f = file();
     auto t = f.get_table("HtFract", 2, diags);
     REQUIRE(t);
     CHECK(t->columns == std::vector<std::string>{"HtFract", "TMassDen"});
@@ -94,9 +94,9 @@ TEST_CASE("ElastoDyn file: tables") {
 }
 
 TEST_CASE("numbers") {
-    CHECK(beam::parse_number("1.5E+03") == 1500.0);
-    CHECK(beam::parse_number("-2d-1") == -0.2);
-    CHECK(!beam::parse_number("1.5x"));
-    CHECK(!beam::parse_number(""));
-    CHECK(!beam::parse_number("nan"));
+    CHECK(elastodyn::parse_number("1.5E+03") == 1500.0);
+    CHECK(elastodyn::parse_number("-2d-1") == -0.2);
+    CHECK(!elastodyn::parse_number("1.5x"));
+    CHECK(!elastodyn::parse_number(""));
+    CHECK(!elastodyn::parse_number("nan"));
 }

@@ -37,6 +37,12 @@ case $target in
   fuzz_values)
     seeds=("$here"/seeds/values/*)
     dict= ;;
+  fuzz_wind)
+    seeds=("$here"/seeds/wind/*)
+    dict= ;;
+  fuzz_performance_table)
+    seeds=("$root"/models/data/Cp_Ct_Cq.*.txt)
+    dict= ;;
   *)
     echo "run_fuzz.sh: unknown target '$target'" >&2
     exit 2 ;;

@@ -20,9 +20,9 @@ struct PerformanceTable {
     std::vector<double> cp, ct, cq;
 };
 
-/// Reads ROSCO's text format: `#` header lines, the pitch vector, the TSR
-/// vector, the wind speed vector, then the Cp, Ct and Cq matrices (rows = TSR).
-/// Throws std::runtime_error naming `source` and the problem.
+/// Reads ROSCO's text format (the reader: formats/performance_table): `#` header
+/// lines, the pitch vector, the TSR vector, the wind speed vector, then the Cp, Ct
+/// and Cq matrices (rows = TSR). Throws std::runtime_error naming `source` and the problem.
 PerformanceTable read_performance_table(std::istream& in, const std::string& source);
 PerformanceTable read_performance_table(const std::string& path);
 

@@ -13,8 +13,9 @@ struct WindSignal {
 };
 
 /// "11.4" (steady), "step:8:14:t=10" (8 m/s, 14 m/s from t = 10 s) or the path
-/// of a CSV file whose first two columns are time [s] and speed [m/s] (a header
-/// line is skipped). Throws std::invalid_argument / std::runtime_error.
+/// of a wind file (formats/wind: a CSV whose first two columns are time [s] and
+/// speed [m/s], a header line skipped, or OpenFAST's uniform wind file).
+/// Throws std::invalid_argument / std::runtime_error.
 WindSignal parse_wind(const std::string& spec);
 
 } // namespace yamsc::runtime

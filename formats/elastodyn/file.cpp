@@ -1,10 +1,10 @@
-#include "beam/elastodyn_file.hpp"
+#include "elastodyn/file.hpp"
 
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 
-namespace yamsc::beam {
+namespace yamsc::elastodyn {
 
 namespace {
 
@@ -202,4 +202,4 @@ std::optional<EdTable> ElastoDynFile::get_table(std::string_view first_column, i
     return table;
 }
 
-} // namespace yamsc::beam
+} // namespace yamsc::elastodyn

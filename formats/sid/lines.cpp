@@ -1,6 +1,6 @@
 #include "sid/lines.hpp"
 
-#include "grammar/sid_grammar.hpp"
+#include "sid/grammar.hpp"
 #include "sid/numbers.hpp"
 
 #include <tao/pegtl.hpp>
@@ -15,7 +15,7 @@ namespace yamsc::sid {
 namespace {
 
 namespace p = tao::pegtl;
-namespace g = grammar::sid;
+namespace g = grammar;
 
 struct SplitState {
     ReadContext& cx;

@@ -1,11 +1,11 @@
 // Reading an OpenFAST deck: the `.fst` glue-code file (optional) and the ElastoDyn
-// main file, with every entry accounted for (see openfast_deck.hpp).
+// main file, with every entry accounted for (see deck.hpp).
 #include "openfast/deck.hpp"
 
-#include "openfast/gauges.hpp"
+#include "openfast/gauge_nodes.hpp"
 
-#include "beam/elastodyn_file.hpp"
-#include "driver/files.hpp"
+#include "diag/read_text.hpp"
+#include "elastodyn/file.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <set>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
 
 namespace fs = std::filesystem;
 using diag::Kind;
@@ -34,8 +34,8 @@ std::string canonical(const std::string& key) {
     return out;
 }
 
-using beam::Token;
-using beam::tokenize;
+using elastodyn::Token;
+using elastodyn::tokenize;
 
 bool is_key(const Token& t) {
     if (t.quoted || t.text.empty() || !std::isalpha(static_cast<unsigned char>(t.text[0])))
@@ -140,7 +140,7 @@ public:
     Reader(OpenFastDeck& deck, diag::Diagnostics& diags) : deck_(deck), diags_(diags) {}
 
     bool read(const std::string& path) {
-        auto first = read_source(path, diags_);
+        auto first = diag::read_text_file(path, diags_);
         if (!first) return false;
         if (looks_like_fst(*first)) {
             deck_.fst = first;
@@ -167,15 +167,15 @@ private:
             if (key == "edfile") {
                 ed_file = e.value;
             } else if (key == "gravity") {
-                deck_.fst_gravity = beam::parse_number(e.value);
+                deck_.fst_gravity = elastodyn::parse_number(e.value);
                 if (!deck_.fst_gravity)
                     diags_.error(Kind::InvalidValue, at, "Gravity must be a number");
             } else if (key == "tmax" || key == "dt") {
-                if (auto v = beam::parse_number(e.value))
+                if (auto v = elastodyn::parse_number(e.value))
                     (key == "tmax" ? deck_.tmax : deck_.dt) = v;
                 ignore(f, e.key, e.line);
             } else if (key == "airdens") {
-                deck_.fst_air_density = beam::parse_number(e.value);
+                deck_.fst_air_density = elastodyn::parse_number(e.value);
                 deck_.fst_air_density_at = file_line(f, e.line);
                 ignore(f, e.key, e.line);
             } else if (key == "inflowfile" || key == "aerofile" || key == "servofile") {
@@ -211,7 +211,7 @@ private:
                          "the .fst file has no EDFile (the ElastoDyn input file)");
             return false;
         }
-        deck_.ed = read_source(resolve(ed_file, f), diags_);
+        deck_.ed = diag::read_text_file(resolve(ed_file, f), diags_);
         return deck_.ed != nullptr;
     }
 
@@ -220,7 +220,7 @@ private:
         deck_.title = std::string(f.line(2));
         while (!deck_.title.empty() && std::isspace(static_cast<unsigned char>(deck_.title.back())))
             deck_.title.pop_back();
-        const beam::ElastoDynFile ed(deck_.ed);
+        const elastodyn::ElastoDynFile ed(deck_.ed);
         const int errors = diags_.error_count();
         std::set<std::string> seen;
         for (const DeckEntry& e : scan_deck_entries(f)) {
@@ -237,7 +237,7 @@ private:
             if (it->second == Use::ignored) ignore(f, e.key, e.line);
             if (it->second == Use::off_by_default) {
                 const std::string value = lower(e.value);
-                const auto number = beam::parse_number(e.value);
+                const auto number = elastodyn::parse_number(e.value);
                 if (value == "false" || value == "f" || (number && *number == 0))
                     ignore(f, e.key, e.line);
                 else
@@ -300,7 +300,7 @@ private:
                        "no Gravity in the deck: using 9.80665 m/s^2");
     }
 
-    void report_unsupported(const beam::ElastoDynFile& ed) {
+    void report_unsupported(const elastodyn::ElastoDynFile& ed) {
         auto warn = [&](const std::string& key, const std::string& message) {
             diags_.warning(Kind::NotSupported, ed.location(key_of(key)), message);
         };
@@ -316,7 +316,8 @@ private:
             }
             for (const char* key : {"UndSling", "Delta3", "TeetDefl"})
                 if (entries_.count(canonical(key)))
-                    if (auto v = beam::parse_number(entries_[canonical(key)].value); v && *v != 0)
+                    if (auto v = elastodyn::parse_number(entries_[canonical(key)].value);
+                        v && *v != 0)
                         warn(key, std::string(key) + " of a teetering rotor is not converted");
         } else {
             for (const DeckEntry& e : scan_deck_entries(*deck_.ed)) {
@@ -330,7 +331,7 @@ private:
                             "gen_torque with the losses included");
     }
 
-    /// Gauges that exist become output channels (openfast/gauges.hpp): not ignored.
+    /// Gauges that exist become output channels (compiler/openfast/gauges.hpp): not ignored.
     void keep_used_gauges(const diag::SourceFile& f) {
         const GaugeNodes used = read_gauge_nodes(f);
         std::vector<std::string> keys;
@@ -385,6 +386,28 @@ const std::vector<std::string>& elastodyn_dof_flags() {
     return flags;
 }
 
+namespace {
+
+bool any_on(const std::map<std::string, bool>& dofs, const std::vector<std::string>& flags) {
+    for (const std::string& f : flags) {
+        auto it = dofs.find(f);
+        if (it != dofs.end() && it->second) return true;
+    }
+    return false;
+}
+
+} // namespace
+
+bool flexible_tower(const std::map<std::string, bool>& dofs) {
+    static const std::vector<std::string> flags{"TwFADOF1", "TwSSDOF1", "TwFADOF2", "TwSSDOF2"};
+    return any_on(dofs, flags);
+}
+
+bool flexible_blades(const std::map<std::string, bool>& dofs) {
+    static const std::vector<std::string> flags{"FlapDOF1", "FlapDOF2", "EdgeDOF"};
+    return any_on(dofs, flags);
+}
+
 std::vector<DeckEntry> scan_deck_entries(const diag::SourceFile& file) {
     std::vector<DeckEntry> out;
     bool in_outlist = false;
@@ -428,4 +451,4 @@ std::optional<OpenFastDeck> read_openfast_deck(const std::string& path, diag::Di
     return deck;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

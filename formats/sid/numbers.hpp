@@ -7,7 +7,7 @@
 
 namespace yamsc::sid {
 
-/// The value of a real literal of grammar/sid_grammar.hpp (`1.5`, `-2.D+03`, `nan`). Overflow
+/// The value of a real literal of sid/grammar.hpp (`1.5`, `-2.D+03`, `nan`). Overflow
 /// gives an infinity, underflow a zero; std::nullopt if `text` is not such a literal.
 std::optional<double> parse_real(std::string_view text);
 

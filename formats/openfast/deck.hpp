@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
 
 /// One `value  key  - comment` line of an OpenFAST input file.
 struct DeckEntry {
@@ -22,6 +22,12 @@ struct DeckEntry {
 
 /// The ElastoDyn DOF switches, in ElastoDyn's order of DOFs.
 const std::vector<std::string>& elastodyn_dof_flags();
+
+/// Whether the switches `dofs` (flag -> on) make the tower flexible (a tower mode
+/// DOF on: TwFADOF1, TwSSDOF1, TwFADOF2, TwSSDOF2), or the blades (FlapDOF1,
+/// FlapDOF2, EdgeDOF). A flag not in `dofs` is off.
+bool flexible_tower(const std::map<std::string, bool>& dofs);
+bool flexible_blades(const std::map<std::string, bool>& dofs);
 
 struct OpenFastDeck {
     std::shared_ptr<const diag::SourceFile> fst; ///< null when the ElastoDyn file was given
@@ -41,7 +47,7 @@ struct OpenFastDeck {
     /// The `.fst`'s module switches (CompInflow, CompAero, CompServo, ...) as written,
     /// with where they are, and the module files it names (InflowFile, AeroFile,
     /// ServoFile), resolved: what `from-openfast` turns into the rotor block
-    /// (openfast/operation.hpp).
+    /// (compiler/openfast/operation.hpp).
     std::map<std::string, DeckEntry> modules;
     std::map<std::string, std::string> module_files;
     /// Entries read but without effect on the structural model (outputs, simulation
@@ -61,4 +67,4 @@ std::optional<OpenFastDeck> read_openfast_deck(const std::string& path, diag::Di
 /// The entries of an OpenFAST input file (not its tables, not its OutList block).
 std::vector<DeckEntry> scan_deck_entries(const diag::SourceFile& file);
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-namespace yamsc::beam {
+namespace yamsc::elastodyn {
 
 struct EdTable {
     std::vector<std::string> columns;      // names from the header row
@@ -70,4 +70,4 @@ std::vector<Token> tokenize(std::string_view line);
 /// Parses a whole token as a number (Fortran 'D' exponents accepted).
 std::optional<double> parse_number(std::string_view token);
 
-} // namespace yamsc::beam
+} // namespace yamsc::elastodyn

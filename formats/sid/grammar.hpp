@@ -1,7 +1,7 @@
 #pragma once
 // The grammar of the Standard Input Data (SID) text format (docs/sid-format.md) as PEGTL rule
 // types. A SID file is read line by line: this grammar splits the text into lines of five
-// shapes, and compiler/sid/ assembles the nested blocks and checks what they mean:
+// shapes, and the rest of formats/sid/ assembles the nested blocks and checks what they mean:
 //
 //     name                    a block opens:        `refmod`, `origin`, `Me`
 //     name = value            a key:                `nrow = 3`, `rframe = body ref`
@@ -21,7 +21,7 @@
 //   and goes on with the next line.
 #include <tao/pegtl.hpp>
 
-namespace yamsc::grammar::sid {
+namespace yamsc::sid::grammar {
 
 namespace p = tao::pegtl;
 
@@ -109,4 +109,4 @@ struct body : p::seq<p::star<p::not_at<end_part_line>, p::not_at<p::eof>, body_l
                      p::opt<end_part_line, trailer>> {};
 struct file : p::seq<p::opt<byte_order_mark>, header, p::opt<part_line, body>, p::eof> {};
 
-} // namespace yamsc::grammar::sid
+} // namespace yamsc::sid::grammar

@@ -1,5 +1,5 @@
 #pragma once
-// The first stage of the SID reader: the text split into lines by grammar/sid_grammar.hpp.
+// The first stage of the SID reader: the text split into lines by sid/grammar.hpp.
 // The lines point into the text of the SourceFile, which must outlive them.
 #include "sid/read_context.hpp"
 
