@@ -241,12 +241,6 @@ std::size_t usable_cores() {
     return std::max(1u, std::thread::hardware_concurrency());
 }
 
-std::string join(const std::vector<std::string>& v) {
-    std::string out;
-    for (const std::string& s : v) out += (out.empty() ? "" : ",") + s;
-    return out;
-}
-
 } // namespace
 
 namespace {
@@ -341,8 +335,8 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
     std::map<std::string, std::string> file_digests; // wind files and rotor tables
     for (Job& job : jobs) {
         if (job.done) continue;
-        const std::vector<std::string> routines = sim_routines(job.c->sim);
-        const std::string key = job.c->sim.model + "\n" + join(routines);
+        const codegen::RoutineSet routines = sim_routines(job.c->sim);
+        const std::string key = job.c->sim.model + "\n" + codegen::routine_names(routines);
         if (!models.count(key)) {
             // Diagnostics and the compile notice on stderr as they come, and
             // kept for the summary of the rows that use the model.

@@ -13,7 +13,9 @@ namespace yamsc::driver {
 
 int eval_compiled(const EvalOptions& o, std::ostream& out, std::ostream& err) {
     auto loaded = load(o.model, o.set, o.sid, false, err, {},
-                       {"rhs", "mass_matrix", "forcing", "outputs"}, o.external);
+                       {codegen::RoutineId::rhs, codegen::RoutineId::mass_matrix,
+                        codegen::RoutineId::forcing, codegen::RoutineId::outputs},
+                       o.external);
     if (!loaded) return 1;
     const runtime::ModelView& v = loaded->view;
     const auto nq = static_cast<std::size_t>(v.nq);

@@ -8,13 +8,11 @@
 #include "embedded_abi.hpp"
 #include <yamsc/atomic_file.hpp>
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
@@ -33,34 +31,15 @@ namespace {
 const char* const compile_flags =
     "-std=c++17 -O2 -march=native -ffp-contract=off -shared -fPIC -fvisibility=hidden";
 
-/// The ABI's export macro of each routine.
-const std::map<std::string, std::string>& export_macros() {
-    static const std::map<std::string, std::string> macros{
-        {"rhs", "YAMSC_EXPORT_RHS"},
-        {"rhs_jacobian", "YAMSC_EXPORT_RHS_JACOBIAN"},
-        {"mass_matrix", "YAMSC_EXPORT_MASS_MATRIX"},
-        {"forcing", "YAMSC_EXPORT_FORCING"},
-        {"jacobians", "YAMSC_EXPORT_JACOBIANS"},
-        {"outputs", "YAMSC_EXPORT_OUTPUTS"}};
-    return macros;
-}
-
-/// rhs first, then the others in the ABI's order, each once.
-std::vector<std::string> normalised(const std::vector<std::string>& routines) {
-    std::vector<std::string> out{"rhs"};
-    for (const char* name : {"rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"})
-        if (std::find(routines.begin(), routines.end(), name) != routines.end())
-            out.emplace_back(name);
-    for (const std::string& r : routines)
-        if (!export_macros().count(r))
-            throw std::invalid_argument("the model ABI has no routine '" + r + "'");
-    return out;
-}
-
-std::string joined(const std::vector<std::string>& names) {
-    std::string out;
-    for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-    return out;
+/// rhs (the loader needs it) and the others; throws std::invalid_argument for
+/// a routine the C ABI does not export.
+codegen::RoutineSet normalised(codegen::RoutineSet routines) {
+    if (const codegen::RoutineSet outside = routines.without(codegen::abi_routines());
+        !outside.empty())
+        throw std::invalid_argument("the model ABI has no routine '" +
+                                    codegen::routine_names(outside) + "'");
+    routines.insert(codegen::RoutineId::rhs);
+    return routines;
 }
 
 std::string shell_quote(const std::string& s) {
@@ -103,20 +82,21 @@ void compile(const std::string& compiler, const std::string& source, const std::
 
 } // namespace
 
-std::string shared_model_source(const ir::System& eq, const std::vector<std::string>& routines) {
-    const std::vector<std::string> wanted = normalised(routines);
+std::string shared_model_source(const ir::System& eq, codegen::RoutineSet routines) {
+    const codegen::RoutineSet wanted = normalised(routines);
     codegen::Options module_options;
     module_options.linear_model = false;
     codegen::Module module = codegen::build_module(eq, module_options);
     codegen::keep_routines(module, wanted);
     codegen::EmitOptions options;
     options.compiler_version = YAMSC_VERSION;
-    options.command_line = "yamsc (compiled on the fly: " + joined(wanted) + ")";
+    options.command_line = "yamsc (compiled on the fly: " + codegen::routine_names(wanted) + ")";
     std::string source = codegen::emit_cpp(module, options).source;
     source += "\n// ---- C ABI for the runtime's loader ----\n" + std::string(abi_export_text) +
               "\nYAMSC_EXPORT_MODEL_INFO(" + eq.model_name + ")\n";
-    for (const std::string& r : wanted)
-        source += export_macros().at(r) + "(" + eq.model_name + ")\n";
+    wanted.for_each([&](codegen::RoutineId r) {
+        source += std::string(codegen::routine_row(r).abi_macro) + "(" + eq.model_name + ")\n";
+    });
     return source;
 }
 
@@ -126,13 +106,13 @@ std::unique_ptr<runtime::SharedModel> load_compiled_model(const ModelIdentity& i
     auto tell = [](const std::function<void(const std::string&)>& to, const std::string& s) {
         if (to) to(s);
     };
-    const std::vector<std::string> routines = normalised(id.routines);
+    const codegen::RoutineSet routines = normalised(id.routines);
+    const std::string names = codegen::routine_names(routines);
     const std::string compiler = compiler_of(o.compiler);
     const ModelCache cache(cache_folder(o.cache_dir));
-    const std::string key =
-        digest(id.content_digest + "\n" + joined(routines) + "\n" + compile_flags + "\n" +
-               compiler_identity(compiler) + "\n" + cpu_identity() + "\n" + program_identity() +
-               "\n" + abi_export_text);
+    const std::string key = digest(id.content_digest + "\n" + names + "\n" + compile_flags + "\n" +
+                                   compiler_identity(compiler) + "\n" + cpu_identity() + "\n" +
+                                   program_identity() + "\n" + abi_export_text);
     const std::string library = cache.library_path(id.model_name, key);
     if (::access(library.c_str(), R_OK) == 0) {
         try {
@@ -149,7 +129,7 @@ std::unique_ptr<runtime::SharedModel> load_compiled_model(const ModelIdentity& i
     const CompileEstimate estimate = cache.estimate(source.size());
     char size[32];
     std::snprintf(size, sizeof size, "%.2f MB", static_cast<double>(source.size()) / 1e6);
-    tell(o.notice, "compiling model '" + id.model_name + "' (" + joined(routines) + "; " + size +
+    tell(o.notice, "compiling model '" + id.model_name + "' (" + names + "; " + size +
                        " of C++) with " + compiler + "; this usually takes about " +
                        seconds_text(estimate.seconds) +
                        (estimate.measured_here ? " here" : " (no compile timed here yet)") +
@@ -165,8 +145,7 @@ std::unique_ptr<runtime::SharedModel> load_compiled_model(const ModelIdentity& i
 
 std::unique_ptr<runtime::SharedModel> load_compiled_model(const ir::System& eq,
                                                           const JitOptions& options) {
-    const std::vector<std::string> all{"rhs",     "rhs_jacobian", "mass_matrix",
-                                       "forcing", "jacobians",    "outputs"};
+    const codegen::RoutineSet all = codegen::abi_routines();
     const ModelIdentity id{eq.model_name, digest(shared_model_source(eq, all)), all};
     return load_compiled_model(
         id, [&]() { return eq; }, options);

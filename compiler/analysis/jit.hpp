@@ -5,6 +5,7 @@
 // through the C ABI of runtime/include/yamsc/abi_export.hpp. Libraries are
 // cached by content (jit_cache.hpp): a hit loads the library without deriving
 // anything.
+#include "codegen/routines.hpp"
 #include "ir/system.hpp"
 
 #include <yamsc/dynamic_model.hpp>
@@ -30,14 +31,14 @@ struct JitOptions {
 struct ModelIdentity {
     std::string model_name;
     std::string content_digest; // driver::content_digest: model text and data
-    /// ABI names (abi_export.hpp): rhs, rhs_jacobian, mass_matrix, forcing,
-    /// jacobians, outputs. rhs is always compiled.
-    std::vector<std::string> routines;
+    /// Routines of the C ABI (codegen::abi_routines(): rhs, rhs_jacobian,
+    /// mass_matrix, forcing, jacobians, outputs). rhs is always compiled.
+    codegen::RoutineSet routines;
 };
 
 /// The C++ translation unit that exports `routines` of a model: the generated
 /// source with those routines only, and the ABI shim for each.
-std::string shared_model_source(const ir::System& eq, const std::vector<std::string>& routines);
+std::string shared_model_source(const ir::System& eq, codegen::RoutineSet routines);
 
 /// The compiled model of `id`: from the cache, else `derive()` is called for
 /// the equations, which are compiled and stored. Throws std::runtime_error with

@@ -46,8 +46,8 @@ std::vector<std::string> primed(const std::vector<std::string>& names) {
 
 std::optional<Loaded> load(const std::string& path, const std::vector<Assignment>& set,
                            const std::string& sid_spec, bool verbose, std::ostream& err,
-                           const std::vector<NamedFile>& outputs,
-                           const std::vector<std::string>& routines, const std::string& external) {
+                           const std::vector<NamedFile>& outputs, codegen::RoutineSet routines,
+                           const std::string& external) {
     std::optional<Loaded> l =
         load_unbound(path, sid_spec, verbose, err, outputs, routines, external);
     if (l) bind_parameters(*l, set);
@@ -57,8 +57,7 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
 std::optional<Loaded> load_unbound(const std::string& path, const std::string& sid_spec,
                                    bool verbose, std::ostream& err,
                                    const std::vector<NamedFile>& outputs,
-                                   const std::vector<std::string>& routines,
-                                   const std::string& external) {
+                                   codegen::RoutineSet routines, const std::string& external) {
     // One model at a time per process: the derivation (GiNaC) shares global
     // state, and the JIT names its temporary files by process id. Python
     // threads (yamsc.load, a Dask worker's batch tasks) can load at once.
@@ -126,8 +125,10 @@ Loaded load_library(const std::string& path, const std::vector<Assignment>& set)
     return l;
 }
 
-std::vector<std::string> linear_model_routines() {
-    return {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians"};
+codegen::RoutineSet linear_model_routines() {
+    using codegen::RoutineId;
+    return {RoutineId::rhs, RoutineId::rhs_jacobian, RoutineId::mass_matrix, RoutineId::forcing,
+            RoutineId::jacobians};
 }
 
 std::vector<double> inputs_of(const runtime::ModelView& v, const std::vector<Assignment>& u) {

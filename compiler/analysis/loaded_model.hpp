@@ -2,6 +2,7 @@
 // A model ready to run for `sim`, `lin` and `trim`: checked, compiled (only
 // the routines the command calls, analysis/jit.hpp), bound to its parameters;
 // and the points it starts from (`initial` and `linearize` blocks, --ic, --at).
+#include "codegen/routines.hpp"
 #include "driver/commands.hpp"
 #include "driver/outputs.hpp"
 #include "driver/pipeline.hpp"
@@ -37,8 +38,7 @@ struct Loaded {
 /// lib.so|file.c|file.cpp, analysis/external_library.hpp); required when it declares any.
 std::optional<Loaded> load(const std::string& path, const std::vector<Assignment>& set,
                            const std::string& sid_spec, bool verbose, std::ostream& err,
-                           const std::vector<NamedFile>& outputs,
-                           const std::vector<std::string>& routines,
+                           const std::vector<NamedFile>& outputs, codegen::RoutineSet routines,
                            const std::string& external = "");
 
 /// `load` without binding the parameters (`params` and `view` empty): for
@@ -46,8 +46,7 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
 std::optional<Loaded> load_unbound(const std::string& path, const std::string& sid_spec,
                                    bool verbose, std::ostream& err,
                                    const std::vector<NamedFile>& outputs,
-                                   const std::vector<std::string>& routines,
-                                   const std::string& external = "");
+                                   codegen::RoutineSet routines, const std::string& external = "");
 
 /// Binds the parameters again: the model's defaults, the --sid values, then
 /// `set` (as `load` does); a view of the same library with those values.
@@ -59,7 +58,7 @@ void bind_parameters(Loaded& l, const std::vector<Assignment>& set);
 Loaded load_library(const std::string& path, const std::vector<Assignment>& set);
 
 /// The routines `lin` and `trim` call: the second-order model and A.
-std::vector<std::string> linear_model_routines();
+codegen::RoutineSet linear_model_routines();
 
 /// Constant inputs from --u (0 where not given).
 std::vector<double> inputs_of(const runtime::ModelView& v, const std::vector<Assignment>& u);

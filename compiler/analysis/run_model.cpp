@@ -179,8 +179,8 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     inputs.push_back({"--external", o.external});
     check_outputs(inputs, outputs);
     // The second-order model (M, F and its Jacobians) and, for the modes, A.
-    std::vector<std::string> routines = linear_model_routines();
-    if (!o.aero.empty() || lin_files) routines.push_back("outputs");
+    codegen::RoutineSet routines = linear_model_routines();
+    if (!o.aero.empty() || lin_files) routines.insert(codegen::RoutineId::outputs);
     auto loaded = load(o.model, o.set, o.sid, false, err, outputs, routines, o.external);
     if (!loaded) return 1;
     if (o.sweep) return campbell(*loaded, o, out);

@@ -34,13 +34,14 @@ runtime::ModelView linear_model(const Loaded& l, const SimOptions& o, std::ostre
 
 } // namespace
 
-std::vector<std::string> sim_routines(const SimOptions& o) {
+codegen::RoutineSet sim_routines(const SimOptions& o) {
     // rhs and outputs; CVODE's Newton iterations use the exact rhs_jacobian,
     // and --linear linearizes with M and the Jacobians of F.
-    std::vector<std::string> routines{"rhs", "outputs"};
-    if (o.method == SimMethod::cvode) routines.push_back("rhs_jacobian");
+    using codegen::RoutineId;
+    codegen::RoutineSet routines{RoutineId::rhs, RoutineId::outputs};
+    if (o.method == SimMethod::cvode) routines.insert(RoutineId::rhs_jacobian);
     if (o.linear || (!o.aero.empty() && o.method == SimMethod::cvode))
-        routines.insert(routines.end(), {"mass_matrix", "jacobians"});
+        routines.insert({RoutineId::mass_matrix, RoutineId::jacobians});
     return routines;
 }
 

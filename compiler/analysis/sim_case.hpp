@@ -4,6 +4,7 @@
 // numbers of `yamsc sim` with the same options.
 #include "analysis/channels.hpp"
 #include "analysis/loaded_model.hpp"
+#include "codegen/routines.hpp"
 #include "driver/commands.hpp"
 
 #include <yamsc/model_view.hpp>
@@ -16,7 +17,7 @@
 namespace yamsc::driver {
 
 /// The routines a simulation with these options calls (jit.hpp).
-std::vector<std::string> sim_routines(const SimOptions& o);
+codegen::RoutineSet sim_routines(const SimOptions& o);
 
 struct SimRun {
     runtime::ModelView view; // what was integrated (linear, with the rotor block)

@@ -13,8 +13,8 @@
 namespace yamsc::driver {
 
 int trim(const TrimOptions& o, std::ostream& out, std::ostream& err) {
-    std::vector<std::string> routines = linear_model_routines();
-    if (!o.aero.empty()) routines.push_back("outputs");
+    codegen::RoutineSet routines = linear_model_routines();
+    if (!o.aero.empty()) routines.insert(codegen::RoutineId::outputs);
     auto loaded = load(o.model, o.set, o.sid, false, err, {}, routines, o.external);
     if (!loaded) return 1;
     const runtime::ModelView v = o.aero.empty() ? loaded->view : close_rotor_aero(*loaded, o.aero);

@@ -4,6 +4,7 @@
 #include "diag/diagnostics.hpp"
 #include "driver/bindings.hpp"
 #include "driver/commands.hpp"
+#include "driver/targets.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -138,18 +139,19 @@ Enum choice(const Args& a, const std::string& name, Enum fallback,
 /// The language of a compile: --lang, else the extension of -o.
 yamsc::driver::Language language_of(const Args& a, const std::string& output) {
     using yamsc::driver::Language;
-    if (a.has("--lang"))
-        return choice(a, "--lang", Language::cpp,
-                      {{"cpp", Language::cpp}, {"c", Language::c}, {"latex", Language::latex}});
+    std::vector<std::pair<std::string, Language>> languages;
+    for (const yamsc::driver::Target* t : yamsc::driver::targets())
+        languages.emplace_back(t->name, t->language);
+    if (a.has("--lang")) return choice(a, "--lang", Language::cpp, languages);
     const auto slash = output.find_last_of('/');
     const auto dot = output.find_last_of('.');
     const std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash)
                                 ? ""
                                 : output.substr(dot + 1);
-    if (ext == "cpp" || ext == "cc" || ext == "cxx" || ext == "hpp") return Language::cpp;
-    if (ext == "c" || ext == "h") return Language::c;
-    if (ext == "tex") return Language::latex;
-    throw UsageError("cannot tell the language from '" + output + "': give --lang cpp|c|latex");
+    if (const yamsc::driver::Target* t = yamsc::driver::target_for_extension(ext))
+        return t->language;
+    throw UsageError("cannot tell the language from '" + output + "': give --lang " +
+                     yamsc::driver::target_names("|"));
 }
 
 /// "a,b,c" -> {"a", "b", "c"}; "" -> {}.
@@ -411,7 +413,7 @@ int run(int argc, char** argv) {
     if (a.has("--real"))
         o.real = choice(a, "--real", Real::double_precision,
                         {{"double", Real::double_precision}, {"float", Real::single_precision}});
-    if (o.real == Real::single_precision && o.lang != Language::c)
+    if (o.real == Real::single_precision && !yamsc::driver::target(o.lang).single_precision)
         throw UsageError("--real float applies to --lang c only");
     if (a.has("--jacobians"))
         o.jacobians = choice(a, "--jacobians", Derivatives::automatic,

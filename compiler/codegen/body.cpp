@@ -141,7 +141,7 @@ BodyText body_text(const Routine& routine, const Module& module, const Syntax& s
                    const std::vector<std::string>& signature, int max_statements,
                    const CalleeCosts& callee_costs) {
     check_signature(routine, signature);
-    const bool hot = routine.name == "rhs" || routine.name == "outputs_from_qdd";
+    const bool hot = routine.id == RoutineId::rhs || routine.id == RoutineId::outputs_from_qdd;
     const BodyPlan plan =
         plan_body(routine, hot ? hot_part_factor * max_statements : max_statements);
     const bool cut = plan.part_count > 0;

@@ -6,6 +6,7 @@
 #include "codegen/body.hpp"
 #include "codegen/emit.hpp"
 #include "codegen/emit_c_rk4.hpp"
+#include "codegen/emit_entry.hpp"
 #include "codegen/functions.hpp"
 #include "codegen/header_comment.hpp"
 #include "codegen/text.hpp"
@@ -23,7 +24,8 @@ struct CNames {
     bool single_precision = false;
     std::string real() const { return prefix + "_real"; }
     std::string function(const FunctionPlan& plan) const {
-        const bool full_mass_matrix = plan.routine->name == "mass_matrix" && !plan.short_form;
+        const bool full_mass_matrix =
+            plan.routine->id == RoutineId::mass_matrix && !plan.short_form;
         return prefix + "_" + plan.routine->name + (full_mass_matrix ? "_tu" : "");
     }
     std::string params_type() const { return prefix + "_params"; }
@@ -213,8 +215,7 @@ Definitions definitions(const Module& module, const CNames& names,
     for (std::size_t i : callees_first(plans)) {
         const FunctionPlan& plan = plans[i];
         if (plan.forwards_to_short) {
-            for (const Argument* a : plan.parameters)
-                if (a->name == "t" || a->name == "u") texts[i] += "    (void)" + a->name + ";\n";
+            for (const Argument* a : plan.not_forwarded) texts[i] += "    (void)" + a->name + ";\n";
             texts[i] += fmt::format("    {}_mass_matrix(q, p, M);\n", names.prefix);
         } else {
             BodyText body = printed_body(plan, module, syntax, max_statements, callee_costs);
@@ -235,7 +236,7 @@ Definitions definitions(const Module& module, const CNames& names,
     // rk4_step last: it calls rhs, and its cost is four of rhs's.
     OperationCount rhs;
     for (const FunctionCost& c : d.costs)
-        if (c.name == "rhs") rhs = c.count;
+        if (c.name == routine_name(RoutineId::rhs)) rhs = c.count;
     const int nx = 2 * module.model.nq();
     d.text += "\n// x += one classical RK4 step of h from t (x = [q, q'], u held over the step)\n" +
               rk4_definition(names.rk4(), syntax, nx);
@@ -252,15 +253,8 @@ EmittedFiles emit_c(const Module& module, const EmitOptions& options) {
                               "': external functions are not supported in --lang c yet (use "
                               "--lang cpp)");
     CNames names;
-    names.prefix = options.namespace_name.empty() ? module.model.name : options.namespace_name;
+    names.prefix = checked_scope(module, options, ScopeName::c_identifier);
     names.single_precision = options.real == EmitOptions::Real::single_precision;
-    if (!is_c_identifier(names.prefix))
-        throw diag::InternalError("code generation: '" + names.prefix + "' is not a C identifier");
-    for (const ParamInfo& p : module.model.params)
-        if (!is_c_identifier(p.name))
-            throw diag::InternalError("code generation: parameter name '" + p.name +
-                                      "' is not an identifier");
-    check_header_name(options.header_name);
 
     const std::vector<FunctionPlan> plans = function_plans(module);
     CalleeCosts callee_costs;

@@ -3,6 +3,7 @@
 // runtime's from_generated<NS::Model> takes (docs/generated-api.md).
 #include "codegen/body.hpp"
 #include "codegen/emit.hpp"
+#include "codegen/emit_entry.hpp"
 #include "codegen/external_wrappers.hpp"
 #include "codegen/functions.hpp"
 #include "codegen/header_comment.hpp"
@@ -182,11 +183,10 @@ Definitions definitions(const Module& module, const std::vector<FunctionPlan>& p
     for (std::size_t i : callees_first(plans)) {
         const FunctionPlan& plan = plans[i];
         std::string& text = texts[i];
-        if (!module.externals.empty() && wrapped_routine(plan.routine->name)) {
-            text = external_wrapper_body(module, plan.routine->name);
+        if (!module.externals.empty() && wrapped_routine(*plan.routine)) {
+            text = external_wrapper_body(module, *plan.routine->id);
         } else if (plan.forwards_to_short) {
-            for (const Argument* a : plan.parameters)
-                if (a->name == "t" || a->name == "u") text += "    (void)" + a->name + ";\n";
+            for (const Argument* a : plan.not_forwarded) text += "    (void)" + a->name + ";\n";
             text += "    mass_matrix(q, p, M);\n";
         } else {
             BodyText body = body_text(*plan.routine, module, syntax, parameter_names(plan),
@@ -211,15 +211,7 @@ Definitions definitions(const Module& module, const std::vector<FunctionPlan>& p
 } // namespace
 
 EmittedFiles emit_cpp(const Module& module, const EmitOptions& options) {
-    const std::string ns =
-        options.namespace_name.empty() ? module.model.name : options.namespace_name;
-    if (!is_cpp_namespace(ns))
-        throw diag::InternalError("code generation: '" + ns + "' is not a C++ namespace name");
-    for (const ParamInfo& p : module.model.params)
-        if (!is_c_identifier(p.name))
-            throw diag::InternalError("code generation: parameter name '" + p.name +
-                                      "' is not an identifier");
-    check_header_name(options.header_name);
+    const std::string ns = checked_scope(module, options, ScopeName::cpp_namespace);
 
     const std::vector<FunctionPlan> plans = function_plans(module);
     CalleeCosts callee_costs;

@@ -1,6 +1,7 @@
 #include "codegen/external_wrappers.hpp"
 
 #include "codegen/text.hpp"
+#include "diag/diagnostics.hpp"
 
 #include <algorithm>
 #include <map>
@@ -70,10 +71,7 @@ std::map<std::string, std::string> size_values(const Sizes& s) {
 
 bool needs_derivatives(const Module& m) {
     for (const Routine& r : m.routines)
-        if (!r.internal &&
-            (r.name == "jacobians" || r.name == "rhs_jacobian" || r.name == "linear" ||
-             r.name == "state_space" || r.name == "output_matrices"))
-            return true;
+        if (!r.internal && r.id && routine_row(*r.id).derivative) return true;
     return false;
 }
 
@@ -173,21 +171,19 @@ const char* const derivative_text = R"CODE(
 
 } // namespace
 
-bool wrapped_routine(const std::string& name) {
-    static const std::set<std::string> names{"forcing", "jacobians",   "outputs_from_qdd",
-                                             "outputs", "rhs",         "rhs_jacobian",
-                                             "linear",  "state_space", "output_matrices"};
-    return names.count(name) > 0;
+bool wrapped_routine(const Routine& routine) {
+    return !routine.internal && routine.id && routine_row(*routine.id).wraps_externals;
 }
 
 Module with_inner_routines(const Module& module) {
     Module inner = module;
     std::set<std::string> renamed;
     for (Routine& r : inner.routines)
-        if (!r.internal && wrapped_routine(r.name)) {
+        if (wrapped_routine(r)) {
             renamed.insert(r.name);
             r.name = "inner_" + r.name;
             r.internal = true;
+            r.id.reset(); // a helper now, not the API's routine
         }
     // An inner routine calls inner ones (inner_outputs calls inner_rhs): u is
     // already [u, w] there.
@@ -281,22 +277,29 @@ std::string external_support(const Module& module) {
     return out;
 }
 
-std::string external_wrapper_body(const Module& module, const std::string& name) {
+std::string external_wrapper_body(const Module& module, RoutineId id) {
     const Sizes s = sizes_of(module);
     std::string body;
     const char* const inputs = "    double u_all[@SUW@], a[@SA@];\n";
     const char* const derivatives = "    double dw_dq[@SWQ@], dw_dqd[@SWQ@], dw_du[@SWU@];\n";
-    if (name == "outputs_from_qdd") {
+    switch (id) {
+    case RoutineId::outputs_from_qdd:
         body = std::string(inputs) + "    external_inputs(t, q, qd, u, p, u_all, a);\n" +
                "    inner_outputs_from_qdd(t, q, qd, qdd, u_all, p, y);\n";
-    } else if (name == "forcing" || name == "outputs") {
+        break;
+    case RoutineId::forcing:
+    case RoutineId::outputs: {
+        const bool forcing = id == RoutineId::forcing;
         body = std::string(inputs) + "    external_inputs(t, q, qd, u, p, u_all, a);\n" +
-               "    inner_" + name + "(t, q, qd, u_all, p, " + (name == "forcing" ? "F" : "y") +
+               "    inner_" + routine_name(id) + "(t, q, qd, u_all, p, " + (forcing ? "F" : "y") +
                ");\n";
-    } else if (name == "rhs") {
+        break;
+    }
+    case RoutineId::rhs:
         body = std::string(inputs) + "    external_inputs(t, x, x + @NQ@, u, p, u_all, a);\n" +
                "    inner_rhs(t, x, u_all, p, xdot);\n";
-    } else if (name == "jacobians") {
+        break;
+    case RoutineId::jacobians:
         body = std::string(inputs) + derivatives +
                "    double dF_duw[@SQUW@];\n"
                "    external_inputs(t, q, qd, u, p, u_all, a);\n"
@@ -306,7 +309,8 @@ std::string external_wrapper_body(const Module& module, const std::string& name)
                "    external_chain(dF_duw, @UW@, @NU@, @NQ@, dw_dqd, @NQ@, dF_dqd, @NQ@, 0, 1.0);\n"
                "    external_copy_inputs(dF_duw, @NQ@, dF_du);\n"
                "    external_chain(dF_duw, @UW@, @NU@, @NQ@, dw_du, @NU@, dF_du, @NU@, 0, 1.0);\n";
-    } else if (name == "rhs_jacobian") {
+        break;
+    case RoutineId::rhs_jacobian:
         body = std::string(inputs) + derivatives +
                "    double B[@SQW@];\n"
                "    external_inputs(t, x, x + @NQ@, u, p, u_all, a);\n"
@@ -316,7 +320,8 @@ std::string external_wrapper_body(const Module& module, const std::string& name)
                "    external_chain(B, @NW@, 0, @NQ@, dw_dq, @NQ@, J + @NQ@ * @NX@, @NX@, 0, 1.0);\n"
                "    external_chain(B, @NW@, 0, @NQ@, dw_dqd, @NQ@, J + @NQ@ * @NX@, @NX@, @NQ@, "
                "1.0);\n";
-    } else if (name == "linear") {
+        break;
+    case RoutineId::linear:
         body = std::string(inputs) + derivatives +
                "    double Qw[@SQUW@];\n"
                "    // the linear model is taken at t = 0\n"
@@ -327,7 +332,8 @@ std::string external_wrapper_body(const Module& module, const std::string& name)
                "    external_chain(Qw, @UW@, @NU@, @NQ@, dw_dqd, @NQ@, C0, @NQ@, 0, -1.0);\n"
                "    external_copy_inputs(Qw, @NQ@, Q0);\n"
                "    external_chain(Qw, @UW@, @NU@, @NQ@, dw_du, @NU@, Q0, @NU@, 0, 1.0);\n";
-    } else if (name == "state_space") {
+        break;
+    case RoutineId::state_space:
         body = std::string(inputs) + derivatives +
                "    double Bw[@SXUW@];\n"
                "    external_inputs(0.0, q0, qd0, u0, p, u_all, a);\n"
@@ -337,7 +343,8 @@ std::string external_wrapper_body(const Module& module, const std::string& name)
                "    external_chain(Bw, @UW@, @NU@, @NX@, dw_dqd, @NQ@, A, @NX@, @NQ@, 1.0);\n"
                "    external_copy_inputs(Bw, @NX@, B);\n"
                "    external_chain(Bw, @UW@, @NU@, @NX@, dw_du, @NU@, B, @NU@, 0, 1.0);\n";
-    } else if (name == "output_matrices") {
+        break;
+    case RoutineId::output_matrices:
         body = std::string(inputs) + derivatives +
                "    double Dw[@SYUW@];\n"
                "    external_inputs(0.0, q0, qd0, u0, p, u_all, a);\n"
@@ -347,6 +354,12 @@ std::string external_wrapper_body(const Module& module, const std::string& name)
                "    external_chain(Dw, @UW@, @NU@, @NY@, dw_dqd, @NQ@, C, @NX@, @NQ@, 1.0);\n"
                "    external_copy_inputs(Dw, @NY@, D);\n"
                "    external_chain(Dw, @UW@, @NU@, @NY@, dw_du, @NU@, D, @NU@, 0, 1.0);\n";
+        break;
+    case RoutineId::mass_matrix:
+    case RoutineId::linear_sensitivities:
+    case RoutineId::operating_point:
+        throw diag::InternalError(std::string("code generation: ") + routine_name(id) +
+                                  " has no externals' wrapper");
     }
     auto values = size_values(s);
     values["NY"] = std::to_string(s.ny);

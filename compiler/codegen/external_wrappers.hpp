@@ -15,8 +15,8 @@
 
 namespace yamsc::codegen {
 
-/// Whether the routine of that name is wrapped when the module has externals.
-bool wrapped_routine(const std::string& name);
+/// Whether the routine is wrapped when the module has externals.
+bool wrapped_routine(const Routine& routine);
 
 /// The module with every wrapped routine renamed `inner_<name>` and internal.
 Module with_inner_routines(const Module& module);
@@ -33,7 +33,7 @@ std::string external_comment(const Module& module);
 std::string external_weak_declarations(const Module& module);
 std::string external_support(const Module& module);
 
-/// The body (statements, braces excluded) of the public routine `name`'s wrapper.
-std::string external_wrapper_body(const Module& module, const std::string& name);
+/// The body (statements, braces excluded) of the public routine `id`'s wrapper.
+std::string external_wrapper_body(const Module& module, RoutineId id);
 
 } // namespace yamsc::codegen

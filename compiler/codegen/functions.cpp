@@ -2,6 +2,8 @@
 
 #include "diag/diagnostics.hpp"
 
+#include <algorithm>
+
 namespace yamsc::codegen {
 
 std::vector<FunctionPlan> function_plans(const Module& module) {
@@ -11,7 +13,7 @@ std::vector<FunctionPlan> function_plans(const Module& module) {
         FunctionPlan full;
         full.routine = &r;
         for (const Argument& a : r.arguments) full.parameters.push_back(&a);
-        if (r.name == "mass_matrix" && module.mass_matrix_short_form) {
+        if (r.id == RoutineId::mass_matrix && module.mass_matrix_short_form) {
             FunctionPlan short_plan;
             short_plan.routine = &r;
             short_plan.short_form = true;
@@ -19,6 +21,10 @@ std::vector<FunctionPlan> function_plans(const Module& module) {
                 short_plan.parameters.push_back(r.argument(name));
             plans.push_back(short_plan);
             full.forwards_to_short = true;
+            for (const Argument* a : full.parameters)
+                if (std::find(short_plan.parameters.begin(), short_plan.parameters.end(), a) ==
+                    short_plan.parameters.end())
+                    full.not_forwarded.push_back(a);
         }
         plans.push_back(full);
     }

@@ -14,6 +14,8 @@ struct FunctionPlan {
     std::vector<const Argument*> parameters;
     bool short_form = false;        // mass_matrix(q, p, M)
     bool forwards_to_short = false; // the full mass_matrix calling the short one
+    /// forwards_to_short: its parameters the short form does not take (t, u).
+    std::vector<const Argument*> not_forwarded;
 };
 
 /// The API functions (internal routines excluded).

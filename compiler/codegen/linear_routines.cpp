@@ -35,7 +35,7 @@ void factor_and_solve_accelerations(RoutineBuilder& b, const LinearSources& in, 
 
 Routine linear_routine(Graph& g, const LinearSources& in, int nq, int nu, bool accelerations,
                        const Options& options) {
-    RoutineBuilder b(g, api_signature("linear"), bind(SymbolSource::operating_point()));
+    RoutineBuilder b(g, api_signature(RoutineId::linear), bind(SymbolSource::operating_point()));
     for (int i = 0; i < nq; ++i)
         for (int j = 0; j <= i; ++j) b.assign("M0", i * nq + j, in.M[i][j]);
     for (int i = 0; i < nq; ++i)
@@ -56,7 +56,8 @@ Routine linear_routine(Graph& g, const LinearSources& in, int nq, int nu, bool a
 // the lower block rows are solved in place, as in rhs_jacobian.
 Routine state_space_routine(Graph& g, const LinearSources& in, int nq, int nu, bool accelerations,
                             const Options& options) {
-    RoutineBuilder b(g, api_signature("state_space"), bind(SymbolSource::operating_point()));
+    RoutineBuilder b(g, api_signature(RoutineId::state_space),
+                     bind(SymbolSource::operating_point()));
     const int nx = 2 * nq;
     const NodeId zero = g.number(0.0), one = g.number(1.0);
     for (int i = 0; i < nq; ++i)
@@ -79,7 +80,8 @@ Routine state_space_routine(Graph& g, const LinearSources& in, int nq, int nu, b
 
 Routine output_matrices_routine(const Graph& g, const ir::System& s, const Options& options) {
     const int nu = s.nu(), nx = 2 * s.nq();
-    RoutineBuilder b(g, api_signature("output_matrices"), bind(SymbolSource::operating_point()));
+    RoutineBuilder b(g, api_signature(RoutineId::output_matrices),
+                     bind(SymbolSource::operating_point()));
     for (std::size_t i = 0; i < s.C.size(); ++i)
         for (int j = 0; j < nx; ++j) b.assign("C", static_cast<int>(i) * nx + j, s.C[i][j]);
     for (std::size_t i = 0; i < s.D.size(); ++i)
@@ -98,7 +100,7 @@ Routine output_matrices_with_accelerations(Graph& g, const ir::System& s, const 
     SymbolSource source = SymbolSource::operating_point();
     source.qdd = source.a; // y and its partials at q''0
     source.seed = "X";
-    RoutineBuilder b(g, api_signature("output_matrices"), bind(source));
+    RoutineBuilder b(g, api_signature(RoutineId::output_matrices), bind(source));
     factor_and_solve_accelerations(b, in, nq, true);
     b.local("X", nq * w);
     for (int i = 0; i < nq; ++i) {
@@ -146,19 +148,15 @@ void add_operating_point(Module& module, const ir::System& s) {
         op.u.size() != static_cast<std::size_t>(s.declared_nu()))
         throw diag::InternalError("code generation: the operating point does not match the model");
     // Only parameters: the checker allows nothing else in the point.
-    RoutineBuilder b(
-        s.graph, "operating_point",
-        op.declared ? "the model's operating point (its linearize block)"
-                    : "the model's operating point (no linearize block: zeros)",
-        {argument("p", ArgumentKind::params), argument("q0", ArgumentKind::output_array),
-         argument("qd0", ArgumentKind::output_array), argument("u0", ArgumentKind::output_array)},
-        [](SymbolRef sym) -> std::optional<Expr> {
-            if (sym.kind != SymbolKind::param) return std::nullopt;
-            Expr e;
-            e.kind = ExprKind::param;
-            e.index = sym.index;
-            return e;
-        });
+    RoutineBuilder::Signature signature = api_signature(RoutineId::operating_point);
+    signature.summary += op.declared ? " (its linearize block)" : " (no linearize block: zeros)";
+    RoutineBuilder b(s.graph, std::move(signature), [](SymbolRef sym) -> std::optional<Expr> {
+        if (sym.kind != SymbolKind::param) return std::nullopt;
+        Expr e;
+        e.kind = ExprKind::param;
+        e.index = sym.index;
+        return e;
+    });
     for (std::size_t i = 0; i < op.q.size(); ++i) b.assign("q0", static_cast<int>(i), op.q[i]);
     for (std::size_t i = 0; i < op.qd.size(); ++i) b.assign("qd0", static_cast<int>(i), op.qd[i]);
     for (std::size_t i = 0; i < op.u.size(); ++i) b.assign("u0", static_cast<int>(i), op.u[i]);

@@ -22,4 +22,11 @@ const Routine& Module::routine(std::string_view name) const {
                               "'");
 }
 
+const Routine& Module::routine(RoutineId id) const {
+    for (const Routine& r : routines)
+        if (r.id == id && !r.internal) return r;
+    throw diag::InternalError("code generation: the module has no routine '" +
+                              std::string(routine_name(id)) + "'");
+}
+
 } // namespace yamsc::codegen

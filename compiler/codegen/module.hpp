@@ -3,6 +3,7 @@
 // by routine, with the shared work made explicit (named temporaries computed
 // once, local arrays, the factorisation of M and the solves with it). Emitters
 // only print a Module; `yamsc --dump=module` prints it with dump().
+#include "codegen/routines.hpp"
 #include "codegen/sparse_ldlt.hpp"
 #include "ir/graph.hpp"
 #include "ir/system.hpp"
@@ -141,6 +142,8 @@ struct LocalArray {
 
 struct Routine {
     std::string name; // mass_matrix, forcing, jacobians, outputs, rhs, rhs_jacobian, linear, ...
+    /// Which function of the API it is (routines.hpp); none for internal helpers.
+    std::optional<RoutineId> id;
     std::string summary;
     /// A helper of the tangent form, called by sweeps: file-local in the
     /// generated code, defined before its callers, not part of the API.
@@ -212,24 +215,27 @@ struct Module {
 
     /// The routine of that name; throws diag::InternalError if there is none.
     const Routine& routine(std::string_view name) const;
+    /// The public routine `id`; throws diag::InternalError if there is none.
+    const Routine& routine(RoutineId id) const;
 };
 
 /// Lowers the System `s` to a module: mass_matrix, forcing, jacobians,
 /// outputs_from_qdd, outputs (codegen/output_routines.hpp), rhs, rhs_jacobian
 /// and the linear model's linear, state_space and output_matrices
 /// (codegen/linear_routines.hpp; add_operating_point adds operating_point).
-/// The passes must have run: passes::derive_jacobians and output_jacobians
-/// (or derive_tangent), and parameter_derivatives for options.sensitivity_params.
+/// The passes each routine reads (its row of routines.hpp) must have run, as
+/// the System records them: passes::derive_jacobians and output_jacobians (or
+/// derive_tangent), and parameter_derivatives for options.sensitivity_params.
 /// Linear in the size of the System's graph. Throws diag::InternalError when the
 /// System is malformed (wrong shapes, missing derivatives) or holds something
 /// generated code cannot express.
 Module build_module(const ir::System& s, const Options& options = {});
 
-/// Keeps the public routines named in `wanted` (in the module's order) and the
+/// Keeps the public routines of `wanted` (in the module's order) and the
 /// internal routines they call; drops every other. For a module compiled for
 /// one use only (the JIT): the C emitter's rk4_step needs rhs. Throws
-/// diag::InternalError for a name the module has no public routine of.
-void keep_routines(Module& module, const std::vector<std::string>& wanted);
+/// diag::InternalError for a routine the module does not have.
+void keep_routines(Module& module, RoutineSet wanted);
 
 /// A readable, deterministic listing of the module (for `yamsc --dump=module`).
 std::string dump(const Module& module);

@@ -91,7 +91,7 @@ void assign_lower_triangle(RoutineBuilder& b, const char* array, const NodeMatri
 
 Routine mass_matrix_routine(const Graph& g, const ImportedEquations& in, int nq,
                             const Options& options) {
-    RoutineBuilder b(g, api_signature("mass_matrix"), bind(without_rates()));
+    RoutineBuilder b(g, api_signature(RoutineId::mass_matrix), bind(without_rates()));
     assign_lower_triangle(b, "M", in.M);
     // M is symmetric: the upper triangle repeats the lower one.
     for (int i = 0; i < nq; ++i)
@@ -101,14 +101,14 @@ Routine mass_matrix_routine(const Graph& g, const ImportedEquations& in, int nq,
 
 Routine forcing_routine(const Graph& g, const ImportedEquations& in, int nq,
                         const Options& options) {
-    RoutineBuilder b(g, api_signature("forcing"), bind({}));
+    RoutineBuilder b(g, api_signature(RoutineId::forcing), bind({}));
     for (int i = 0; i < nq; ++i) b.assign("F", i, in.F[static_cast<std::size_t>(i)]);
     return std::move(b).finish(options);
 }
 
 Routine jacobians_routine(const Graph& g, const ImportedEquations& in, int nq, int nu,
                           const Options& options) {
-    RoutineBuilder b(g, api_signature("jacobians"), bind({}));
+    RoutineBuilder b(g, api_signature(RoutineId::jacobians), bind({}));
     for (int i = 0; i < nq; ++i)
         for (int j = 0; j < nq; ++j) b.assign("dF_dq", i * nq + j, in.dF_dq[i][j]);
     for (int i = 0; i < nq; ++i)
@@ -120,7 +120,7 @@ Routine jacobians_routine(const Graph& g, const ImportedEquations& in, int nq, i
 
 Routine rhs_routine(const Graph& g, const ImportedEquations& in, const std::vector<NodeId>& rates,
                     int nq, const Options& options) {
-    RoutineBuilder b(g, api_signature("rhs"), bind(SymbolSource::state_vector(nq)));
+    RoutineBuilder b(g, api_signature(RoutineId::rhs), bind(SymbolSource::state_vector(nq)));
     if (nq > 0) b.local("M", nq * nq);
     for (int i = 0; i < nq; ++i) b.assign("xdot", i, rates[static_cast<std::size_t>(i)]);
     assign_lower_triangle(b, "M", in.M);
@@ -136,7 +136,7 @@ Routine rhs_routine(const Graph& g, const ImportedEquations& in, const std::vect
 // rows of J are an nq x 2nq row-major matrix, solved in place.
 Routine rhs_jacobian_routine(Graph& g, const ImportedEquations& in, int nq,
                              const Options& options) {
-    RoutineBuilder b(g, api_signature("rhs_jacobian"), bind(solved_accelerations(nq)));
+    RoutineBuilder b(g, api_signature(RoutineId::rhs_jacobian), bind(solved_accelerations(nq)));
     const int nx = 2 * nq;
     const NodeId zero = g.number(0.0);
     const NodeId one = g.number(1.0);
@@ -229,9 +229,29 @@ void add_external_routines(Graph& g, const ir::System& s, const ImportedEquation
                                static_cast<int>(e.args.size()), e.user_jacobian});
 }
 
+/// Every routine the module will have must find the passes it reads on the
+/// System (routines.hpp): rows left empty by a pass that never ran would be
+/// read as malformed equations, or worse, as zeros.
+void check_passes(const ir::System& s, const Options& options) {
+    RoutineSet built{RoutineId::mass_matrix, RoutineId::forcing, RoutineId::jacobians,
+                     RoutineId::outputs,     RoutineId::rhs,     RoutineId::rhs_jacobian};
+    if (options.linear_model && s.nq() > 0)
+        built.insert({RoutineId::linear, RoutineId::state_space, RoutineId::output_matrices});
+    if (!options.sensitivity_params.empty()) built.insert(RoutineId::linear_sensitivities);
+    if (s.tangent_form) built = RoutineSet{};
+    const ir::PassSet tangent{ir::Pass::derive_tangent};
+    if (s.tangent_form && !s.passes.contains_all(tangent))
+        malformed("the tangent form without passes::derive_tangent");
+    built.for_each([&](RoutineId id) {
+        if (!s.passes.contains_all(routine_row(id).needs))
+            malformed(std::string(routine_name(id)) + " needs a pass that has not run");
+    });
+}
+
 } // namespace
 
 Module build_module(const ir::System& s, const Options& options) {
+    check_passes(s, options);
     if (s.tangent_form) {
         Module m;
         m.model = model_info(s);

@@ -27,10 +27,13 @@ public:
         std::string name;
         std::string summary;
         std::vector<Argument> arguments;
+        std::optional<RoutineId> id = std::nullopt; // a routine of the API (routines.hpp)
     };
     RoutineBuilder(const Graph& graph, Signature signature, Binding binding)
         : RoutineBuilder(graph, std::move(signature.name), std::move(signature.summary),
-                         std::move(signature.arguments), std::move(binding)) {}
+                         std::move(signature.arguments), std::move(binding)) {
+        routine_.id = signature.id;
+    }
 
     /// Nodes the routine reads ready-made instead of computing them (e.g. from
     /// a work array a prologue filled): the leaf for such a node, or nullopt.

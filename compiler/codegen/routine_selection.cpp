@@ -23,21 +23,20 @@ std::vector<std::string> callees(const Routine& r) {
 
 } // namespace
 
-void keep_routines(Module& module, const std::vector<std::string>& wanted) {
+void keep_routines(Module& module, RoutineSet wanted) {
     std::set<std::string> keep;
     std::vector<std::string> pending;
-    for (const std::string& name : wanted) {
-        const Routine& r = module.routine(name); // throws for an unknown name
-        if (r.internal) throw diag::InternalError("code generation: '" + name + "' is internal");
-        if (keep.insert(name).second) pending.push_back(name);
-    }
+    bool derivatives = false;
+    wanted.for_each([&](RoutineId id) {
+        const Routine& r = module.routine(id); // throws for a routine the module lacks
+        derivatives = derivatives || routine_row(id).derivative;
+        if (keep.insert(r.name).second) pending.push_back(r.name);
+    });
     // The externals' wrappers (external_wrappers.hpp) call these.
     if (!module.externals.empty()) {
         keep.insert("external_args");
-        for (const char* r :
-             {"jacobians", "rhs_jacobian", "linear", "state_space", "output_matrices"})
-            if (keep.count(r)) keep.insert("external_args_jacobian");
-        if (keep.count("rhs_jacobian")) keep.insert("external_qdd_dw");
+        if (derivatives) keep.insert("external_args_jacobian");
+        if (wanted.contains(RoutineId::rhs_jacobian)) keep.insert("external_qdd_dw");
     }
     // Everything a kept routine calls is kept too, transitively.
     while (!pending.empty()) {

@@ -131,14 +131,10 @@ Routine sensitivity_routine(Graph& g, const LinearSources& in,
     std::string names;
     for (const std::string& name : options.sensitivity_params)
         names += (names.empty() ? "" : ", ") + name;
-    RoutineBuilder b(g, "linear_sensitivities",
-                     "d(M0, C0, K0, Q0)/dp of linear() for p = (" + names +
-                         "): one nq x nq block per parameter, in that order (nq x nu for dQ0)",
-                     point_arguments({argument("dM0", ArgumentKind::output_array),
-                                      argument("dC0", ArgumentKind::output_array),
-                                      argument("dK0", ArgumentKind::output_array),
-                                      argument("dQ0", ArgumentKind::output_array)}),
-                     bind(point_with_acceleration_derivatives()));
+    RoutineBuilder::Signature signature = api_signature(RoutineId::linear_sensitivities);
+    signature.summary += " for p = (" + names +
+                         "): one nq x nq block per parameter, in that order (nq x nu for dQ0)";
+    RoutineBuilder b(g, std::move(signature), bind(point_with_acceleration_derivatives()));
     // Without `a` in dMa_dq (M independent of q) K0 does not involve q''0.
     const bool accelerations = uses_accelerations(g, in.dMa_dq);
     if (accelerations) {

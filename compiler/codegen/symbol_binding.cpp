@@ -79,69 +79,38 @@ std::vector<Argument> point_arguments(std::vector<Argument> outputs) {
     return args;
 }
 
-namespace {
-
-std::vector<Argument> q_form_arguments(std::vector<Argument> outputs) {
-    std::vector<Argument> args{
-        argument("t", ArgumentKind::scalar), argument("q", ArgumentKind::input_array),
-        argument("qd", ArgumentKind::input_array), argument("u", ArgumentKind::input_array),
-        argument("p", ArgumentKind::params)};
-    for (Argument& a : outputs) args.push_back(std::move(a));
-    return args;
-}
-
-std::vector<Argument> x_form_arguments(const char* output) {
-    return {argument("t", ArgumentKind::scalar), argument("x", ArgumentKind::input_array),
-            argument("u", ArgumentKind::input_array), argument("p", ArgumentKind::params),
-            argument(output, ArgumentKind::output_array)};
-}
-
-Argument out(const char* name) {
-    return argument(name, ArgumentKind::output_array);
-}
-
-} // namespace
-
-RoutineBuilder::Signature api_signature(std::string_view name) {
-    if (name == "mass_matrix")
-        return {"mass_matrix",
-                "M(q) of M q'' = F (symmetric, row-major)",
-                {argument("t", ArgumentKind::scalar), argument("q", ArgumentKind::input_array),
-                 argument("u", ArgumentKind::input_array), argument("p", ArgumentKind::params),
-                 out("M")}};
-    if (name == "forcing")
-        return {"forcing", "F(q, q', u, t) of M q'' = F", q_form_arguments({out("F")})};
-    if (name == "jacobians")
-        return {"jacobians", "dF/dq, dF/dq', dF/du (nq x nq, nq x nq, nq x nu)",
-                q_form_arguments({out("dF_dq"), out("dF_dqd"), out("dF_du")})};
-    if (name == "outputs")
-        return {"outputs", "the model's outputs y(q, q', u, t)", q_form_arguments({out("y")})};
-    if (name == "outputs_from_qdd")
-        return {"outputs_from_qdd",
-                "the outputs y(q, q', q'', u, t) at the given q''; outputs passes the q'' of "
-                "rhs",
-                {argument("t", ArgumentKind::scalar), argument("q", ArgumentKind::input_array),
-                 argument("qd", ArgumentKind::input_array),
-                 argument("qdd", ArgumentKind::input_array),
-                 argument("u", ArgumentKind::input_array), argument("p", ArgumentKind::params),
-                 out("y")}};
-    if (name == "rhs")
-        return {"rhs", "x' = [q', M^-1 F] for x = [q, q']", x_form_arguments("xdot")};
-    if (name == "rhs_jacobian")
-        return {"rhs_jacobian", "d(rhs)/dx, 2nq x 2nq, row-major", x_form_arguments("J")};
-    if (name == "linear")
-        return {"linear",
-                "M0 dq'' + C0 dq' + K0 dq = Q0 du about (q0, q0', u0), with q''0 = M0^-1 F0 "
-                "(eq. 25)",
-                point_arguments({out("M0"), out("C0"), out("K0"), out("Q0")})};
-    if (name == "state_space")
-        return {"state_space",
-                "x' = A x + B u linearized about (q0, q0', u0); A 2nq x 2nq, B 2nq x nu",
-                point_arguments({out("A"), out("B")})};
-    if (name == "output_matrices")
-        return {"output_matrices", "dy = C dx + D du about (q0, q0', u0); C ny x 2nq, D ny x nu",
-                point_arguments({out("C"), out("D")})};
-    throw diag::InternalError("code generation: no API function '" + std::string(name) + "'");
+RoutineBuilder::Signature api_signature(RoutineId id) {
+    const RoutineRow& row = routine_row(id);
+    std::vector<Argument> args;
+    auto inputs = [&](std::initializer_list<const char*> names) {
+        for (const char* n : names)
+            args.push_back(argument(n, n[0] == 't'   ? ArgumentKind::scalar
+                                       : n[0] == 'p' ? ArgumentKind::params
+                                                     : ArgumentKind::input_array));
+    };
+    switch (row.form) {
+    case ArgumentForm::t_q_u_p:
+        inputs({"t", "q", "u", "p"});
+        break;
+    case ArgumentForm::t_q_qd_u_p:
+        inputs({"t", "q", "qd", "u", "p"});
+        break;
+    case ArgumentForm::t_q_qd_qdd_u_p:
+        inputs({"t", "q", "qd", "qdd", "u", "p"});
+        break;
+    case ArgumentForm::t_x_u_p:
+        inputs({"t", "x", "u", "p"});
+        break;
+    case ArgumentForm::point:
+        args = point_arguments({});
+        break;
+    case ArgumentForm::p:
+        inputs({"p"});
+        break;
+    }
+    for (const char* o : row.outputs)
+        if (o) args.push_back(argument(o, ArgumentKind::output_array));
+    return {row.name, row.summary, std::move(args), id};
 }
 
 } // namespace yamsc::codegen

@@ -5,9 +5,9 @@
 // are written once.
 #include "codegen/module.hpp"
 #include "codegen/routine_builder.hpp"
+#include "codegen/routines.hpp"
 
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace yamsc::codegen {
@@ -43,11 +43,9 @@ RoutineBuilder::Binding bind(SymbolSource source);
 /// (q0, qd0, u0, p, outputs...): the arguments of the linear model's routines.
 std::vector<Argument> point_arguments(std::vector<Argument> outputs);
 
-/// The name, summary and arguments of a function of the generated API
-/// (mass_matrix, forcing, jacobians, outputs_from_qdd, outputs, rhs, rhs_jacobian, linear,
-/// state_space, output_matrices), in one place for both forms (unrolled and
-/// tangent) so that they cannot drift apart. Throws diag::InternalError for
-/// another name.
-RoutineBuilder::Signature api_signature(std::string_view name);
+/// The name, summary and arguments of a function of the generated API, from
+/// its row of the routine table (codegen/routines.hpp), for both forms
+/// (unrolled and tangent) so that they cannot drift apart.
+RoutineBuilder::Signature api_signature(RoutineId id);
 
 } // namespace yamsc::codegen

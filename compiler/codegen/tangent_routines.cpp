@@ -68,8 +68,8 @@ private:
     }
 
     /// A function of the generated API, with the signature the unrolled form has.
-    RoutineBuilder api(const char* name, SymbolSource names) {
-        return RoutineBuilder(graph_, api_signature(name), bind(std::move(names)));
+    RoutineBuilder api(RoutineId id, SymbolSource names) {
+        return RoutineBuilder(graph_, api_signature(id), bind(std::move(names)));
     }
 
     // ---- internal routines ----------------------------------------------------------------
@@ -253,19 +253,19 @@ private:
 
     // ---- public routines ------------------------------------------------------------------
     Routine mass_matrix() {
-        RoutineBuilder b = api("mass_matrix", SymbolSource{});
+        RoutineBuilder b = api(RoutineId::mass_matrix, SymbolSource{});
         sweep_mass(b, "M", "t", "q", "u");
         return std::move(b).finish(m_.options);
     }
 
     Routine forcing() {
-        RoutineBuilder b = api("forcing", SymbolSource{});
+        RoutineBuilder b = api(RoutineId::forcing, SymbolSource{});
         for (int i = 0; i < nq_; ++i) b.assign("F", i, in_.F[static_cast<std::size_t>(i)]);
         return std::move(b).finish(m_.options);
     }
 
     Routine jacobians() {
-        RoutineBuilder b = api("jacobians", SymbolSource{});
+        RoutineBuilder b = api(RoutineId::jacobians, SymbolSource{});
         zeros(b, "a0"); // with a = 0 the derivative of F - M a is that of F
         prepare_tangent(b, {"t", "q", "qd", "u", "a0"});
         sweep_tangent(b, 0, nq_, false, "dF_dq", 0, nq_, 1.0);
@@ -275,7 +275,7 @@ private:
     }
 
     Routine rhs() {
-        RoutineBuilder b = api("rhs", SymbolSource::state_vector(nq_));
+        RoutineBuilder b = api(RoutineId::rhs, SymbolSource::state_vector(nq_));
         if (nq_ == 0) return std::move(b).finish(m_.options);
         b.local("M", nq_ * nq_);
         for (int i = 0; i < nq_; ++i) b.assign("xdot", i, graph_.symbol({SymbolKind::qd, i}));
@@ -288,7 +288,7 @@ private:
 
     // J = [[0, I], [M^-1 dG/dq, M^-1 dG/dq']] with a = q'' (as in the unrolled form).
     Routine rhs_jacobian() {
-        RoutineBuilder b = api("rhs_jacobian", SymbolSource::state_vector(nq_));
+        RoutineBuilder b = api(RoutineId::rhs_jacobian, SymbolSource::state_vector(nq_));
         if (nq_ == 0) return std::move(b).finish(m_.options);
         const int nx = this->nx();
         b.local("M", nq_ * nq_);
@@ -322,7 +322,7 @@ private:
     }
 
     Routine linear() {
-        RoutineBuilder b = api("linear", SymbolSource::operating_point());
+        RoutineBuilder b = api(RoutineId::linear, SymbolSource::operating_point());
         sweep_mass(b, "M0", "0.0", "q0", "u0");
         factor_at_point(b, "M0");
         prepare_tangent(b, {"0.0", "q0", "qd0", "u0", "qdd0"});
@@ -333,7 +333,7 @@ private:
     }
 
     Routine state_space() {
-        RoutineBuilder b = api("state_space", SymbolSource::operating_point());
+        RoutineBuilder b = api(RoutineId::state_space, SymbolSource::operating_point());
         const int nx = this->nx();
         for (int i = 0; i < nq_; ++i)
             for (int j = 0; j < nx; ++j)
@@ -350,7 +350,7 @@ private:
     }
 
     Routine output_matrices() {
-        RoutineBuilder b = api("output_matrices", SymbolSource::operating_point());
+        RoutineBuilder b = api(RoutineId::output_matrices, SymbolSource::operating_point());
         if (ny_ > 0) zeros(b, "a0");
         if (ny_ > 0) prepare_tangent(b, {"0.0", "q0", "qd0", "u0", "a0"});
         sweep_tangent(b, 0, nx(), true, "C", 0, nx(), 1.0);

@@ -6,14 +6,13 @@
 #include "driver/files.hpp"
 #include "driver/outputs.hpp"
 
-#include "codegen/emit_latex.hpp"
-#include "codegen/latex_printer.hpp"
 #include "codegen/linear_routines.hpp"
 #include "driver/pipeline.hpp"
+#include "driver/targets.hpp"
 #include "model/names.hpp"
-#include "passes/passes.hpp"
 #include <yamsc/atomic_file.hpp>
 
+#include <optional>
 #include <ostream>
 
 namespace yamsc::driver {
@@ -25,10 +24,6 @@ std::string basename(const std::string& path) {
     return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-const char* language_name(Language lang) {
-    return lang == Language::c ? "c" : lang == Language::latex ? "latex" : "cpp";
-}
-
 bool is_identifier(const std::string& s) {
     if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
     for (char c : s)
@@ -36,7 +31,7 @@ bool is_identifier(const std::string& s) {
     return true;
 }
 
-void check_namespace(const std::string& ns, const std::string& lang) {
+void check_namespace(const std::string& ns, const Target& target) {
     std::vector<std::string> parts;
     std::size_t start = 0;
     while (true) {
@@ -45,7 +40,7 @@ void check_namespace(const std::string& ns, const std::string& lang) {
         if (pos == std::string::npos) break;
         start = pos + 2;
     }
-    if (lang == "c" && parts.size() > 1)
+    if (!target.nested_namespaces && parts.size() > 1)
         throw UsageError("--namespace for C output is a single identifier (the function prefix)");
     for (const auto& p : parts) {
         if (!is_identifier(p))
@@ -78,25 +73,6 @@ std::string depfile_text(const CompileOptions& o, const std::vector<std::string>
     return targets + ": " + deps + "\n";
 }
 
-/// `--lang latex`: the equations (exact and approximated) and the linear model.
-void write_latex(const CompileOptions& o, const FrontEnd& fe) {
-    if (!o.header.empty()) throw UsageError("--header does not apply to --lang latex");
-    codegen::LatexInput in;
-    in.system = &*fe.system;
-    for (const model::Approximation& a : fe.model->approximations) {
-        std::string names;
-        for (const auto& s : a.symbols)
-            names += (names.empty() ? "$" : ", $") + codegen::latex::symbol_name(s.name) + "$";
-        in.approximations.push_back(names + " to order " + std::to_string(a.order));
-    }
-    codegen::EmitOptions emit;
-    emit.compiler_version = YAMSC_VERSION;
-    emit.command_line = "--lang latex";
-    runtime::write_file_atomically(o.output, codegen::emit_latex(in, emit));
-    if (!o.depfile.empty())
-        runtime::write_file_atomically(o.depfile, depfile_text(o, fe.model->files_read));
-}
-
 std::string join(const std::vector<std::string>& items) {
     std::string s;
     for (const std::string& item : items) s += (s.empty() ? "" : ",") + item;
@@ -112,41 +88,27 @@ const char* derivatives_name(Derivatives d) {
     return d == Derivatives::unrolled ? "unrolled" : d == Derivatives::tangent ? "tangent" : "auto";
 }
 
-/// The module options from the command line; parameter names are checked
-/// against the model so that a misspelt one is an error, not a silent no-op.
-/// The sensitivities' parameter derivatives are derived here (a pass on `s`).
-codegen::Options module_options(const CompileOptions& o, ir::System& s) {
+/// The module options from the command line (--sensitivities: their
+/// parameter derivatives are passes of the front end).
+codegen::Options module_options(const CompileOptions& o) {
     codegen::Options options;
-    std::vector<std::size_t> indices;
-    if (!o.sensitivities.empty() && !s.externals.empty())
-        throw UsageError("--sensitivities: the model declares external functions, whose "
-                         "parameter derivatives are not supported yet");
-    for (const std::string& name : o.sensitivities) {
-        std::size_t i = 0;
-        while (i < s.params.size() && s.params[i].name != name) ++i;
-        if (i == s.params.size())
-            throw UsageError("--sensitivities: '" + name + "' is not a parameter of the model");
-        options.sensitivity_params.push_back(name);
-        indices.push_back(i);
-    }
-    if (!indices.empty()) passes::parameter_derivatives(s, indices);
+    options.sensitivity_params = o.sensitivities;
     return options;
 }
 
 /// --jacobians; sensitivities are formed from the unrolled Jacobians (the CLI
-/// refuses them with --jacobians tangent).
-/// The LaTeX document prints M and the unrolled Jacobians, whatever the size.
-Derivatives derivatives_of(const CompileOptions& o) {
-    if (!o.sensitivities.empty() || (o.dump == Dump::none && o.lang == Language::latex))
-        return Derivatives::unrolled;
+/// refuses them with --jacobians tangent). A target that prints the System, not
+/// the code module (LaTeX), prints M and the unrolled Jacobians, whatever the size.
+Derivatives derivatives_of(const CompileOptions& o, const Target& target) {
+    if (!o.sensitivities.empty() || !target.prints_module) return Derivatives::unrolled;
     return o.jacobians.value_or(Derivatives::automatic);
 }
 
 } // namespace
 
 int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
-    const std::string lang = o.dump == Dump::none ? language_name(o.lang) : "cpp";
-    if (!o.name_space.empty()) check_namespace(o.name_space, lang);
+    const Target& target = driver::target(o.dump == Dump::none ? o.lang : Language::cpp);
+    if (!o.name_space.empty()) check_namespace(o.name_space, target);
     // --dump prints and writes no file.
     const std::vector<NamedFile> output_files =
         o.dump == Dump::none ? std::vector<NamedFile>{{"-o", o.output},
@@ -163,8 +125,14 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
                   : o.dump == Dump::model ? Until::model
                                           : Until::jacobians;
     FrontEnd fe = run_front_end(
-        o.model, until, diags, progress, derivatives_of(o),
-        [&](const model::Model& m) { check_outputs(data_files_of(m), output_files); });
+        o.model, until, diags, progress,
+        DerivativeRequest(derivatives_of(o, target), o.sensitivities), [&](const model::Model& m) {
+            check_outputs(data_files_of(m), output_files);
+            if (!o.sensitivities.empty() && !m.externals.empty())
+                throw UsageError("--sensitivities: the model declares external "
+                                 "functions, whose parameter derivatives are not "
+                                 "supported yet");
+        });
     err << diags.render();
     if (diags.has_errors()) return 1;
     if (o.jacobians == Derivatives::tangent && fe.system && !fe.system->tangent_form)
@@ -179,17 +147,17 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
         out << model::dump(*fe.model);
         return 0;
     }
-    if (lang == "latex") {
-        write_latex(o, fe);
-        progress("wrote " + o.output);
-        return 0;
-    }
-    codegen::Module module = codegen::build_module(*fe.system, module_options(o, *fe.system));
-    codegen::add_operating_point(module, *fe.system);
-    progress("built the code module (common subexpressions shared)");
-    if (o.dump == Dump::module) {
-        out << codegen::dump(module);
-        return 0;
+    if (!o.header.empty() && !target.header)
+        throw UsageError(std::string("--header does not apply to --lang ") + target.name);
+    std::optional<codegen::Module> module;
+    if (target.prints_module) {
+        module = codegen::build_module(*fe.system, module_options(o));
+        codegen::add_operating_point(*module, *fe.system);
+        progress("built the code module (common subexpressions shared)");
+        if (o.dump == Dump::module) {
+            out << codegen::dump(*module);
+            return 0;
+        }
     }
     codegen::EmitOptions emit;
     emit.namespace_name = o.name_space;
@@ -199,15 +167,16 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
     // Only the options that shape the output are recorded, so identical inputs give
     // identical bytes wherever the files are written.
     emit.command_line =
-        "--lang " + lang + (o.name_space.empty() ? "" : " --namespace " + o.name_space) +
+        std::string("--lang ") + target.name +
+        (o.name_space.empty() ? "" : " --namespace " + o.name_space) +
         (o.header.empty() ? "" : " --header " + emit.header_name) +
         (!o.real                             ? ""
          : *o.real == Real::single_precision ? " --real float"
                                              : " --real double") +
         (!o.jacobians ? "" : std::string(" --jacobians ") + derivatives_name(*o.jacobians)) +
         (o.sensitivities.empty() ? "" : " --sensitivities " + join(o.sensitivities));
-    codegen::EmittedFiles files =
-        lang == "c" ? codegen::emit_c(module, emit) : codegen::emit_cpp(module, emit);
+    const codegen::EmittedFiles files =
+        target.emit(TargetInput{o, fe, module ? &*module : nullptr, emit});
     // Both written before either is replaced, the header renamed first: a source
     // is never left referring to a missing or stale header.
     std::vector<std::pair<std::string, std::string>> outputs;

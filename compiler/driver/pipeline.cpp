@@ -7,7 +7,7 @@
 #include "driver/files.hpp"
 #include "model/names.hpp"
 #include "parse/parser.hpp"
-#include "passes/passes.hpp"
+#include "passes/pipeline.hpp"
 #include "passes/taylor.hpp"
 
 #include <chrono>
@@ -51,9 +51,8 @@ std::string timed(const char* what, double s) {
     return buf;
 }
 
-/// The model's `approx` groups, in order, as passes on the System. Reports what
-/// cannot be expanded at the group's `approx` line; false then.
-bool approximate(const model::Model& m, ir::System& s, diag::Diagnostics& diags) {
+/// The model's `approx` groups, in order, as the passes' symbol groups.
+std::vector<passes::PassPlan::Approximation> approximations(const model::Model& m) {
     // The first channel of each input (its derivatives are channels of their own).
     std::vector<int> first_channel;
     int channel = 0;
@@ -61,30 +60,48 @@ bool approximate(const model::Model& m, ir::System& s, diag::Diagnostics& diags)
         first_channel.push_back(channel);
         channel += in.order + 1;
     }
+    std::vector<passes::PassPlan::Approximation> out;
     for (const model::Approximation& group : m.approximations) {
-        std::vector<ir::SymbolRef> symbols;
-        std::string names;
+        passes::PassPlan::Approximation a;
+        a.order = group.order;
         for (const auto& sym : group.symbols) {
-            names += (names.empty() ? "" : ", ") + sym.name;
             if (sym.kind == model::NameKind::param)
-                symbols.push_back({ir::SymbolKind::param, sym.index});
+                a.group.push_back({ir::SymbolKind::param, sym.index});
             else if (sym.kind == model::NameKind::dof)
-                symbols.push_back({ir::SymbolKind::q, sym.index});
+                a.group.push_back({ir::SymbolKind::q, sym.index});
             else
-                symbols.push_back(
+                a.group.push_back(
                     {ir::SymbolKind::input, first_channel.at(static_cast<std::size_t>(sym.index))});
         }
-        try {
-            passes::approximate(s, symbols, group.order);
-        } catch (const passes::NotExpandable& x) {
-            diags.error(x.not_supported ? diag::Kind::NotSupported : diag::Kind::InvalidValue,
-                        group.loc,
-                        "approx: cannot expand the equations in " + names + " to order " +
-                            std::to_string(group.order) + ": they contain " + x.what());
-            return false;
-        }
+        out.push_back(std::move(a));
     }
-    return true;
+    return out;
+}
+
+/// Reports what an `approx` group cannot expand at the group's line.
+void report(const model::Approximation& group, const passes::NotExpandable& x,
+            diag::Diagnostics& diags) {
+    std::string names;
+    for (const auto& sym : group.symbols) names += (names.empty() ? "" : ", ") + sym.name;
+    diags.error(x.not_supported ? diag::Kind::NotSupported : diag::Kind::InvalidValue, group.loc,
+                "approx: cannot expand the equations in " + names + " to order " +
+                    std::to_string(group.order) + ": they contain " + x.what());
+}
+
+/// --sensitivities: the parameters' indices in the System; a misspelt name is an
+/// error, not a silent no-op.
+std::vector<std::size_t> parameter_indices(const ir::System& s,
+                                           const std::vector<std::string>& names) {
+    std::vector<std::size_t> indices;
+    for (const std::string& name : names) {
+        std::size_t i = 0;
+        while (i < s.params.size() && s.params[i].name != name) ++i;
+        if (i == s.params.size())
+            throw diag::UsageError("--sensitivities: '" + name +
+                                   "' is not a parameter of the model");
+        indices.push_back(i);
+    }
+    return indices;
 }
 
 /// The externals as the IR keeps them: their input channels follow every
@@ -136,7 +153,7 @@ std::string content_digest(const diag::SourceFile& source, const model::Model& m
 
 FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& diags,
                        const std::function<void(const std::string&)>& progress,
-                       Derivatives derivatives,
+                       const DerivativeRequest& derivatives,
                        const std::function<void(const model::Model&)>& checked) {
     FrontEnd fe;
     fe.source = read_source(path, diags);
@@ -171,11 +188,11 @@ bool uses_tangent_form(const model::Model& m, Until until, Derivatives derivativ
 void continue_front_end(FrontEnd& fe, const std::string& path, Until until,
                         diag::Diagnostics& diags,
                         const std::function<void(const std::string&)>& progress,
-                        Derivatives derivatives) {
+                        const DerivativeRequest& derivatives) {
     if (!fe.model || !fe.source)
         throw diag::InternalError("continue_front_end needs a checked model");
     Stopwatch clock;
-    const bool tangent = uses_tangent_form(*fe.model, until, derivatives);
+    const bool tangent = uses_tangent_form(*fe.model, until, derivatives.form);
     const model::Model derived = model::with_external_channels(*fe.model);
     derivation::DerivationRequest request;
     request.model = &derived;
@@ -194,36 +211,42 @@ void continue_front_end(FrontEnd& fe, const std::string& path, Until until,
         progress(timed("derived the equations of motion", before + derived_system.derive_seconds));
         progress(timed("imported the equations into the IR", clock.seconds()));
     }
-    finish_front_end(fe, until, tangent, diags, progress, clock.seconds());
+    finish_front_end(fe, until, tangent, diags, progress, clock.seconds(),
+                     derivatives.sensitivities);
 }
 
 void finish_front_end(FrontEnd& fe, Until until, bool tangent, diag::Diagnostics& diags,
                       const std::function<void(const std::string&)>& progress,
-                      double seconds_so_far) {
+                      double seconds_so_far, const std::vector<std::string>& sensitivities) {
     if (!fe.model || !fe.system)
         throw diag::InternalError("finish_front_end needs a checked model and its System");
     Stopwatch clock;
     auto say = [&](const char* what) {
         if (progress) progress(timed(what, seconds_so_far + clock.seconds()));
     };
-    const bool externals = !fe.model->externals.empty();
-    if (externals) {
-        fe.system->externals = system_externals(*fe.model);
-        passes::separate_externals(*fe.system);
+    passes::PassPlan plan;
+    plan.externals = !fe.model->externals.empty();
+    if (plan.externals) fe.system->externals = system_externals(*fe.model);
+    plan.approximations = approximations(*fe.model);
+    if (until == Until::jacobians) {
+        using D = passes::PassPlan::Derivatives;
+        plan.derivatives = tangent ? D::tangent : D::unrolled;
+        plan.sensitivity_params = parameter_indices(*fe.system, sensitivities);
     }
-    if (!fe.model->approximations.empty()) {
-        if (!approximate(*fe.model, *fe.system, diags)) return;
-        say("approximated (approx)");
-    }
-    if (until != Until::jacobians) return;
-    if (tangent) {
-        passes::derive_tangent(*fe.system);
-        say("derived the tangent (directional derivatives)");
-    } else {
-        passes::derive_jacobians(*fe.system);
-        passes::output_jacobians(*fe.system);
-        if (externals) passes::external_jacobians(*fe.system);
-        say("derived the Jacobians");
+    // The progress lines name stages, each ending with one of these passes.
+    const ir::Pass jacobians_done =
+        plan.externals ? ir::Pass::external_jacobians : ir::Pass::output_jacobians;
+    std::size_t approximated = 0;
+    auto after = [&](ir::Pass p) {
+        if (p == ir::Pass::approximate && ++approximated == plan.approximations.size())
+            say("approximated (approx)");
+        if (p == ir::Pass::derive_tangent) say("derived the tangent (directional derivatives)");
+        if (p == jacobians_done) say("derived the Jacobians");
+    };
+    try {
+        passes::run_pipeline(*fe.system, plan, after);
+    } catch (const passes::NotExpandable& x) {
+        report(fe.model->approximations.at(x.group), x, diags);
     }
 }
 

@@ -24,13 +24,23 @@ struct FrontEnd {
 
 enum class Until { ast, model, system, jacobians };
 
+/// What the passes derive at Until::jacobians: the form of the Jacobians, and
+/// the parameters (by name) whose derivatives of the linear model are derived
+/// too (--sensitivities).
+struct DerivativeRequest {
+    DerivativeRequest(Derivatives f = Derivatives::automatic, std::vector<std::string> p = {})
+        : form(f), sensitivities(std::move(p)) {}
+    Derivatives form;
+    std::vector<std::string> sensitivities;
+};
+
 /// Runs the stages up to `until`. `progress` (may be empty) receives a line per stage.
 /// `checked` (may be empty) sees the checked model before the equations are
 /// derived: the data files it read are known there, and an exception from it
 /// stops the run before the expensive stages.
 FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& diags,
                        const std::function<void(const std::string&)>& progress = {},
-                       Derivatives derivatives = Derivatives::automatic,
+                       const DerivativeRequest& derivatives = {},
                        const std::function<void(const model::Model&)>& checked = {});
 
 /// Runs the stages after the checker up to `until` on a FrontEnd that stopped at
@@ -38,7 +48,7 @@ FrontEnd run_front_end(const std::string& path, Until until, diag::Diagnostics& 
 void continue_front_end(FrontEnd& fe, const std::string& path, Until until,
                         diag::Diagnostics& diags,
                         const std::function<void(const std::string&)>& progress = {},
-                        Derivatives derivatives = Derivatives::automatic);
+                        const DerivativeRequest& derivatives = {});
 
 /// Whether the derivatives of `m` up to `until` take the tangent form (no M is
 /// derived then). Throws diag::UsageError for a combination that cannot be.
@@ -46,11 +56,15 @@ bool uses_tangent_form(const model::Model& m, Until until, Derivatives derivativ
 
 /// The stages after the derivation: the externals' channels, `approx`, and up to
 /// Until::jacobians the derivatives, on `fe.system` (derived with M unless
-/// `tangent`). continue_front_end ends with it; tests that derive in-process
-/// (to keep the GiNaC equations) call it too. `seconds_so_far` starts its clock.
+/// `tangent`), and the derivatives of the linear model with respect to the
+/// parameters named in `sensitivities` (passes/pipeline.hpp runs them all).
+/// continue_front_end ends with it; tests that derive in-process (to keep the
+/// GiNaC equations) call it too. `seconds_so_far` starts its clock. Throws
+/// diag::UsageError for a name in `sensitivities` that is not a parameter.
 void finish_front_end(FrontEnd& fe, Until until, bool tangent, diag::Diagnostics& diags,
                       const std::function<void(const std::string&)>& progress = {},
-                      double seconds_so_far = 0.0);
+                      double seconds_so_far = 0.0,
+                      const std::vector<std::string>& sensitivities = {});
 
 /// The C prototypes of the model's external functions, as the generated code
 /// declares them (codegen::external_prototypes); "" without any. The user's

@@ -4,6 +4,7 @@
 // them, as rows of node ids into one canonical Graph. Made once from the
 // derivation's GiNaC expressions (compiler/lower/), transformed by the passes
 // (compiler/passes/), lowered to code by codegen.
+#include "ir/enum_set.hpp"
 #include "ir/graph.hpp"
 
 #include <optional>
@@ -75,6 +76,21 @@ struct External {
     Matrix dargs_du;            // nargs x (declared channels)
 };
 
+/// The passes (compiler/passes/passes.hpp) as values. Each declares what it
+/// adds to a System and which passes must have run before it
+/// (passes/pass_order.hpp); a System records the passes that ran on it.
+enum class Pass : std::uint8_t {
+    separate_externals,    // adds: externals[k].args
+    approximate,           // adds: exact_M, exact_F; replaces M and F
+    derive_jacobians,      // adds: dF_dq, dF_dqd, dF_du, dMa_dq (and Ma)
+    output_jacobians,      // adds: C, D
+    derive_tangent,        // adds: dG, dY, tangent_form
+    external_jacobians,    // adds: externals[k].dargs_dq, dargs_dqd, dargs_du
+    parameter_derivatives, // adds: sensitivity_params, sensitivities
+};
+inline constexpr std::size_t pass_count = 7;
+using PassSet = EnumSet<Pass, pass_count>;
+
 struct System {
     std::string model_name;
     std::string title;
@@ -120,6 +136,10 @@ struct System {
 
     /// The external functions; their results are the last input channels.
     std::vector<External> externals;
+
+    /// The passes that ran on this System (passes::enter records them), so
+    /// that prerequisites are checked, not inferred from empty rows.
+    PassSet passes;
 
     int nq() const { return static_cast<int>(dofs.size()); }
     int nu() const { return static_cast<int>(inputs.size()); }

@@ -2,6 +2,7 @@
 // differentiated like outputs (forward mode, one pass per variable).
 #include "diag/diagnostics.hpp"
 #include "passes/forward.hpp"
+#include "passes/pass_order.hpp"
 #include "passes/passes.hpp"
 
 namespace yamsc::passes {
@@ -11,6 +12,7 @@ using ir::NodeId;
 using ir::Row;
 
 void separate_externals(ir::System& s) {
+    enter(s, ir::Pass::separate_externals);
     std::size_t nargs = 0;
     for (const ir::External& e : s.externals) nargs += e.args.size();
     if (nargs > s.outputs.size())
@@ -30,6 +32,7 @@ void separate_externals(ir::System& s) {
 }
 
 void external_jacobians(ir::System& s) {
+    enter(s, ir::Pass::external_jacobians);
     const std::size_t nq = s.dofs.size(), nu = static_cast<std::size_t>(s.declared_nu());
     for (ir::External& e : s.externals) {
         e.dargs_dq.assign(e.args.size(), Row(nq));

@@ -3,6 +3,7 @@
 // instead of growing as copies of F.
 #include "diag/diagnostics.hpp"
 #include "passes/forward.hpp"
+#include "passes/pass_order.hpp"
 #include "passes/passes.hpp"
 
 namespace yamsc::passes {
@@ -12,6 +13,7 @@ using ir::Row;
 using ir::SymbolKind;
 
 void derive_jacobians(ir::System& s) {
+    enter(s, ir::Pass::derive_jacobians);
     ir::Graph& g = s.graph;
     const std::size_t nq = s.dofs.size(), nu = s.inputs.size();
     if (s.F.size() != nq || (s.Ma.empty() && s.M.size() != nq))

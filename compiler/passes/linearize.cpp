@@ -5,6 +5,7 @@
 // point) are assembled by the code generator from these rows.
 #include "diag/diagnostics.hpp"
 #include "passes/forward.hpp"
+#include "passes/pass_order.hpp"
 #include "passes/passes.hpp"
 
 #include <algorithm>
@@ -16,6 +17,7 @@ using ir::NodeId;
 using ir::Row;
 
 void output_jacobians(ir::System& s) {
+    enter(s, ir::Pass::output_jacobians);
     ir::Graph& g = s.graph;
     const std::size_t nq = s.dofs.size(), nu = s.inputs.size(), ny = s.outputs.size();
     s.C.assign(ny, Row(2 * nq));
@@ -33,6 +35,7 @@ void output_jacobians(ir::System& s) {
 }
 
 void parameter_derivatives(ir::System& s, const std::vector<std::size_t>& params) {
+    enter(s, ir::Pass::parameter_derivatives);
     ir::Graph& g = s.graph;
     const std::size_t nq = s.dofs.size(), nu = s.inputs.size();
     if (s.dF_dq.size() != nq || s.dF_dqd.size() != nq || s.dF_du.size() != nq ||

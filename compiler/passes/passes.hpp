@@ -2,6 +2,8 @@
 // The passes: IR to IR. Each adds rows of derivatives to an ir::System, built
 // by forward mode (passes/forward.hpp) in the System's own graph, so every
 // derivative shares the nodes of the equations and of the other derivatives.
+// What each adds and needs is a row of passes/pass_order.hpp, checked when it
+// runs; passes/pipeline.hpp runs them in order for the front end.
 #include "ir/system.hpp"
 
 #include <cstddef>

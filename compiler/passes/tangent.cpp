@@ -5,6 +5,7 @@
 // O(n²) nodes here where the unrolled Jacobians cost O(n³).
 #include "diag/diagnostics.hpp"
 #include "passes/forward.hpp"
+#include "passes/pass_order.hpp"
 #include "passes/passes.hpp"
 
 namespace yamsc::passes {
@@ -12,6 +13,7 @@ namespace yamsc::passes {
 using ir::NodeId;
 
 void derive_tangent(ir::System& s) {
+    enter(s, ir::Pass::derive_tangent);
     ir::Graph& g = s.graph;
     const std::size_t nq = s.dofs.size(), nu = s.inputs.size();
     if (s.Ma.size() != nq || s.F.size() != nq)

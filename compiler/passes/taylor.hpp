@@ -26,6 +26,7 @@ struct NotExpandable : std::runtime_error {
     NotExpandable(const std::string& what, bool unsupported)
         : std::runtime_error(what), not_supported(unsupported) {}
     bool not_supported;
+    std::size_t group = 0; // the `approx` group's index (passes::run_pipeline)
 };
 
 /// The Taylor polynomial of nodes about 0 in `group` (symbols that are

@@ -4,15 +4,25 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
 
 namespace yamsc::python {
 
 namespace {
 
-/// Every routine of the ABI: Python may call any of them.
-std::vector<std::string> all_routines() {
-    return {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"};
+/// `routines=` as the ABI's routines; none given: every one (Python may call any).
+codegen::RoutineSet routine_set(const std::vector<std::string>& names) {
+    if (names.empty()) return codegen::abi_routines();
+    codegen::RoutineSet set;
+    for (const std::string& name : names) {
+        const std::optional<codegen::RoutineId> id = codegen::routine_named(name);
+        if (!id || !codegen::abi_routines().contains(*id))
+            throw std::invalid_argument("the model ABI has no routine '" + name + "'");
+        set.insert(*id);
+    }
+    return set;
 }
 
 /// `link length [m]` -> `m`: the bracket at the end of a doc comment.
@@ -35,11 +45,11 @@ ModelHandle ModelHandle::from_source(const std::string& path, const std::string&
                                      const std::vector<driver::Assignment>& set,
                                      std::vector<std::string> routines,
                                      const std::string& external) {
-    if (routines.empty()) routines = all_routines();
+    const codegen::RoutineSet wanted = routine_set(routines);
     std::ostringstream err;
     std::optional<driver::Loaded> loaded;
     try {
-        loaded = driver::load(path, set, sid, false, err, {}, routines, external);
+        loaded = driver::load(path, set, sid, false, err, {}, wanted, external);
     } catch (const std::exception& e) {
         // UserError (a --set name that does not exist), a failed compile, ...
         throw LoadError(err.str() + e.what());

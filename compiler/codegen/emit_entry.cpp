@@ -1,0 +1,24 @@
+#include "codegen/emit_entry.hpp"
+
+#include "codegen/header_comment.hpp"
+#include "codegen/text.hpp"
+#include "diag/diagnostics.hpp"
+
+namespace yamsc::codegen {
+
+std::string checked_scope(const Module& module, const EmitOptions& options, ScopeName rule) {
+    const std::string scope =
+        options.namespace_name.empty() ? module.model.name : options.namespace_name;
+    if (rule == ScopeName::cpp_namespace && !is_cpp_namespace(scope))
+        throw diag::InternalError("code generation: '" + scope + "' is not a C++ namespace name");
+    if (rule == ScopeName::c_identifier && !is_c_identifier(scope))
+        throw diag::InternalError("code generation: '" + scope + "' is not a C identifier");
+    for (const ParamInfo& p : module.model.params)
+        if (!is_c_identifier(p.name))
+            throw diag::InternalError("code generation: parameter name '" + p.name +
+                                      "' is not an identifier");
+    check_header_name(options.header_name);
+    return scope;
+}
+
+} // namespace yamsc::codegen
