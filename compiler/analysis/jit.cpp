@@ -19,7 +19,9 @@
 #include <stdexcept>
 #include <unistd.h>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using driver::digest;
 
 namespace {
 
@@ -172,4 +174,4 @@ std::unique_ptr<runtime::SharedModel> load_compiled_model(const ir::System& eq,
         id, [&]() { return eq; }, options);
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

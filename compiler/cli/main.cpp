@@ -1,9 +1,11 @@
 // yamsc: the command line. Parses arguments into the driver's option structs,
 // runs the command, and maps errors to exit statuses: 0 success, 1 user error,
 // 2 usage error, 70 internal error.
+#include "analysis/commands.hpp"
 #include "diag/diagnostics.hpp"
 #include "driver/bindings.hpp"
 #include "driver/commands.hpp"
+#include "openfast/from_openfast.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -166,6 +168,8 @@ std::vector<std::string> comma_list(const std::string& text) {
 
 int run(int argc, char** argv) {
     using namespace yamsc::driver;
+    using namespace yamsc::analysis;
+    using yamsc::openfast::from_openfast;
     if (argc < 2) throw UsageError("no command given");
     std::string cmd = argv[1];
     if (cmd == "--help" || cmd == "-h") {

@@ -13,7 +13,9 @@
 #include <filesystem>
 #include <set>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
+
+using driver::read_source;
 
 namespace fs = std::filesystem;
 using diag::Kind;
@@ -428,4 +430,4 @@ std::optional<OpenFastDeck> read_openfast_deck(const std::string& path, diag::Di
     return deck;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
 
 /// One `value  key  - comment` line of an OpenFAST input file.
 struct DeckEntry {
@@ -61,4 +61,4 @@ std::optional<OpenFastDeck> read_openfast_deck(const std::string& path, diag::Di
 /// The entries of an OpenFAST input file (not its tables, not its OutList block).
 std::vector<DeckEntry> scan_deck_entries(const diag::SourceFile& file);
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

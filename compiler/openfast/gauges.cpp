@@ -10,7 +10,9 @@
 #include <cmath>
 #include <cstdlib>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
+
+using driver::read_source;
 
 namespace {
 
@@ -131,4 +133,4 @@ std::string gauge_outputs(const OpenFastDeck& deck, bool flexible_tower, bool fl
     return out;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
 
 /// The gauge nodes of the ElastoDyn file (element numbers, 1-based), as many as
 /// NTwGages and NBlGages say; empty lists when they are 0.
@@ -24,4 +24,4 @@ GaugeNodes read_gauge_nodes(const diag::SourceFile& elastodyn);
 std::string gauge_outputs(const OpenFastDeck& deck, bool flexible_tower, bool flexible_blades,
                           diag::Diagnostics& diags);
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
+
+using driver::read_source;
 
 namespace {
 
@@ -149,4 +151,4 @@ std::optional<RigidProperties> rigid_tower(const OpenFastDeck& deck, diag::Diagn
     return tower.about_cm();
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

@@ -8,7 +8,7 @@
 #include <array>
 #include <optional>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
 
 struct RigidProperties {
     double mass = 0;
@@ -25,4 +25,4 @@ std::optional<RigidProperties> rigid_rotor(const OpenFastDeck& deck, diag::Diagn
 /// The tower as a rigid body in its base frame (z up), `length` = TowerHt - TowerBsHt.
 std::optional<RigidProperties> rigid_tower(const OpenFastDeck& deck, diag::Diagnostics& diags);
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast
