@@ -531,7 +531,7 @@ TEST_CASE("Campbell diagram over wind speed: trimmed at each scheduled point, to
 }
 
 #ifdef YAMSC_ROSCO_DISCON
-// ROSCO itself (controllers/rosco), with its NREL 5-MW DISCON.IN, as OpenFAST's
+// ROSCO itself (third_party/rosco), with its NREL 5-MW DISCON.IN, as OpenFAST's
 // reference runs used it: the `rosco` test runs this case (skipped otherwise
 // here, since it needs the Fortran build).
 TEST_CASE("ROSCO in the loop: steady operation at 16 and 8 m/s against OpenFAST + ROSCO" *
