@@ -4,7 +4,7 @@ set -euo pipefail
 packages=(build-essential cmake pkg-config libginac-dev libcln-dev tao-pegtl-dev libeigen3-dev
           libfmt-dev libsundials-dev doctest-dev python3 python3-sympy python3-numpy
           pybind11-dev python3-pybind11 python3-pytest python3-pandas # the Python module (docs/python.md)
-          gfortran # ROSCO, the reference controller (controllers/rosco/README.md)
+          gfortran # ROSCO, the reference controller (third_party/rosco/README.md)
           python3-distributed # yamsc.dask (docs/batch.md); its test is skipped without it
           clang libclang-rt-14-dev) # clang + libFuzzer: the fuzz targets (docs/robustness.md)
 missing=()

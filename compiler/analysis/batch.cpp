@@ -5,10 +5,10 @@
 // arguments), and each thread binds each case's parameters in its own copy.
 #include "analysis/batch_manifest.hpp"
 #include "analysis/batch_summary.hpp"
+#include "analysis/commands.hpp"
 #include "analysis/loaded_model.hpp"
 #include "analysis/sim_case.hpp"
 #include "diag/diagnostics.hpp"
-#include "driver/commands.hpp"
 #include "driver/files.hpp"
 
 #include <yamsc/atomic_file.hpp>
@@ -35,7 +35,12 @@
 #include <thread>
 #include <unistd.h>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using diag::UsageError;
+using driver::BatchOptions;
+using driver::Channels;
+using driver::digest;
 
 namespace {
 
@@ -469,4 +474,4 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
     return failed ? 1 : 0;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -9,7 +9,12 @@
 #include <sstream>
 #include <unistd.h>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using driver::Assignment;
+using driver::parse_assignments;
+using driver::parse_value;
+using driver::SimMethod;
 
 namespace {
 
@@ -283,4 +288,4 @@ BatchCase case_of(const Manifest& m, const ManifestRow& row) {
     return c;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

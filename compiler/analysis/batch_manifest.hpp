@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 /// A located error of one case: `where` is `manifest:line:col`.
 struct CaseError : std::runtime_error {
@@ -49,7 +49,7 @@ Manifest read_manifest(const std::string& path);
 /// and the options of `yamsc sim` it stands for (files resolved likewise).
 struct BatchCase {
     std::string id;
-    SimOptions sim;
+    driver::SimOptions sim;
     /// Where each --set/--ic/--u name was given, to locate an unknown name.
     std::map<std::string, std::string> set_at, ic_at, u_at;
     std::string model_at, row_at;
@@ -60,4 +60,4 @@ struct BatchCase {
 /// The case of a well-formed row; throws CaseError at the offending field.
 BatchCase case_of(const Manifest& m, const ManifestRow& row);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -2,7 +2,7 @@
 // (`summary-K-of-N.csv`, written by `yamsc batch --shard K/N`) as one summary,
 // in manifest order: the same file a single run writes.
 #include "analysis/batch_summary.hpp"
-#include "driver/commands.hpp"
+#include "analysis/commands.hpp"
 
 #include <yamsc/atomic_file.hpp>
 
@@ -13,7 +13,10 @@
 #include <ostream>
 #include <set>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using diag::UsageError;
+using driver::BatchMergeOptions;
 
 namespace {
 
@@ -80,4 +83,4 @@ int batch_merge(const BatchMergeOptions& o, std::ostream& out, std::ostream& err
     return failed ? 1 : 0;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

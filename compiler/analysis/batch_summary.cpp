@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 const char* const summary_header = "row,id,status,final,message,wall_s";
 
@@ -126,4 +126,4 @@ std::optional<CaseSummary> read_record(const std::string& path, const std::strin
     return s;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

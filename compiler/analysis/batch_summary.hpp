@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 struct CaseSummary {
     int row = 0;    // 1-based data row of the manifest
@@ -37,4 +37,4 @@ std::optional<CaseSummary> read_record(const std::string& path, const std::strin
 /// One line of text (newlines of a multi-line message become " | ").
 std::string one_line(const std::string& text);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

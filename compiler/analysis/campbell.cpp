@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 namespace {
 
@@ -165,4 +165,4 @@ std::string campbell_svg(const std::string& title, const std::string& name,
     return out + "</svg>\n";
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 /// The modes at one value of the swept parameter, sorted by frequency.
 struct CampbellRow {
@@ -27,4 +27,4 @@ std::string campbell_csv(const std::string& name, const std::vector<CampbellRow>
 std::string campbell_svg(const std::string& title, const std::string& name,
                          const std::vector<CampbellRow>& rows);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -10,7 +10,9 @@
 #include <algorithm>
 #include <cmath>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using diag::UserError;
 
 int Table::find(std::string_view name) const {
     for (std::size_t i = 0; i < columns.size(); ++i)
@@ -233,4 +235,4 @@ void write_table_csv(const Table& table, const std::string& path) {
     runtime::write_file_atomically(path, [&](std::ostream& out) { write_table_csv(table, out); });
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

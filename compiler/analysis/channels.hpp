@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 /// Named columns of equal length; column 0 is time.
 struct Table {
@@ -78,4 +78,4 @@ void write_table_csv(const Table& table, std::ostream& out);
 /// Writes atomically; throws std::runtime_error on failure.
 void write_table_csv(const Table& table, const std::string& path);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -10,7 +10,9 @@
 #include <fstream>
 #include <sstream>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using diag::UserError;
 
 namespace {
 
@@ -209,4 +211,4 @@ std::string format_comparison(const Comparison& c, const std::string& reference_
     return out.str();
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

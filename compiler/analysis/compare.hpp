@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 /// Reads a table of numbers: CSV (`,` or `;`) or whitespace/tab separated, with a row
 /// of column names (`Time_[s]` or `Time`, optionally followed by a row of units in
@@ -49,4 +49,4 @@ std::vector<double> unwrap(std::vector<double> values, double period);
 /// Linear interpolation of (t, y) at `at`; t rising; constant beyond the ends.
 double interpolate(const std::vector<double>& t, const std::vector<double>& y, double at);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
@@ -171,4 +171,4 @@ simulate_with_controller(const runtime::ModelView& v, const runtime::SimulationO
     return result;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

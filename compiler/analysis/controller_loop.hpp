@@ -17,7 +17,7 @@
 
 #include <string>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 /// The actuators between the controller's demands and the model's inputs:
 /// first-order lags with these time constants [s], or ideal (0: the demand
@@ -42,4 +42,4 @@ simulate_with_controller(const runtime::ModelView& view, const runtime::Simulati
 /// The root of a run's files: `output` without its extension ("yamsc" when empty).
 std::string output_root_of(const std::string& output);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

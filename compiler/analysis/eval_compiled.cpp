@@ -9,7 +9,11 @@
 
 #include <ostream>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using driver::EvalOptions;
+using driver::sized;
+namespace json = driver::json;
 
 int eval_compiled(const EvalOptions& o, std::ostream& out, std::ostream& err) {
     auto loaded = load(o.model, o.set, o.sid, false, err, {},
@@ -37,4 +41,4 @@ int eval_compiled(const EvalOptions& o, std::ostream& out, std::ostream& err) {
     return 0;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -15,7 +15,10 @@
 #include <sstream>
 #include <unistd.h>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using driver::digest;
+using driver::external_prototypes;
 namespace {
 
 bool ends_with(const std::string& s, const std::string& tail) {
@@ -164,4 +167,4 @@ std::optional<ExternalLibrary> load_external_library(const model::Model& m, cons
     return lib;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 struct ExternalLibrary {
     std::string path; // the shared library loaded
@@ -31,4 +31,4 @@ std::optional<ExternalLibrary> load_external_library(const model::Model& m, cons
                                                      const JitOptions& options,
                                                      diag::Diagnostics& diags);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -17,7 +17,9 @@
 #include <stdexcept>
 #include <unistd.h>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using driver::digest;
 
 namespace {
 
@@ -151,4 +153,4 @@ std::unique_ptr<runtime::SharedModel> load_compiled_model(const ir::System& eq,
         id, [&]() { return eq; }, options);
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 struct JitOptions {
     std::string compiler;  // empty: jit_cache.hpp's compiler_of
@@ -52,4 +52,4 @@ std::unique_ptr<runtime::SharedModel> load_compiled_model(const ModelIdentity& i
 std::unique_ptr<runtime::SharedModel> load_compiled_model(const ir::System& eq,
                                                           const JitOptions& options = {});
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -16,7 +16,9 @@
 #include <unistd.h>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using driver::derivation_module_path;
 
 namespace {
 
@@ -156,4 +158,4 @@ void ModelCache::record_compile(std::size_t bytes, double seconds) const {
     ::close(fd);
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <string>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 /// `configured` if given, else $YAMSC_CACHE_DIR, $XDG_CACHE_HOME/yamsc,
 /// ~/.cache/yamsc, /tmp/yamsc-cache-<uid>.
@@ -53,4 +53,4 @@ private:
     std::string folder_;
 };
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -11,7 +11,22 @@
 #include <mutex>
 #include <ostream>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using diag::UserError;
+using driver::Assignment;
+using driver::bind_named;
+using driver::bind_state;
+using driver::check_outputs;
+using driver::content_digest;
+using driver::continue_front_end;
+using driver::data_files_of;
+using driver::Derivatives;
+using driver::FrontEnd;
+using driver::NamedFile;
+using driver::run_front_end;
+using driver::sid_parameter_values;
+using driver::Until;
 
 namespace {
 
@@ -186,4 +201,4 @@ void initial_state(const Loaded& l, const std::vector<Assignment>& ic, std::vect
         (a.primes == 0 ? q : qd)[i] = (a.primes == 0 ? given_q : given_qd)[i];
     }
 }
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

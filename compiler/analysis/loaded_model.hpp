@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 /// A model compiled and bound to its parameters, ready to run. Copies share
 /// the library (read-only), so `yamsc batch` loads a model once and binds
@@ -24,10 +24,10 @@ struct Loaded {
     std::shared_ptr<const runtime::SharedModel> library;
     runtime::ModelView view;
     std::vector<double> params;
-    FrontEnd front; // the checked model (its equations are derived only to compile it);
-                    // no model for a library loaded by load_library
-    std::vector<Assignment> sid_values; // from --sid, bound before --set
-    std::string digest;                 // content_digest of the model text and data
+    driver::FrontEnd front; // the checked model (its equations are derived only to compile it);
+                            // no model for a library loaded by load_library
+    std::vector<driver::Assignment> sid_values; // from --sid, bound before --set
+    std::string digest;                         // content_digest of the model text and data
 };
 
 /// `outputs` are checked against the model's data files before anything is derived.
@@ -36,41 +36,43 @@ struct Loaded {
 /// model has errors (already printed to `err`).
 /// `external`: the implementation of the model's external functions (--external
 /// lib.so|file.c|file.cpp, analysis/external_library.hpp); required when it declares any.
-std::optional<Loaded> load(const std::string& path, const std::vector<Assignment>& set,
+std::optional<Loaded> load(const std::string& path, const std::vector<driver::Assignment>& set,
                            const std::string& sid_spec, bool verbose, std::ostream& err,
-                           const std::vector<NamedFile>& outputs, codegen::RoutineSet routines,
+                           const std::vector<driver::NamedFile>& outputs, codegen::RoutineSet routines,
                            const std::string& external = "");
 
 /// `load` without binding the parameters (`params` and `view` empty): for
 /// commands that bind them per case with bind_parameters.
 std::optional<Loaded> load_unbound(const std::string& path, const std::string& sid_spec,
                                    bool verbose, std::ostream& err,
-                                   const std::vector<NamedFile>& outputs,
+                                   const std::vector<driver::NamedFile>& outputs,
                                    codegen::RoutineSet routines, const std::string& external = "");
 
 /// Binds the parameters again: the model's defaults, the --sid values, then
 /// `set` (as `load` does); a view of the same library with those values.
-void bind_parameters(Loaded& l, const std::vector<Assignment>& set);
+void bind_parameters(Loaded& l, const std::vector<driver::Assignment>& set);
 
 /// A model library built beforehand (abi_export.hpp's YAMSC_EXPORT_MODEL, e.g.
 /// by CMake) bound to its defaults and `set`. It has no front end: no `initial`
 /// or `linearize` block, so both points are zeros unless given.
-Loaded load_library(const std::string& path, const std::vector<Assignment>& set);
+Loaded load_library(const std::string& path, const std::vector<driver::Assignment>& set);
 
 /// The routines `lin` and `trim` call: the second-order model and A.
 codegen::RoutineSet linear_model_routines();
 
 /// Constant inputs from --u (0 where not given).
-std::vector<double> inputs_of(const runtime::ModelView& v, const std::vector<Assignment>& u);
+std::vector<double> inputs_of(const runtime::ModelView& v,
+                              const std::vector<driver::Assignment>& u);
 
 /// The model's `linearize` point evaluated at `params`, then overridden by
 /// `at` (DOFs, rates, input channels) and `u` (inputs).
 void operating_point(const Loaded& l, const std::vector<double>& params,
-                     const std::vector<Assignment>& at, const std::vector<Assignment>& u_given,
-                     std::vector<double>& q, std::vector<double>& qd, std::vector<double>& u);
+                     const std::vector<driver::Assignment>& at,
+                     const std::vector<driver::Assignment>& u_given, std::vector<double>& q,
+                     std::vector<double>& qd, std::vector<double>& u);
 
 /// The model's `initial` block at the bound parameters (zeros without one), then --ic.
-void initial_state(const Loaded& l, const std::vector<Assignment>& ic, std::vector<double>& q,
-                   std::vector<double>& qd);
+void initial_state(const Loaded& l, const std::vector<driver::Assignment>& ic,
+                   std::vector<double>& q, std::vector<double>& qd);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

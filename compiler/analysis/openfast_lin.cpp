@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 namespace {
 
@@ -118,4 +118,4 @@ std::string format_lin_file(const LinFile& f) {
     return out;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

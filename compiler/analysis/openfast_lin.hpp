@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 /// One row of a table: an entry of x, x', u or y.
 struct LinChannel {
@@ -45,4 +45,4 @@ std::string format_lin_file(const LinFile& f);
 /// A double as Fortran's ES24.16E3 writes it: " 2.8014512732630000E-002".
 std::string fortran_es(double v);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -15,7 +15,9 @@
 #include <map>
 #include <ostream>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using driver::LinOptions;
 
 namespace {
 
@@ -342,4 +344,4 @@ void write_openfast_lin(const Loaded& l, const runtime::ModelView& view, const L
             << "\n";
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 struct LinFilePoint {
     std::vector<double> q, qd, u; ///< the operating point
@@ -39,16 +39,17 @@ LinFile lin_file(const model::Model& model, const runtime::ModelView& view, cons
 /// or with --mbc3 / --azimuths one per azimuth (the rotor's DOF set to 2π k/N,
 /// it and --hold held, as MBC3 linearizes). Writes each atomically and reports
 /// on `out` (nothing when `quiet`).
-void write_openfast_lin(const Loaded& l, const runtime::ModelView& view, const LinOptions& o,
-                        const std::vector<double>& q, const std::vector<double>& qd,
-                        const std::vector<double>& u, std::ostream& out, bool quiet);
+void write_openfast_lin(const Loaded& l, const runtime::ModelView& view,
+                        const driver::LinOptions& o, const std::vector<double>& q,
+                        const std::vector<double>& qd, const std::vector<double>& u,
+                        std::ostream& out, bool quiet);
 
 /// Whether `lin` writes one file per azimuth.
-bool lin_files_per_azimuth(const LinOptions& o);
+bool lin_files_per_azimuth(const driver::LinOptions& o);
 
 /// The files `-o PATH` names: PATH itself for one point (`azimuths` 0), else
 /// `<root>.1.lin` .. `<root>.N.lin` as OpenFAST names them, root being PATH
 /// without a final `.lin`.
 std::vector<std::string> lin_file_paths(const std::string& path, int azimuths);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

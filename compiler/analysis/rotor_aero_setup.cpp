@@ -8,7 +8,10 @@
 
 #include <stdexcept>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using diag::UsageError;
+using diag::UserError;
 
 using diag::UsageError;
 using diag::UserError;
@@ -76,4 +79,4 @@ void set_wind_at_start(const runtime::ModelView& v, std::vector<double>& u,
     u = out;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 /// The model's view with the rotor block closed around it (UserError naming
 /// what the model lacks).
@@ -30,4 +30,4 @@ runtime::InputFunction wind_inputs(const runtime::ModelView& v, std::vector<doub
 void set_wind_at_start(const runtime::ModelView& v, std::vector<double>& u,
                        const std::string& spec);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -15,7 +15,10 @@
 #include <limits>
 #include <map>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using driver::LinOptions;
+using driver::Sweep;
 
 std::string rotor_campbell_csv(const std::string& name, const std::vector<RotorCampbellRow>& rows) {
     std::string out = csv_field(name) + ",mode,label,freq_hz,damping_ratio,share\n";
@@ -107,4 +110,4 @@ int rotor_campbell(const Loaded& l, const LinOptions& o, std::ostream& out) {
     return 0;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 struct RotorCampbellRow {
     double value = 0;
@@ -35,6 +35,6 @@ std::string rotor_campbell_svg(const std::string& title, const std::string& name
 /// with --aero and a --schedule of rotor speed and controls) or a parameter
 /// (analysis/sweep_point.hpp). Writes
 /// the CSV (stdout or -o) and the SVG (--plot).
-int rotor_campbell(const Loaded& l, const LinOptions& o, std::ostream& out);
+int rotor_campbell(const Loaded& l, const driver::LinOptions& o, std::ostream& out);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

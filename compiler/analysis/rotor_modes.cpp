@@ -9,7 +9,10 @@
 #include <cstdio>
 #include <map>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using diag::UserError;
+namespace json = driver::json;
 
 namespace {
 
@@ -264,4 +267,4 @@ std::string rotor_modes_json(const runtime::ModelView& view, const RotorModesReq
     return out + "]}\n";
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

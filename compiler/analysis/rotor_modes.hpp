@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 /// The rotor as the DOF names show it: blade families are DOFs whose names
 /// differ only in a `b1`/`b2`/`b3` (q_b1_flap1, q_b2_flap1, q_b3_flap1: the
@@ -55,4 +55,4 @@ std::string format_rotor_modes(const runtime::ModelView& view, const RotorModesR
 std::string rotor_modes_json(const runtime::ModelView& view, const RotorModesRequest& r,
                              const std::vector<RotorMode>& modes);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

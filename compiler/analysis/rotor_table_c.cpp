@@ -4,7 +4,7 @@
 // observers) and fills its thrust and aero_torque inputs itself. The same
 // numbers as the runtime's interpolate() (runtime/src/performance_table.cpp),
 // checked by tests/embedded.
-#include "driver/commands.hpp"
+#include "analysis/commands.hpp"
 #include "driver/outputs.hpp"
 
 #include "diag/errors.hpp"
@@ -18,7 +18,10 @@
 #include <charconv>
 #include <sstream>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using driver::check_outputs;
+using driver::RotorTableOptions;
 namespace {
 
 /// The shortest text that reads back as the same double (a C literal).
@@ -122,4 +125,4 @@ int rotor_table(const RotorTableOptions& o, std::ostream& out, std::ostream&) {
     return 0;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -2,6 +2,7 @@
 // the fly, driven by the runtime.
 #include "analysis/campbell.hpp"
 #include "analysis/channels.hpp"
+#include "analysis/commands.hpp"
 #include "analysis/compare.hpp"
 #include "analysis/controller_loop.hpp"
 #include "analysis/loaded_model.hpp"
@@ -14,7 +15,6 @@
 #include "analysis/sweep_point.hpp"
 #include "analysis/trim_point.hpp"
 #include "driver/bindings.hpp"
-#include "driver/commands.hpp"
 #include "driver/json.hpp"
 #include "driver/outputs.hpp"
 #include "driver/pipeline.hpp"
@@ -32,7 +32,18 @@
 #include <cstdlib>
 #include <ostream>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using diag::UsageError;
+using driver::Channels;
+using driver::check_outputs;
+using driver::LinFormat;
+using driver::LinOptions;
+using driver::NamedFile;
+using driver::sid_files_of;
+using driver::SimOptions;
+using driver::Sweep;
+namespace json = driver::json;
 
 namespace {
 
@@ -252,4 +263,4 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     return 0;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -9,7 +9,11 @@
 
 #include <ostream>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using driver::Channels;
+using driver::SimMethod;
+using driver::SimOptions;
 
 namespace {
 
@@ -94,4 +98,4 @@ void write_sim_csv(const SimRun& run, Channels channels, const std::string& path
         runtime::write_csv(run.result, path);
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 /// The routines a simulation with these options calls (jit.hpp).
-codegen::RoutineSet sim_routines(const SimOptions& o);
+codegen::RoutineSet sim_routines(const driver::SimOptions& o);
 
 struct SimRun {
     runtime::ModelView view; // what was integrated (linear, with the rotor block)
@@ -28,12 +28,13 @@ struct SimRun {
 /// inputs, --wind, --aero, --linear and --controller of `o`. The model, --set,
 /// --sid and the output options of `o` are not looked at. --verbose details go
 /// to `out` and `err`, as sim prints them.
-SimRun simulate_case(const Loaded& l, const SimOptions& o, std::ostream& out, std::ostream& err);
+SimRun simulate_case(const Loaded& l, const driver::SimOptions& o, std::ostream& out,
+                     std::ostream& err);
 
 /// The table sim writes with -o: every column, or OpenFAST's channels.
-Table sim_table(const SimRun& run, Channels channels);
+Table sim_table(const SimRun& run, driver::Channels channels);
 
 /// Writes sim's -o file atomically.
-void write_sim_csv(const SimRun& run, Channels channels, const std::string& path);
+void write_sim_csv(const SimRun& run, driver::Channels channels, const std::string& path);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

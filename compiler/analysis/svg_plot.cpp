@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <sstream>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 namespace {
 
@@ -211,4 +211,4 @@ std::string svg_plot(const std::vector<PlotPanel>& panels, const PlotOptions& op
     return out.str();
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 struct PlotSeries {
     std::string label;        ///< legend text
@@ -38,4 +38,4 @@ std::string xml_escape(const std::string& text);
 /// Tick positions for [lo, hi]: about `target` round values (1, 2, 5 x 10^k).
 std::vector<double> nice_ticks(double lo, double hi, int target = 5);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -7,7 +7,12 @@
 
 #include <algorithm>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using diag::UsageError;
+using diag::UserError;
+using driver::Assignment;
+using driver::LinOptions;
 
 using diag::UsageError;
 using diag::UserError;
@@ -71,4 +76,4 @@ SweepPoint SweepPoints::at(double value) const {
     return p;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 struct SweepPoint {
     runtime::ModelView view; // with the swept parameter and the rotor block
@@ -24,7 +24,7 @@ class SweepPoints {
 public:
     /// Checks the swept name, reads the schedule and closes --aero; UserError
     /// for unknown names, UsageError for a parameter swept under --aero.
-    SweepPoints(const Loaded& l, const LinOptions& o);
+    SweepPoints(const Loaded& l, const driver::LinOptions& o);
 
     /// The point at `value`, trimmed when --trim.
     SweepPoint at(double value) const;
@@ -34,7 +34,7 @@ public:
 
 private:
     const Loaded& l_;
-    const LinOptions& o_;
+    const driver::LinOptions& o_;
     int param_ = -1;       // the swept parameter's index
     std::string rate_dof_; // or the DOF whose rate is swept
     std::string input_;    // or the input
@@ -42,4 +42,4 @@ private:
     std::optional<runtime::ModelView> aero_view_; // --aero: the view closed once
 };
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

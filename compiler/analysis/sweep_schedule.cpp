@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cstdio>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using diag::UserError;
+using driver::Assignment;
 
 using diag::UserError;
 
@@ -47,4 +50,4 @@ std::vector<Assignment> schedule_at(const SweepSchedule& s, double value) {
     return at;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 struct SweepSchedule {
     std::string path;
@@ -26,6 +26,6 @@ SweepSchedule read_sweep_schedule(const std::string& path, const std::string& sw
 
 /// The schedule's other columns at `value`, as `--at` assignments (linear
 /// interpolation). UserError when `value` lies outside the schedule.
-std::vector<Assignment> schedule_at(const SweepSchedule& s, double value);
+std::vector<driver::Assignment> schedule_at(const SweepSchedule& s, double value);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

@@ -10,7 +10,10 @@
 #include <cstdio>
 #include <ostream>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using driver::TrimOptions;
+namespace json = driver::json;
 
 int trim(const TrimOptions& o, std::ostream& out, std::ostream& err) {
     codegen::RoutineSet routines = linear_model_routines();
@@ -55,4 +58,4 @@ int trim(const TrimOptions& o, std::ostream& out, std::ostream& err) {
     return 0;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

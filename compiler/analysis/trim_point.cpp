@@ -7,7 +7,9 @@
 #include <cmath>
 #include <cstdio>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
+
+using diag::UserError;
 
 namespace {
 
@@ -70,4 +72,4 @@ runtime::TrimResult trim_point(const runtime::ModelView& view, const std::vector
     throw UserError(message);
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

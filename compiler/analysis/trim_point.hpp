@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 /// Trims from (q, q') at inputs u. Held: the DOFs named in `hold` and every
 /// DOF with a nonzero rate at the start (a spinning rotor keeps its speed).
@@ -22,4 +22,4 @@ runtime::TrimResult trim_point(const runtime::ModelView& view, const std::vector
                                const std::vector<std::string>& hold,
                                const std::vector<std::string>& adjust = {});
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

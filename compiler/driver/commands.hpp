@@ -3,6 +3,9 @@
 // its results to `out`, diagnostics and progress to `err`, and returns the exit
 // status (0 success, 1 user error). Usage errors throw UsageError, internal
 // errors diag::InternalError; the CLI turns them into exit statuses 2 and 70.
+// The options of every command are here; each command is declared by the stage
+// that runs it: compile, check, eval and sid below, from_openfast in
+// openfast/from_openfast.hpp, the rest in analysis/commands.hpp.
 //
 // Options arrive typed: the CLI (compiler/cli/) parses and validates every
 // option once; the commands never compare option strings.
@@ -168,14 +171,6 @@ struct RotorTableOptions {
 int compile(const CompileOptions& o, std::ostream& out, std::ostream& err);
 int check(const CheckOptions& o, std::ostream& out, std::ostream& err);
 int eval(const EvalOptions& o, std::ostream& out, std::ostream& err);
-int eval_compiled(const EvalOptions& o, std::ostream& out, std::ostream& err);
-int lin(const LinOptions& o, std::ostream& out, std::ostream& err);
-int trim(const TrimOptions& o, std::ostream& out, std::ostream& err);
-int sim(const SimOptions& o, std::ostream& out, std::ostream& err);
-int batch(const BatchOptions& o, std::ostream& out, std::ostream& err);
-int batch_merge(const BatchMergeOptions& o, std::ostream& out, std::ostream& err);
 int sid(const SidOptions& o, std::ostream& out, std::ostream& err);
-int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream& err);
-int rotor_table(const RotorTableOptions& o, std::ostream& out, std::ostream& err);
 
 } // namespace yamsc::driver

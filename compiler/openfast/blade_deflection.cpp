@@ -7,7 +7,9 @@
 
 #include <cmath>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
+
+using driver::read_source;
 
 namespace {
 
@@ -132,4 +134,4 @@ BladeInitial initial_blade_deflection(const BladeTipShapes& tip, double pitch, d
     return r;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

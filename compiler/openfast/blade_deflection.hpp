@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
 
 /// The tip displacement (x: out of plane, y: in plane, blade axes before pitch) per
 /// unit DOF of flap1, edge1 and flap2, as ElastoDyn's TwistedSF at its TipNode.
@@ -47,4 +47,4 @@ struct BladeInitial {
 BladeInitial initial_blade_deflection(const BladeTipShapes& tip, double pitch, double oop,
                                       double ip, bool flap1_on, bool flap2_on, bool edge_on);
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

@@ -1,7 +1,7 @@
 // `yamsc from-openfast`: a model from an OpenFAST ElastoDyn deck (docs/openfast.md).
+#include "openfast/from_openfast.hpp"
 #include "data/file_source.hpp"
 #include "driver/bindings.hpp"
-#include "driver/commands.hpp"
 #include "driver/outputs.hpp"
 #include "model/names.hpp"
 #include "openfast/deck.hpp"
@@ -16,7 +16,13 @@
 #include <filesystem>
 #include <ostream>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
+
+using diag::UsageError;
+using driver::check_outputs;
+using driver::data_files_of;
+using driver::FromOpenFastOptions;
+using driver::NamedFile;
 
 namespace fs = std::filesystem;
 
@@ -150,4 +156,4 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
     return 0;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

@@ -10,7 +10,9 @@
 #include <cmath>
 #include <cstdlib>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
+
+using driver::read_source;
 
 namespace {
 
@@ -96,4 +98,4 @@ std::string gauge_outputs(const openfast::OpenFastDeck& deck, bool flexible_towe
     return out;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
 
 /// The `output` lines of the gauges' moment channels (empty when there are none).
 /// Tower gauges need a flexible tower, blade gauges flexible blades (else a
@@ -17,4 +17,4 @@ namespace yamsc::driver {
 std::string gauge_outputs(const openfast::OpenFastDeck& deck, bool flexible_tower,
                           bool flexible_blades, diag::Diagnostics& diags);
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

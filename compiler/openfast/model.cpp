@@ -15,7 +15,7 @@
 #include <filesystem>
 #include <sstream>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
 
 namespace {
 
@@ -939,4 +939,4 @@ std::string openfast_model_text(const OpenFastModelInput& in, diag::Diagnostics&
     return Writer(in, diags).text();
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
 
 struct OpenFastModelInput {
     const openfast::OpenFastDeck* deck = nullptr;
@@ -38,4 +38,4 @@ std::string mbd_number(double v);
 /// A string literal of the model language.
 std::string mbd_string(const std::string& text);
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

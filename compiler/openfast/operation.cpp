@@ -9,7 +9,9 @@
 #include <cmath>
 #include <filesystem>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
+
+using driver::read_source;
 
 namespace fs = std::filesystem;
 using diag::Kind;
@@ -221,4 +223,4 @@ std::optional<Operation> read_operation(const openfast::OpenFastDeck& deck,
     return OperationReader(deck, diags).read(cp_table);
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

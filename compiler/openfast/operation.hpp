@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
 
 struct Operation {
     double rotor_radius = 0; ///< TipRad (ElastoDyn) [m]
@@ -41,4 +41,4 @@ struct Operation {
 std::optional<Operation> read_operation(const openfast::OpenFastDeck& deck,
                                         const std::string& cp_table, diag::Diagnostics& diags);
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

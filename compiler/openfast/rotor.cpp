@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
+
+using driver::read_source;
 
 namespace {
 
@@ -151,4 +153,4 @@ std::optional<RigidProperties> rigid_tower(const openfast::OpenFastDeck& deck,
     return tower.about_cm();
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

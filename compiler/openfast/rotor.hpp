@@ -8,7 +8,7 @@
 #include <array>
 #include <optional>
 
-namespace yamsc::driver {
+namespace yamsc::openfast {
 
 struct RigidProperties {
     double mass = 0;
@@ -27,4 +27,4 @@ std::optional<RigidProperties> rigid_rotor(const openfast::OpenFastDeck& deck,
 std::optional<RigidProperties> rigid_tower(const openfast::OpenFastDeck& deck,
                                            diag::Diagnostics& diags);
 
-} // namespace yamsc::driver
+} // namespace yamsc::openfast

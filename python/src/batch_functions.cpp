@@ -1,7 +1,7 @@
 #include "batch_functions.hpp"
 
 #include "analysis/batch_summary.hpp"
-#include "driver/commands.hpp"
+#include "analysis/commands.hpp"
 
 #include <pybind11/stl.h>
 
@@ -32,7 +32,7 @@ std::tuple<int, std::string, std::string> batch(const std::string& manifest,
     o.quiet = quiet;
     std::ostringstream out, err;
     py::gil_scoped_release released; // the cases run for seconds to hours
-    const int status = driver::batch(o, out, err);
+    const int status = analysis::batch(o, out, err);
     return {status, out.str(), err.str()};
 }
 
@@ -42,14 +42,14 @@ std::tuple<int, std::string, std::string> batch_merge(const std::vector<std::str
     o.dirs = dirs;
     o.output = output;
     std::ostringstream out, err;
-    const int status = driver::batch_merge(o, out, err);
+    const int status = analysis::batch_merge(o, out, err);
     return {status, out.str(), err.str()};
 }
 
 /// The lines of a summary file as dicts of its columns (batch_summary.hpp reads it).
 py::list read_batch_summary(const std::string& path) {
     py::list rows;
-    for (const driver::CaseSummary& s : driver::read_summary(path)) {
+    for (const analysis::CaseSummary& s : analysis::read_summary(path)) {
         py::dict d;
         d["row"] = s.row;
         d["id"] = s.id;

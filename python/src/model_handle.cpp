@@ -47,9 +47,9 @@ ModelHandle ModelHandle::from_source(const std::string& path, const std::string&
                                      const std::string& external) {
     const codegen::RoutineSet wanted = routine_set(routines);
     std::ostringstream err;
-    std::optional<driver::Loaded> loaded;
+    std::optional<analysis::Loaded> loaded;
     try {
-        loaded = driver::load(path, set, sid, false, err, {}, wanted, external);
+        loaded = analysis::load(path, set, sid, false, err, {}, wanted, external);
     } catch (const std::exception& e) {
         // UserError (a --set name that does not exist), a failed compile, ...
         throw LoadError(err.str() + e.what());
@@ -64,7 +64,7 @@ ModelHandle ModelHandle::from_library(const std::string& path,
                                       const std::vector<driver::Assignment>& set) {
     ModelHandle h;
     try {
-        h.loaded_ = driver::load_library(path, set);
+        h.loaded_ = analysis::load_library(path, set);
     } catch (const std::exception& e) {
         throw LoadError(e.what());
     }

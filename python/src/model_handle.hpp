@@ -39,7 +39,7 @@ public:
     static ModelHandle from_library(const std::string& path,
                                     const std::vector<driver::Assignment>& set);
 
-    const driver::Loaded& loaded() const { return loaded_; }
+    const analysis::Loaded& loaded() const { return loaded_; }
     const runtime::ModelView& view() const { return loaded_.view; }
     const runtime::SharedModel& library() const { return *loaded_.library; }
     int np() const { return library().np(); }
@@ -56,7 +56,7 @@ public:
     std::vector<Described> described(const std::string& kind) const;
 
 private:
-    driver::Loaded loaded_;
+    analysis::Loaded loaded_;
     std::vector<double> other_params_;
     runtime::ModelView other_view_;
 };

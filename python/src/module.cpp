@@ -92,8 +92,8 @@ py::dict linear(ModelHandle& h, const Assignments& at, const Assignments& u_give
                 const OptArray& p) {
     Call c(h, p);
     std::vector<double> q, qd, u;
-    yamsc::driver::operating_point(h.loaded(), h.params_at(p ? p->data() : nullptr),
-                                   assignments(at), assignments(u_given), q, qd, u);
+    yamsc::analysis::operating_point(h.loaded(), h.params_at(p ? p->data() : nullptr),
+                                     assignments(at), assignments(u_given), q, qd, u);
     const yamsc::runtime::SecondOrderModel lm =
         yamsc::runtime::second_order_model(c.v, q, qd, u, 0.0);
     std::vector<double> x0 = q;
@@ -314,7 +314,7 @@ PYBIND11_MODULE(_yamsc, mod) {
             "initial_state",
             [](const ModelHandle& h, const Assignments& ic) {
                 std::vector<double> q, qd;
-                yamsc::driver::initial_state(h.loaded(), assignments(ic), q, qd);
+                yamsc::analysis::initial_state(h.loaded(), assignments(ic), q, qd);
                 q.insert(q.end(), qd.begin(), qd.end());
                 return vector_of(std::move(q));
             },

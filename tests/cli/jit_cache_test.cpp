@@ -167,14 +167,14 @@ TEST_CASE("a model's data files are part of its key") {
 
 TEST_CASE("compile estimates: the median rate of the last compiles recorded") {
     const std::string dir = scratch_dir("jit_cache", "estimate");
-    const yamsc::driver::ModelCache cache(dir + "/cache");
-    const yamsc::driver::CompileEstimate none = cache.estimate(1'000'000);
+    const yamsc::analysis::ModelCache cache(dir + "/cache");
+    const yamsc::analysis::CompileEstimate none = cache.estimate(1'000'000);
     CHECK_FALSE(none.measured_here);
     CHECK(none.seconds > 0);
     cache.record_compile(1'000'000, 10.0); // 10 s/MB
     cache.record_compile(2'000'000, 60.0); // 30 s/MB
     cache.record_compile(500'000, 10.0);   // 20 s/MB
-    const yamsc::driver::CompileEstimate e = cache.estimate(3'000'000);
+    const yamsc::analysis::CompileEstimate e = cache.estimate(3'000'000);
     CHECK(e.measured_here);
     CHECK(e.seconds == doctest::Approx(60.0));
 }

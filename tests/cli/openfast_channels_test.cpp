@@ -7,7 +7,7 @@
 
 #include <doctest/doctest.h>
 
-using namespace yamsc::driver;
+using namespace yamsc::analysis;
 
 namespace {
 

@@ -9,6 +9,7 @@
 
 #include "analysis/openfast_lin_model.hpp"
 #include "driver/commands.hpp"
+#include "openfast/from_openfast.hpp"
 
 #include <doctest/doctest.h>
 
@@ -118,7 +119,7 @@ std::string rotor_model(const std::string& dir) {
          {"TwSSDOF1", "TwFADOF2", "TwSSDOF2", "YawDOF", "DrTrDOF", "EdgeDOF", "FlapDOF2"})
         o.dofs.emplace_back(off, false);
     std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::driver::from_openfast(o, out, err) == 0, err.str());
+    REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
     return o.output;
 }
 
@@ -247,12 +248,12 @@ TEST_CASE("lin file: ElastoDyn's order (blades by mode) and signs (side-side neg
     };
     yamsc::model::Model m;
     m.name = "fake";
-    yamsc::driver::LinFilePoint p;
+    yamsc::analysis::LinFilePoint p;
     p.q.assign(n, 0.0);
     p.q[0] = 0.1;
     p.qd.assign(n, 0.0);
     p.u = {0.0};
-    const yamsc::driver::LinFile f = yamsc::driver::lin_file(m, v, p);
+    const yamsc::analysis::LinFile f = yamsc::analysis::lin_file(m, v, p);
     // ElastoDyn's order: BF(1..3,1) then BE(1..3,1); the file's state a is yamsc's perm[a].
     const int perm[n] = {0, 1, 3, 5, 2, 4, 6};
     const double sign[n] = {-1, 1, 1, 1, 1, 1, 1};

@@ -112,7 +112,7 @@ TEST_CASE("the compiled Jacobians with externals equal finite differences of rhs
     for (const std::string& source : {with_jacobians}) {
         CAPTURE(source);
         std::ostringstream err;
-        auto loaded = yamsc::driver::load(
+        auto loaded = yamsc::analysis::load(
             model, {{"P", 0, 0.5}, {"c", 0, 0.7}}, "", false, err, {},
             {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"}, source);
         REQUIRE_MESSAGE(loaded, err.str());

@@ -10,8 +10,8 @@
 #include <fstream>
 
 using namespace linear_test;
-using yamsc::driver::read_sweep_schedule;
-using yamsc::driver::schedule_at;
+using yamsc::analysis::read_sweep_schedule;
+using yamsc::analysis::schedule_at;
 
 namespace {
 

@@ -6,8 +6,8 @@
 // for it: grouping_tree.mbd (a flexible body with a joint on its node, a DOF
 // shared by siblings) and grouping_reused.mbd (a DOF a joint below uses again:
 // its anchors overlap and its terms are summed body by body).
-#include "driver/commands.hpp"
 #include "equations_fixture.hpp"
+#include "openfast/from_openfast.hpp"
 #include "test_files.hpp"
 
 #include <algorithm>
@@ -104,7 +104,7 @@ std::string turbine_16dof() {
         "tests/data/reference/land_16dof_free_decay/NREL5MW_Onshore_FreeDecay.fst");
     o.output = path;
     std::ostringstream out, err;
-    REQUIRE_MESSAGE(driver::from_openfast(o, out, err) == 0, err.str());
+    REQUIRE_MESSAGE(openfast::from_openfast(o, out, err) == 0, err.str());
     return path;
 }
 

@@ -119,13 +119,13 @@ struct Compiled {
 
 inline Compiled compile_model(const symbolic::Equations& eq,
                               const std::map<std::string, double>& params = {}) {
-    driver::JitOptions o;
+    analysis::JitOptions o;
     o.cache_dir = std::string(YAMSC_TEST_BINARY_DIR) + "/jit-cache";
     Compiled c;
     ir::System s = lower::lower(eq);
     passes::derive_jacobians(s);
     passes::output_jacobians(s);
-    c.library = driver::load_compiled_model(s, o);
+    c.library = analysis::load_compiled_model(s, o);
     std::vector<double> p = c.library->default_params();
     for (const auto& [name, value] : params) {
         int i = c.library->param_index(name);

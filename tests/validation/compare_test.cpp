@@ -1,13 +1,14 @@
 // Reference tables, the error measures of --compare, OpenFAST channel naming and the SVG
 // writer, on data whose answers are known by hand.
 #include "analysis/svg_plot.hpp"
-#include "driver/bindings.hpp"
+#include "diag/errors.hpp"
 #include "validation_support.hpp"
 
 #include <cmath>
 #include <fstream>
 
-using namespace yamsc::driver;
+using namespace yamsc::analysis;
+using yamsc::diag::UserError;
 
 namespace {
 

@@ -15,9 +15,9 @@
 #include <regex>
 
 using namespace validation;
-using yamsc::driver::ChannelScore;
-using yamsc::driver::Comparison;
-using yamsc::driver::Table;
+using yamsc::analysis::ChannelScore;
+using yamsc::analysis::Comparison;
+using yamsc::analysis::Table;
 
 namespace {
 
@@ -27,10 +27,10 @@ struct Bounds {
 
 /// Compares, checks, and records the scores for the report.
 Comparison check_case(const Case& c, const Table& sim, bool linear, const Bounds& measured) {
-    const Table reference = yamsc::driver::read_table(reference_csv(c));
-    const Comparison cmp = yamsc::driver::compare_tables(sim, reference);
+    const Table reference = yamsc::analysis::read_table(reference_csv(c));
+    const Comparison cmp = yamsc::analysis::compare_tables(sim, reference);
     const std::string report = c.model + (linear ? " linear\n" : " nonlinear\n") +
-                               yamsc::driver::format_comparison(cmp, reference_csv(c));
+                               yamsc::analysis::format_comparison(cmp, reference_csv(c));
     MESSAGE(report);
     CHECK(cmp.missing.empty());
     for (const std::string& channel : c.channels) {
@@ -51,10 +51,10 @@ Comparison check_case(const Case& c, const Table& sim, bool linear, const Bounds
 
 /// OpenFAST, the nonlinear and the linear simulation of each channel, one panel each.
 void plot(const Case& c, const Table& nonlinear, const Table& linear) {
-    const Table reference = yamsc::driver::read_table(reference_csv(c));
-    std::vector<yamsc::driver::PlotPanel> panels;
+    const Table reference = yamsc::analysis::read_table(reference_csv(c));
+    std::vector<yamsc::analysis::PlotPanel> panels;
     for (const std::string& channel : c.channels) {
-        yamsc::driver::PlotPanel p;
+        yamsc::analysis::PlotPanel p;
         p.y_label = channel;
         const int n = nonlinear.find(channel), l = linear.find(channel),
                   r = reference.find(channel);
@@ -67,26 +67,26 @@ void plot(const Case& c, const Table& nonlinear, const Table& linear) {
             {"OpenFAST", reference.data[0], reference.data[static_cast<std::size_t>(r)], true});
         panels.push_back(std::move(p));
         // The differences, too small to see above.
-        yamsc::driver::PlotPanel e;
+        yamsc::analysis::PlotPanel e;
         e.y_label = "yamsc - OpenFAST, " + channel;
         for (const Table* sim : {&nonlinear, &linear}) {
             const int j = sim->find(channel);
             std::vector<double> diff;
             for (std::size_t i = 0; i < reference.rows(); ++i)
-                diff.push_back(yamsc::driver::interpolate(sim->data[0],
-                                                          sim->data[static_cast<std::size_t>(j)],
-                                                          reference.data[0][i]) -
+                diff.push_back(yamsc::analysis::interpolate(sim->data[0],
+                                                            sim->data[static_cast<std::size_t>(j)],
+                                                            reference.data[0][i]) -
                                reference.data[static_cast<std::size_t>(r)][i]);
             e.series.push_back({sim == &nonlinear ? "yamsc, nonlinear" : "yamsc, linear",
                                 reference.data[0], diff, false});
         }
         panels.push_back(std::move(e));
     }
-    yamsc::driver::PlotOptions o;
+    yamsc::analysis::PlotOptions o;
     o.panel_height = 150;
     o.title = "Free decay: " + c.folder + " (yamsc vs OpenFAST)";
     yamsc::runtime::write_file_atomically(work_dir + "/" + c.model + ".svg",
-                                          yamsc::driver::svg_plot(panels, o));
+                                          yamsc::analysis::svg_plot(panels, o));
 }
 
 std::vector<double> frequencies(const std::string& text) {
@@ -150,11 +150,11 @@ TEST_CASE("land-based 16 DOF (every ElastoDyn DOF, 30 s): DOF channels against O
         const Table sim =
             abm4 ? simulate(c, false, nullptr, yamsc::driver::SimMethod::abm4, 0.005, 0.01)
                  : simulate(c, false);
-        const Table reference = yamsc::driver::read_table(reference_csv(c));
-        const Comparison cmp = yamsc::driver::compare_tables(sim, reference);
+        const Table reference = yamsc::analysis::read_table(reference_csv(c));
+        const Comparison cmp = yamsc::analysis::compare_tables(sim, reference);
         const std::string report = c.model +
                                    (abm4 ? " nonlinear, ABM4 dt 0.005\n" : " nonlinear\n") +
-                                   yamsc::driver::format_comparison(cmp, reference_csv(c));
+                                   yamsc::analysis::format_comparison(cmp, reference_csv(c));
         MESSAGE(report);
         const std::map<std::string, double> bounds{
             // the DOFs
@@ -246,7 +246,7 @@ TEST_CASE("parked 15 DOF: the linear model has OpenFAST's linearization frequenc
     yamsc::driver::LinOptions o;
     o.model = model_path(parked);
     std::ostringstream out, err;
-    REQUIRE(yamsc::driver::lin(o, out, err) == 0);
+    REQUIRE(yamsc::analysis::lin(o, out, err) == 0);
     std::vector<double> f;
     std::istringstream lines(out.str());
     for (std::string line; std::getline(lines, line);) {

@@ -93,7 +93,7 @@ TEST_CASE("--dofs switches ElastoDyn's flags; unknown flags are usage errors") {
     o.output = work_dir + "/never.mbd";
     o.dofs = {{"TwFADOF3", true}};
     std::ostringstream out, err;
-    CHECK_THROWS_WITH_AS(yamsc::driver::from_openfast(o, out, err),
+    CHECK_THROWS_WITH_AS(yamsc::openfast::from_openfast(o, out, err),
                          "--dofs: unknown ElastoDyn DOF 'TwFADOF3' (did you mean 'TwFADOF1'?)",
                          yamsc::driver::UsageError);
 }
@@ -105,7 +105,7 @@ TEST_CASE("flexible blades, tower modes 2 and the drivetrain: the full 16-DOF on
     o.deck = std::string(YAMSC_TEST_DATA_DIR) + "/nrel5mw/NREL5MW_ED_Onshore.dat";
     o.output = model_path(c);
     std::ostringstream out, err;
-    REQUIRE(yamsc::driver::from_openfast(o, out, err) == 0);
+    REQUIRE(yamsc::openfast::from_openfast(o, out, err) == 0);
     // This ElastoDyn file predates Gravity in ElastoDyn: said, and the standard value used.
     CHECK(err.str().find("no Gravity in the deck: using 9.80665") != std::string::npos);
     const std::string text = read(o.output);
@@ -158,7 +158,7 @@ TEST_CASE("ElastoDyn's strain gauges become section loads in the gauges' deflect
     o.deck = path;
     o.output = work_dir + "/gauges.mbd";
     std::ostringstream out, err;
-    REQUIRE(yamsc::driver::from_openfast(o, out, err) == 0);
+    REQUIRE(yamsc::openfast::from_openfast(o, out, err) == 0);
     const std::string text = read(o.output);
     // ElastoDyn's element J is the SID node J + 1; the channels are minus the
     // sections' loads, the blade's turned by the structural twist (6.55 deg at
@@ -199,7 +199,7 @@ TEST_CASE("unknown and unsupported entries are warnings at their line, never dro
     o.deck = path;
     o.output = work_dir + "/odd.mbd";
     std::ostringstream out, err;
-    REQUIRE(yamsc::driver::from_openfast(o, out, err) == 0);
+    REQUIRE(yamsc::openfast::from_openfast(o, out, err) == 0);
     CHECK(err.str().find("odd_ED.dat:73:7: warning: unknown ElastoDyn entry 'FooBar': not "
                          "converted [unknown-property]") != std::string::npos);
     CHECK(err.str().find("odd_ED.dat:107:1: warning: furling is not converted") !=
@@ -223,7 +223,7 @@ TEST_CASE("a deck with a bad value fails with its location and writes nothing") 
     o.output = work_dir + "/bad.mbd";
     std::remove(o.output.c_str());
     std::ostringstream out, err;
-    CHECK(yamsc::driver::from_openfast(o, out, err) == 1);
+    CHECK(yamsc::openfast::from_openfast(o, out, err) == 1);
     CHECK(err.str().find("bad_ED.dat:79:6: error: 'NacMass' must be a number, not 'heavy'") !=
           std::string::npos);
     CHECK(!std::ifstream(o.output).good());

@@ -9,7 +9,7 @@
 #include <regex>
 
 using namespace validation;
-using yamsc::driver::Table;
+using yamsc::analysis::Table;
 
 namespace {
 
@@ -31,7 +31,7 @@ std::string convert_full_deck(const std::string& output, const std::string& cp_t
     o.dofs = operating_dofs;
     o.cp_table = cp_table;
     std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::driver::from_openfast(o, out, err) == 0, err.str());
+    REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
     if (log) *log = out.str() + err.str();
     return read(output);
 }
@@ -53,8 +53,8 @@ Table run_in_wind(const std::string& model, const std::string& name) {
     o.set = yamsc::driver::parse_assignments("VS_Rgn2K=2.31055", "--set");
     o.output = work_dir + "/" + name + ".csv";
     std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::driver::sim(o, out, err) == 0, err.str());
-    return yamsc::driver::read_table(o.output);
+    REQUIRE_MESSAGE(yamsc::analysis::sim(o, out, err) == 0, err.str());
+    return yamsc::analysis::read_table(o.output);
 }
 
 } // namespace
@@ -107,7 +107,7 @@ TEST_CASE("a full deck: the rotor block, the wind, the generator and the control
     o.output = table;
     o.cp_table = table;
     std::ostringstream out, err;
-    CHECK_THROWS(yamsc::driver::from_openfast(o, out, err));
+    CHECK_THROWS(yamsc::openfast::from_openfast(o, out, err));
 }
 
 TEST_CASE("a full deck's model runs in wind as the shipped operating model does") {
@@ -153,7 +153,7 @@ TEST_CASE("a full deck's sheared steady wind is taken at the hub height") {
     o.output = work_dir + "/full_deck_shear.mbd";
     o.dofs = operating_dofs;
     std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::driver::from_openfast(o, out, err) == 0, err.str());
+    REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
     const std::string text = read(o.output);
     std::smatch m;
     REQUIRE(std::regex_search(text, m, std::regex("#     --wind ([0-9.e+-]+) \\\\")));

@@ -15,7 +15,7 @@
 #include <cmath>
 
 using namespace validation;
-using yamsc::driver::Table;
+using yamsc::analysis::Table;
 
 namespace {
 
@@ -62,8 +62,8 @@ Table run(const std::string& name, const std::string& wind, const std::string& s
     o.controller = controller;
     o.output = work_dir + "/" + name + ".csv";
     std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::driver::sim(o, out, err) == 0, err.str());
-    return yamsc::driver::read_table(o.output);
+    REQUIRE_MESSAGE(yamsc::analysis::sim(o, out, err) == 0, err.str());
+    return yamsc::analysis::read_table(o.output);
 }
 
 /// The damping ratio of the mode `lin` names by `dof` (its text table).
@@ -92,7 +92,7 @@ std::string lin(bool aero) {
         o.wind = "16";
     }
     std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::driver::lin(o, out, err) == 0, err.str());
+    REQUIRE_MESSAGE(yamsc::analysis::lin(o, out, err) == 0, err.str());
     return out.str();
 }
 
@@ -156,17 +156,17 @@ TEST_CASE("the tower's fore-aft mode gets its aerodynamic damping at 16 m/s") {
 yamsc::runtime::TrimResult trimmed(const std::string& wind, double rpm, const std::string& u,
                                    const std::string& adjust) {
     std::ostringstream err;
-    auto loaded = yamsc::driver::load(
+    auto loaded = yamsc::analysis::load(
         model, {}, "", false, err, {},
         {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"});
     REQUIRE_MESSAGE(loaded, err.str());
-    const yamsc::runtime::ModelView v = yamsc::driver::close_rotor_aero(*loaded, table);
+    const yamsc::runtime::ModelView v = yamsc::analysis::close_rotor_aero(*loaded, table);
     std::vector<double> q, qd, u0;
-    yamsc::driver::operating_point(*loaded, loaded->params, {},
-                                   yamsc::driver::parse_assignments(u, "--u"), q, qd, u0);
-    yamsc::driver::set_wind_at_start(v, u0, wind);
+    yamsc::analysis::operating_point(*loaded, loaded->params, {},
+                                     yamsc::driver::parse_assignments(u, "--u"), q, qd, u0);
+    yamsc::analysis::set_wind_at_start(v, u0, wind);
     qd[2] = rpm * pi / 30; // psi
-    return yamsc::driver::trim_point(v, q, qd, u0, {}, {adjust});
+    return yamsc::analysis::trim_point(v, q, qd, u0, {}, {adjust});
 }
 
 TEST_CASE(
@@ -223,7 +223,7 @@ TEST_CASE("aerodynamic damping at 16 m/s: the linear model's equals the nonlinea
     o.at = yamsc::driver::parse_assignments(at, "--at");
     o.u = yamsc::driver::parse_assignments(u, "--u");
     std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::driver::lin(o, out, err) == 0, err.str());
+    REQUIRE_MESSAGE(yamsc::analysis::lin(o, out, err) == 0, err.str());
     const double linear = damping_of(out.str(), "q_fa1");
 
     const Table t = run("aero_damping_decay", "16", "", u, 20, "", ic);
@@ -412,11 +412,11 @@ TEST_CASE("the baseline controller's torque regions and pitch loop (DISCON calle
 
 TEST_CASE("the operating model closed by the rotor block: Jacobians equal finite differences") {
     std::ostringstream err;
-    auto l = yamsc::driver::load(
+    auto l = yamsc::analysis::load(
         model, {}, "", false, err, {},
         {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"});
     REQUIRE_MESSAGE(l, err.str());
-    const yamsc::runtime::ModelView v = yamsc::driver::close_rotor_aero(*l, table);
+    const yamsc::runtime::ModelView v = yamsc::analysis::close_rotor_aero(*l, table);
     const int nq = v.nq, nu = v.nu;
     std::vector<double> q{0.2, -0.02, 1.0, 0.003}, qd{0.05, 0.01, 1.27, 0.001};
     REQUIRE(nq == 4);
@@ -487,7 +487,7 @@ FaRows campbell_over_wind(const std::string& sweep, const std::string& schedule,
     o.output = work_dir + "/" + name + ".csv";
     o.plot = work_dir + "/" + name + ".svg";
     std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::driver::lin(o, out, err) == 0, err.str());
+    REQUIRE_MESSAGE(yamsc::analysis::lin(o, out, err) == 0, err.str());
     // V_wind,mode,label,freq_hz,damping_ratio,share
     std::ifstream csv(o.output);
     FaRows rows;
@@ -531,7 +531,7 @@ TEST_CASE("Campbell diagram over wind speed: trimmed at each scheduled point, to
 }
 
 #ifdef YAMSC_ROSCO_DISCON
-// ROSCO itself (controllers/rosco), with its NREL 5-MW DISCON.IN, as OpenFAST's
+// ROSCO itself (third_party/rosco), with its NREL 5-MW DISCON.IN, as OpenFAST's
 // reference runs used it: the `rosco` test runs this case (skipped otherwise
 // here, since it needs the Fortran build).
 TEST_CASE("ROSCO in the loop: steady operation at 16 and 8 m/s against OpenFAST + ROSCO" *
@@ -549,10 +549,10 @@ TEST_CASE("ROSCO in the loop: steady operation at 16 and 8 m/s against OpenFAST 
         o.controller_input = discon_in;
         o.output = work_dir + "/" + name + ".csv";
         std::ostringstream out, err;
-        REQUIRE_MESSAGE(yamsc::driver::sim(o, out, err) == 0, err.str());
+        REQUIRE_MESSAGE(yamsc::analysis::sim(o, out, err) == 0, err.str());
         // ROSCO's log lands beside the run, named from its root (LoggingLevel 1)
         CHECK(std::ifstream(work_dir + "/" + name + ".RO.dbg").good());
-        return yamsc::driver::read_table(o.output);
+        return yamsc::analysis::read_table(o.output);
     };
     // 16 m/s, region 3: OpenFAST + ROSCO 12.10 rpm, 5000 kW, pitch 11.53 deg,
     // RotThrust 484 kN, TTDspFA 0.203 m (tests/data/reference/operating).

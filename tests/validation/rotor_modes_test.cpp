@@ -42,7 +42,7 @@ std::vector<ModeRow> yamsc_modes(double rpm, const std::vector<std::string>& hol
     o.hold = hold;
     o.at = {{"psi", 1, rpm * M_PI / 30}};
     std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::driver::lin(o, out, err) == 0, err.str());
+    REQUIRE_MESSAGE(yamsc::analysis::lin(o, out, err) == 0, err.str());
     MESSAGE(out.str());
     std::vector<ModeRow> rows;
     std::istringstream lines(out.str());
@@ -116,7 +116,7 @@ TEST_CASE("the Campbell diagram over rotor speed: MBC3 modes at each speed, CSV 
     o.output = work_dir + "/campbell_16dof.csv";
     o.plot = work_dir + "/campbell_16dof.svg";
     std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::driver::lin(o, out, err) == 0, err.str());
+    REQUIRE_MESSAGE(yamsc::analysis::lin(o, out, err) == 0, err.str());
     std::istringstream csv(read(o.output));
     std::string line;
     std::getline(csv, line);
@@ -158,7 +158,7 @@ TEST_CASE(
         o.hold = {"psi"}; // the generator locked, as in OpenFAST's parked linearization
         o.json = true;
         std::ostringstream out, err;
-        REQUIRE_MESSAGE(yamsc::driver::trim(o, out, err) == 0, err.str());
+        REQUIRE_MESSAGE(yamsc::analysis::trim(o, out, err) == 0, err.str());
         // "q":[...]
         const std::string json = out.str();
         const auto start = json.find("\"q\":[") + 5;

@@ -8,8 +8,8 @@
 #include <fstream>
 
 using namespace validation;
-using yamsc::driver::read_table;
-using yamsc::driver::Table;
+using yamsc::analysis::read_table;
+using yamsc::analysis::Table;
 
 namespace {
 

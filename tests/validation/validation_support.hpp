@@ -2,8 +2,9 @@
 // Shared by the validation tests: the reference decks, running yamsc's commands in
 // process, and reading numbers out of their text.
 #include "analysis/channels.hpp"
+#include "analysis/commands.hpp"
 #include "analysis/compare.hpp"
-#include "driver/commands.hpp"
+#include "openfast/from_openfast.hpp"
 
 #include <doctest/doctest.h>
 
@@ -66,13 +67,13 @@ inline std::string convert(const Case& c, std::vector<std::pair<std::string, boo
     o.output = model_path(c);
     o.dofs = std::move(dofs);
     std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::driver::from_openfast(o, out, err) == 0, err.str());
+    REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
     return out.str() + err.str();
 }
 
 /// `yamsc sim <model> --channels openfast [--linear] -o csv` (RK4, dt 0.01, or
 /// the method and steps given): the table written.
-inline yamsc::driver::Table
+inline yamsc::analysis::Table
 simulate(const Case& c, bool linear, std::string* log = nullptr,
          yamsc::driver::SimMethod method = yamsc::driver::SimMethod::rk4, double dt = 0.01,
          double dt_out = 0.0) {
@@ -87,9 +88,9 @@ simulate(const Case& c, bool linear, std::string* log = nullptr,
     o.verbose = linear; // prints the linear model's frequencies
     o.output = work_dir + "/" + c.model + (linear ? "_linear" : "") + ".csv";
     std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::driver::sim(o, out, err) == 0, err.str());
+    REQUIRE_MESSAGE(yamsc::analysis::sim(o, out, err) == 0, err.str());
     if (log) *log = out.str();
-    return yamsc::driver::read_table(o.output);
+    return yamsc::analysis::read_table(o.output);
 }
 
 } // namespace validation

@@ -1,0 +1,139 @@
+// `yamsc lin` and `yamsc trim`: the linear model and the operating point.
+#include "analysis/commands.hpp"
+#include "cli/commands/commands.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace yamsc::cli {
+
+namespace {
+
+using driver::LinFormat;
+using driver::LinOptions;
+using driver::TrimOptions;
+
+LinOptions parse_lin(const Args& a) {
+    LinOptions o;
+    o.format = choice(a, "--format", LinFormat::table,
+                      {{"table", LinFormat::table}, {"openfast-lin", LinFormat::openfast_lin}});
+    const bool lin_files = o.format == LinFormat::openfast_lin;
+    o.model = a.model();
+    o.trim = a.has("--trim");
+    o.mbc3 = a.has("--mbc3");
+    o.hold = comma_list(a.get("--hold"));
+    o.adjust = comma_list(a.get("--adjust"));
+    if (!o.trim && !o.adjust.empty()) throw UsageError("--adjust needs --trim");
+    o.azimuth = a.get("--azimuth");
+    const double azimuths = a.number("--azimuths", o.azimuths);
+    if (azimuths != std::floor(azimuths)) throw UsageError("--azimuths must be a whole number");
+    o.azimuths = static_cast<int>(std::min(azimuths, 1e6));
+    o.azimuths_given = a.has("--azimuths");
+    if (!o.trim && !o.mbc3 && !o.azimuths_given && !o.hold.empty())
+        throw UsageError("--hold needs --trim, --mbc3 or --azimuths");
+    if (!o.mbc3 && !lin_files && (a.has("--azimuths") || a.has("--azimuth")))
+        throw UsageError("--azimuths and --azimuth need --mbc3 or --format openfast-lin");
+    if (o.azimuths < 1 || o.azimuths > 3600)
+        throw UsageError("--azimuths must be between 1 and 3600");
+    if (a.has("--sweep")) o.sweep = driver::parse_sweep(a.get("--sweep"));
+    o.output = a.get("-o");
+    o.plot = a.get("--plot");
+    if (!o.sweep && !lin_files && (!o.output.empty() || !o.plot.empty()))
+        throw UsageError("lin writes files (-o, --plot) only for --sweep or --format");
+    if (lin_files && o.output.empty()) throw UsageError("--format openfast-lin needs -o FILE.lin");
+    if (lin_files && (o.sweep || !o.plot.empty()))
+        throw UsageError("--format openfast-lin does not take --sweep or --plot");
+    o.at = a.assignments("--at");
+    o.u = a.assignments("--u");
+    o.set = a.assignments("--set");
+    o.sid = a.get("--sid");
+    o.external = a.get("--external");
+    o.json = a.has("--json");
+    o.aero = a.get("--aero");
+    o.wind = a.get("--wind");
+    if (o.sweep && o.json) throw UsageError("--sweep writes CSV, not --json");
+    o.schedule = a.get("--schedule");
+    if (!o.sweep && !o.schedule.empty()) throw UsageError("--schedule needs --sweep");
+    if (o.sweep && !o.wind.empty() && o.sweep->name == "V_wind")
+        throw UsageError("--sweep V_wind=.. sets the wind: drop --wind");
+    return o;
+}
+
+TrimOptions parse_trim(const Args& a) {
+    TrimOptions o;
+    o.model = a.model();
+    o.at = a.assignments("--at");
+    o.u = a.assignments("--u");
+    o.set = a.assignments("--set");
+    o.sid = a.get("--sid");
+    o.hold = comma_list(a.get("--hold"));
+    o.adjust = comma_list(a.get("--adjust"));
+    o.aero = a.get("--aero");
+    o.wind = a.get("--wind");
+    o.external = a.get("--external");
+    o.json = a.has("--json");
+    return o;
+}
+
+/// What lin and trim share.
+const char* point_help =
+    R"(  --at name=v,..      the point: DOFs and rates (q=v, q'=v) over the `linearize` block
+  --u name=v,..       inputs at the point
+  --set name=v,..     parameter values (accept `deg`: --set theta=5deg)
+  --sid body=file.sid the shape integrals of a flexible body with `symbolic modes`
+  --external LIB      the model's external functions: lib.so, or file.c|file.cpp compiled
+  --aero TABLE        the quasi-steady rotor block from a Cp/Ct/Cq table (ROSCO's format)
+  --wind V            V_wind at the point (a --wind SPEC's value at t = 0)
+  --json              JSON on stdout
+)";
+
+} // namespace
+
+Command lin_command() {
+    return make_command(
+        "lin", "linearize a model: M0, C0, K0, Q0, A, B and the modes; Campbell sweeps",
+        R"(yamsc lin MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--json]
+                    [--trim [--hold dof,..] [--adjust input,..]]
+                    [--mbc3 [--azimuths N] [--azimuth dof]]
+                    [--aero Cp_Ct_Cq.txt] [--wind V]
+                    [--sweep NAME=FROM:STEP:TO [--schedule points.csv] [-o campbell.csv]
+                                               [--plot campbell.svg]]
+                    [--format openfast-lin -o case.lin [--azimuths N [--azimuth dof]]]
+                    [--sid body=file.sid,..] [--external lib.so|file.c|file.cpp])",
+        std::string(point_help) +
+            R"(  --trim              linearize about the trimmed point (yamsc trim --help)
+  --hold dof,..       DOFs trim keeps as given, or that MBC3 leaves out
+  --adjust input,..   inputs trimmed to balance the spinning DOFs (with --trim)
+  --mbc3              the modes of a spinning three-bladed rotor in multi-blade coordinates
+  --azimuths N        linearizations over a revolution (36), 1 to 3600
+  --azimuth dof       the DOF that turns the rotor
+  --sweep NAME=FROM:STEP:TO  a Campbell diagram over a parameter, rate or input (CSV)
+  --schedule FILE     what moves with the swept value: a steady-state table
+  -o FILE             the sweep's CSV, or the .lin file(s) of --format openfast-lin
+  --plot FILE         the sweep's SVG (1P/3P/6P with --mbc3)
+  --format F          table (default), or openfast-lin: OpenFAST's .lin files at -o
+Details: docs/cli.md, docs/linearization.md.
+)",
+        {{"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot", "--hold", "--azimuths",
+          "--azimuth", "--aero", "--wind", "--adjust", "--schedule", "--format", "--external"},
+         {"--json", "--trim", "--mbc3"}},
+        parse_lin, analysis::lin);
+}
+
+Command trim_command() {
+    return make_command(
+        "trim", "the operating point at rest in the model's equations (Newton on F = 0)",
+        R"(yamsc trim MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--hold dof,..]
+                     [--adjust input,..] [--aero Cp_Ct_Cq.txt] [--wind V] [--json]
+                     [--sid body=file.sid,..] [--external lib.so|file.c|file.cpp])",
+        std::string(point_help) +
+            R"(  --hold dof,..       DOFs kept as given (besides those with a rate)
+  --adjust input,..   inputs trimmed so that nothing holds the spinning DOFs (one per rate)
+Details: docs/cli.md, docs/linearization.md.
+)",
+        {{"--at", "--u", "--set", "--sid", "--hold", "--adjust", "--aero", "--wind", "--external"},
+         {"--json"}},
+        parse_trim, analysis::trim);
+}
+
+} // namespace yamsc::cli
