@@ -256,11 +256,7 @@ EmittedFiles emit_c(const Module& module, const EmitOptions& options) {
     names.single_precision = options.real == EmitOptions::Real::single_precision;
     if (!is_c_identifier(names.prefix))
         throw diag::InternalError("code generation: '" + names.prefix + "' is not a C identifier");
-    for (const ParamInfo& p : module.model.params)
-        if (!is_c_identifier(p.name))
-            throw diag::InternalError("code generation: parameter name '" + p.name +
-                                      "' is not an identifier");
-    check_header_name(options.header_name);
+    check_printed_names(module, options);
 
     const std::vector<FunctionPlan> plans = function_plans(module);
     CalleeCosts callee_costs;

@@ -215,11 +215,7 @@ EmittedFiles emit_cpp(const Module& module, const EmitOptions& options) {
         options.namespace_name.empty() ? module.model.name : options.namespace_name;
     if (!is_cpp_namespace(ns))
         throw diag::InternalError("code generation: '" + ns + "' is not a C++ namespace name");
-    for (const ParamInfo& p : module.model.params)
-        if (!is_c_identifier(p.name))
-            throw diag::InternalError("code generation: parameter name '" + p.name +
-                                      "' is not an identifier");
-    check_header_name(options.header_name);
+    check_printed_names(module, options);
 
     const std::vector<FunctionPlan> plans = function_plans(module);
     CalleeCosts callee_costs;

@@ -1,5 +1,5 @@
 // Reading an OpenFAST deck: the `.fst` glue-code file (optional) and the ElastoDyn
-// main file, with every entry accounted for (see openfast_deck.hpp).
+// main file, with every entry accounted for (see deck.hpp).
 #include "openfast/deck.hpp"
 
 #include "openfast/gauges.hpp"

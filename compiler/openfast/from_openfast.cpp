@@ -95,14 +95,11 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
     in.name = model_name(o.output);
     in.tower_path = path_from(folder, deck->tower_file);
     for (const std::string& b : deck->blade_files) in.blade_paths.push_back(path_from(folder, b));
-    const bool blades_rigid = !in.dofs["FlapDOF1"] && !in.dofs["FlapDOF2"] && !in.dofs["EdgeDOF"];
-    const bool tower_rigid = !in.dofs["TwFADOF1"] && !in.dofs["TwFADOF2"] && !in.dofs["TwSSDOF1"] &&
-                             !in.dofs["TwSSDOF2"];
-    if (blades_rigid)
+    if (!blades_are_flexible(in.dofs))
         in.rotor = rigid_rotor(*deck, diags);
     else if (auto tips = blade_tip_shapes(*deck, diags))
         in.blade_tips = *tips;
-    if (tower_rigid) in.tower = rigid_tower(*deck, diags);
+    if (!tower_is_flexible(in.dofs)) in.tower = rigid_tower(*deck, diags);
     in.operation = read_operation(*deck, o.cp_table, diags);
     in.output_file = fs::path(o.output).filename().string();
     if (in.operation) {

@@ -1,4 +1,4 @@
-// The model text of an ElastoDyn turbine (see openfast_model.hpp and docs/openfast.md).
+// The model text of an ElastoDyn turbine (see model.hpp and docs/openfast.md).
 //
 // Frames follow OpenFAST's inertial axes: x downwind, y to the left looking downwind, z
 // up. The tower's fore-aft modes bend along +x, its side-side modes along +y; ElastoDyn's
@@ -8,11 +8,12 @@
 #include "openfast/model.hpp"
 
 #include "openfast/gauges.hpp"
+#include "text/number.hpp"
 
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <initializer_list>
 #include <sstream>
 
 namespace yamsc::driver {
@@ -88,10 +89,8 @@ private:
             if (v(k) != 0) return true;
         return false;
     }
-    bool flexible_tower() const {
-        return on("TwFADOF1") || on("TwSSDOF1") || on("TwFADOF2") || on("TwSSDOF2");
-    }
-    bool flexible_blades() const { return on("FlapDOF1") || on("FlapDOF2") || on("EdgeDOF"); }
+    bool flexible_tower() const { return tower_is_flexible(in_.dofs); }
+    bool flexible_blades() const { return blades_are_flexible(in_.dofs); }
     double v(const std::string& key) const { return d_[key]; }
     /// The rotating body the generator torque acts on and the rotor hangs from.
     std::string shaft_body() const {
@@ -919,12 +918,26 @@ private:
 } // namespace
 
 std::string mbd_number(double v) {
-    if (v == 0) return "0";
-    char buffer[64];
-    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, v);
-    if (error != std::errc()) return "0";
-    std::string s(buffer, end);
-    return s;
+    if (v == 0) return "0"; // never "-0"
+    return text::shortest(v);
+}
+
+namespace {
+
+bool any_on(const std::map<std::string, bool>& dofs, std::initializer_list<const char*> flags) {
+    for (const char* flag : flags)
+        if (auto it = dofs.find(flag); it != dofs.end() && it->second) return true;
+    return false;
+}
+
+} // namespace
+
+bool tower_is_flexible(const std::map<std::string, bool>& dofs) {
+    return any_on(dofs, {"TwFADOF1", "TwSSDOF1", "TwFADOF2", "TwSSDOF2"});
+}
+
+bool blades_are_flexible(const std::map<std::string, bool>& dofs) {
+    return any_on(dofs, {"FlapDOF1", "FlapDOF2", "EdgeDOF"});
 }
 
 std::string mbd_string(const std::string& text) {

@@ -38,4 +38,9 @@ std::string mbd_number(double v);
 /// A string literal of the model language.
 std::string mbd_string(const std::string& text);
 
+/// Whether the ElastoDyn DOFs switched on (`OpenFastModelInput::dofs`) bend the
+/// tower (TwFADOF1/2, TwSSDOF1/2) or the blades (FlapDOF1/2, EdgeDOF).
+bool tower_is_flexible(const std::map<std::string, bool>& dofs);
+bool blades_are_flexible(const std::map<std::string, bool>& dofs);
+
 } // namespace yamsc::driver
