@@ -1,14 +1,11 @@
 #include "analysis/external_library.hpp"
 
+#include "analysis/compiler_invocation.hpp"
 #include "analysis/jit_cache.hpp"
 #include "diag/errors.hpp"
 #include "driver/files.hpp"
 #include "driver/pipeline.hpp"
 
-#include <yamsc/atomic_file.hpp>
-
-#include <cstdio>
-#include <cstdlib>
 #include <dlfcn.h>
 #include <fstream>
 #include <optional>
@@ -33,12 +30,6 @@ std::string source_language(const std::string& spec) {
     return "";
 }
 
-std::string shell_quote(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
 std::string read_all(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw diag::UserError("--external: cannot read '" + path + "'");
@@ -52,7 +43,7 @@ std::string folder_of(const std::string& path) {
     return slash == std::string::npos ? "." : path.substr(0, slash);
 }
 
-const char* const flags = "-O2 -shared -fPIC";
+const std::vector<std::string> flags{"-O2", "-shared", "-fPIC"};
 
 /// The user's source compiled against the prototypes, from the cache when it is there.
 std::string compiled_source(const model::Model& m, const std::string& spec,
@@ -61,41 +52,28 @@ std::string compiled_source(const model::Model& m, const std::string& spec,
     const std::string prototypes = external_prototypes(m);
     const std::string compiler = compiler_of(o.compiler);
     const ModelCache cache(cache_folder(o.cache_dir));
-    const std::string key = digest(language + "\n" + source + "\n" + prototypes + "\n" + flags +
-                                   "\n" + compiler_identity(compiler));
+    const std::string key = digest(language + "\n" + source + "\n" + prototypes + "\n" +
+                                   joined_words(flags) + "\n" + compiler_identity(compiler));
     const std::string library = cache.library_path(m.name + "_external", key);
     if (::access(library.c_str(), R_OK) == 0) {
         if (o.progress) o.progress("using the external functions cached in " + library);
         return library;
     }
     if (o.notice) o.notice("compiling the external functions of " + spec + " with " + compiler);
-    const std::string tmp = library + ".tmp." + std::to_string(::getpid());
-    runtime::write_file_atomically(tmp + ".h", prototypes);
-    const std::string log = tmp + ".log";
-    const std::string cmd = shell_quote(compiler) + " -x " + language +
-                            (language == "c++" ? " -std=c++17 " : " ") + flags + " -include " +
-                            shell_quote(tmp + ".h") + " -I" + shell_quote(folder_of(spec)) +
-                            " -o " + shell_quote(tmp + ".so") + " " + shell_quote(spec) + " > " +
-                            shell_quote(log) + " 2>&1";
-    const int status = std::system(cmd.c_str());
-    std::remove((tmp + ".h").c_str());
-    std::string messages;
-    {
-        std::ifstream in(log);
-        std::stringstream text;
-        text << in.rdbuf();
-        messages = text.str();
-    }
-    std::remove(log.c_str());
-    if (status != 0) {
-        std::remove((tmp + ".so").c_str());
-        throw diag::UserError(
-            "--external " + spec + " does not compile against the model's prototypes (" + compiler +
-            "):\n" + messages.substr(0, 4000) + "the prototypes are:\n" + prototypes);
-    }
-    if (std::rename((tmp + ".so").c_str(), library.c_str()) != 0) {
-        std::remove((tmp + ".so").c_str());
-        throw diag::UserError("cannot store the compiled external functions in '" + library + "'");
+    LibraryBuild build(library);
+    std::vector<std::string> arguments{"-x", language};
+    if (language == "c++") arguments.emplace_back("-std=c++17");
+    arguments.insert(arguments.end(), flags.begin(), flags.end());
+    arguments.insert(arguments.end(),
+                     {"-include", build.temporary(".h", prototypes), "-I" + folder_of(spec), spec});
+    try {
+        build.compile(compiler, arguments);
+    } catch (const CompilerFailed& e) {
+        throw diag::UserError("--external " + spec +
+                              " does not compile against the model's prototypes (" + compiler +
+                              "):\n" + e.messages + "the prototypes are:\n" + prototypes);
+    } catch (const std::runtime_error& e) {
+        throw diag::UserError(e.what());
     }
     return library;
 }

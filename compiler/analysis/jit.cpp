@@ -1,5 +1,6 @@
 #include "analysis/jit.hpp"
 
+#include "analysis/compiler_invocation.hpp"
 #include "analysis/jit_cache.hpp"
 #include "codegen/emit.hpp"
 #include "codegen/module.hpp"
@@ -30,8 +31,9 @@ namespace {
 // numbers stay those of a plain -O2 build to the last bit (the Python module,
 // `eval` and the compiled libraries of the tests agree exactly; FMA would be
 // another 5-8 %).
-const char* const compile_flags =
-    "-std=c++17 -O2 -march=native -ffp-contract=off -shared -fPIC -fvisibility=hidden";
+const std::vector<std::string> compile_flags{"-std=c++17",         "-O2",     "-march=native",
+                                             "-ffp-contract=off",  "-shared", "-fPIC",
+                                             "-fvisibility=hidden"};
 
 /// rhs (the loader needs it) and the others; throws std::invalid_argument for
 /// a routine the C ABI does not export.
@@ -44,12 +46,6 @@ codegen::RoutineSet normalised(codegen::RoutineSet routines) {
     return routines;
 }
 
-std::string shell_quote(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
 std::string seconds_text(double s) {
     char buf[32];
     std::snprintf(buf, sizeof buf, s < 10 ? "%.1f s" : "%.0f s", s);
@@ -58,27 +54,14 @@ std::string seconds_text(double s) {
 
 /// Compiles `source` into `library` (atomically: a temporary file renamed).
 void compile(const std::string& compiler, const std::string& source, const std::string& library) {
-    const std::string tmp = library + ".tmp." + std::to_string(::getpid());
-    runtime::write_file_atomically(tmp + ".cpp", source);
-    const std::string log = tmp + ".log";
-    const std::string cmd = shell_quote(compiler) + " " + compile_flags + " -o " +
-                            shell_quote(tmp + ".so") + " " + shell_quote(tmp + ".cpp") + " > " +
-                            shell_quote(log) + " 2>&1";
-    const int status = std::system(cmd.c_str());
-    std::remove((tmp + ".cpp").c_str());
-    if (status != 0) {
-        std::ifstream in(log);
-        std::stringstream messages;
-        messages << in.rdbuf();
-        std::remove(log.c_str());
-        std::remove((tmp + ".so").c_str());
+    LibraryBuild build(library);
+    std::vector<std::string> arguments = compile_flags;
+    arguments.push_back(build.temporary(".cpp", source));
+    try {
+        build.compile(compiler, arguments);
+    } catch (const CompilerFailed& e) {
         throw std::runtime_error("the C++ compiler failed on the generated model (" + compiler +
-                                 "):\n" + messages.str().substr(0, 4000));
-    }
-    std::remove(log.c_str());
-    if (std::rename((tmp + ".so").c_str(), library.c_str()) != 0) {
-        std::remove((tmp + ".so").c_str());
-        throw std::runtime_error("cannot store the compiled model in '" + library + "'");
+                                 "):\n" + e.messages);
     }
 }
 
@@ -112,9 +95,10 @@ std::unique_ptr<runtime::SharedModel> load_compiled_model(const ModelIdentity& i
     const std::string names = codegen::routine_names(routines);
     const std::string compiler = compiler_of(o.compiler);
     const ModelCache cache(cache_folder(o.cache_dir));
-    const std::string key = digest(id.content_digest + "\n" + names + "\n" + compile_flags + "\n" +
-                                   compiler_identity(compiler) + "\n" + cpu_identity() + "\n" +
-                                   program_identity() + "\n" + abi_export_text);
+    const std::string key =
+        digest(id.content_digest + "\n" + names + "\n" + joined_words(compile_flags) + "\n" +
+               compiler_identity(compiler) + "\n" + cpu_identity() + "\n" + program_identity() +
+               "\n" + abi_export_text);
     const std::string library = cache.library_path(id.model_name, key);
     if (::access(library.c_str(), R_OK) == 0) {
         try {

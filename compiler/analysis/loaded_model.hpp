@@ -38,8 +38,8 @@ struct Loaded {
 /// lib.so|file.c|file.cpp, analysis/external_library.hpp); required when it declares any.
 std::optional<Loaded> load(const std::string& path, const std::vector<driver::Assignment>& set,
                            const std::string& sid_spec, bool verbose, std::ostream& err,
-                           const std::vector<driver::NamedFile>& outputs, codegen::RoutineSet routines,
-                           const std::string& external = "");
+                           const std::vector<driver::NamedFile>& outputs,
+                           codegen::RoutineSet routines, const std::string& external = "");
 
 /// `load` without binding the parameters (`params` and `view` empty): for
 /// commands that bind them per case with bind_parameters.

@@ -2,7 +2,7 @@
 // The modes of a turbine with a spinning three-bladed rotor, as OpenFAST's
 // MBC3 post-processing gives them: the rotor held at its speed, the model
 // linearized at N azimuths, each state matrix transformed to multi-blade
-// coordinates (runtime/mbc3.hpp), averaged, eigen-analysed, and every mode
+// coordinates (yamsc/mbc3.hpp), averaged, eigen-analysed, and every mode
 // labelled by the parts that hold most of its kinetic energy ("q_flap1 BW",
 // "q_fa1"), a whirl's direction from the phase of its cyclic coordinates.
 #include "yamsc/mbc3.hpp"

@@ -8,6 +8,7 @@
 #include "driver/outputs.hpp"
 
 #include "diag/errors.hpp"
+#include "text/number.hpp"
 
 #include "embedded_hermite.hpp"
 
@@ -15,7 +16,6 @@
 #include <yamsc/performance_table.hpp>
 
 #include <cctype>
-#include <charconv>
 #include <sstream>
 
 namespace yamsc::analysis {
@@ -26,9 +26,7 @@ namespace {
 
 /// The shortest text that reads back as the same double (a C literal).
 std::string literal(double value) {
-    char buffer[64];
-    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
-    std::string text = error == std::errc() ? std::string(buffer, end) : "0";
+    std::string text = text::shortest(value);
     if (text.find_first_of(".e") == std::string::npos) text += ".0";
     return text;
 }

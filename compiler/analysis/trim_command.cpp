@@ -1,5 +1,5 @@
 // `yamsc trim`: the operating point at rest in the model's own equations
-// (runtime/trim.hpp), from the model's `linearize` point moved by --at/--u;
+// (yamsc/trim.hpp), from the model's `linearize` point moved by --at/--u;
 // with --aero and --wind, in steady wind, the --adjust inputs trimmed too.
 #include "analysis/loaded_model.hpp"
 #include "analysis/rotor_aero_setup.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // Trim as `yamsc trim` and `yamsc lin --trim` use it: which DOFs are held, the
-// Newton solve (runtime/trim.hpp), and the error that names the DOFs left out
+// Newton solve (yamsc/trim.hpp), and the error that names the DOFs left out
 // of balance.
 #include <yamsc/trim.hpp>
 

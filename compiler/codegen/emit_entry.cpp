@@ -13,11 +13,7 @@ std::string checked_scope(const Module& module, const EmitOptions& options, Scop
         throw diag::InternalError("code generation: '" + scope + "' is not a C++ namespace name");
     if (rule == ScopeName::c_identifier && !is_c_identifier(scope))
         throw diag::InternalError("code generation: '" + scope + "' is not a C identifier");
-    for (const ParamInfo& p : module.model.params)
-        if (!is_c_identifier(p.name))
-            throw diag::InternalError("code generation: parameter name '" + p.name +
-                                      "' is not an identifier");
-    check_header_name(options.header_name);
+    check_printed_names(module, options);
     return scope;
 }
 

@@ -22,8 +22,12 @@ void list(std::string& out, const char* heading, const char* array,
 
 } // namespace
 
-void check_header_name(const std::string& name) {
-    for (const char c : name)
+void check_printed_names(const Module& module, const EmitOptions& options) {
+    for (const ParamInfo& p : module.model.params)
+        if (!is_c_identifier(p.name))
+            throw diag::InternalError("code generation: parameter name '" + p.name +
+                                      "' is not an identifier");
+    for (const char c : options.header_name)
         if (c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20)
             throw diag::InternalError("code generation: invalid header name for #include");
 }

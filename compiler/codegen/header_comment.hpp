@@ -19,7 +19,9 @@ std::string header_comment(const Module& module, const EmitOptions& options,
                            const std::string& language, const std::string& namespace_name,
                            const std::vector<FunctionCost>& costs);
 
-/// Rejects names that would not survive as an #include "..." operand.
-void check_header_name(const std::string& name);
+/// What every emitter checks before printing (an internal error otherwise:
+/// the checker guarantees it): each parameter name a C identifier, the header
+/// name one that survives as an #include "..." operand.
+void check_printed_names(const Module& module, const EmitOptions& options);
 
 } // namespace yamsc::codegen

@@ -1,8 +1,9 @@
 #include "codegen/syntax.hpp"
 
+#include "text/number.hpp"
+
 #include <cfloat>
 #include <cmath>
-#include <fmt/format.h>
 
 namespace yamsc::codegen {
 namespace {
@@ -52,8 +53,8 @@ Syntax neutral_syntax() {
 }
 
 std::string format_number(double value) {
-    // fmt's default for double is the shortest representation that round-trips.
-    std::string text = fmt::format("{}", value);
+    // Plain notation up to 1e16, then exponent notation (fmt's and Python's layout).
+    std::string text = text::shortest_general(value);
     if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
     return text;
 }
@@ -71,9 +72,9 @@ std::string format_float(double value) {
     // it is below 5e-7, and in practice such constants are round-off of the
     // model's data (4e-54 in the floating template's forcing).
     const auto single = static_cast<float>(value);
-    // fmt's default for float is the shortest representation that round-trips
-    // as a float, so 9.81 prints as 9.81, not as the double 9.8100004196166992.
-    std::string text = fmt::format("{}", single);
+    // The shortest text that reads back as the same float, so 9.81 prints as
+    // 9.81, not as the double 9.8100004196166992.
+    std::string text = text::shortest_general(single);
     if (text.find_first_of(".eE") == std::string::npos) text += ".0";
     return text + "f";
 }

@@ -1,5 +1,7 @@
 #include "diag/diagnostics.hpp"
 
+#include "text/utf8.hpp"
+
 #include <algorithm>
 #include <cctype>
 
@@ -83,23 +85,6 @@ std::string_view severity_word(Severity s) {
     return "error";
 }
 
-/// The length of the valid UTF-8 sequence starting at `s[i]`, or 0.
-std::size_t utf8_length(std::string_view s, std::size_t i) {
-    const auto lead = static_cast<unsigned char>(s[i]);
-    std::size_t n = 0;
-    if (lead >= 0xC2 && lead <= 0xDF)
-        n = 2;
-    else if (lead >= 0xE0 && lead <= 0xEF)
-        n = 3;
-    else if (lead >= 0xF0 && lead <= 0xF4)
-        n = 4;
-    if (n == 0 || i + n > s.size()) return 0;
-    for (std::size_t k = 1; k < n; ++k) {
-        if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return 0;
-    }
-    return n;
-}
-
 /// The quoted source line and the caret line under it. Control characters and invalid UTF-8
 /// show as '?'; tabs are kept in both lines so that the caret lines up; a very long line is
 /// shown as a window around the caret.
@@ -112,7 +97,7 @@ std::string quote_line(std::string_view line, int col) {
         begin = std::min(caret > window / 2 ? caret - window / 2 : 0, line.size());
         end = std::min(line.size(), begin + window);
         const auto continuation = [&](std::size_t i) {
-            return i < line.size() && (static_cast<unsigned char>(line[i]) & 0xC0) == 0x80;
+            return i < line.size() && text::utf8_continuation(static_cast<unsigned char>(line[i]));
         };
         while (begin > 0 && continuation(begin)) --begin;
         while (end < line.size() && continuation(end)) ++end;
@@ -128,7 +113,7 @@ std::string quote_line(std::string_view line, int col) {
             shown += '?';
         } else if (c < 0x80) {
             shown += static_cast<char>(c);
-        } else if ((n = utf8_length(line, i)) > 0) {
+        } else if ((n = text::utf8_sequence_length(line.substr(i))) > 0) {
             shown.append(line.substr(i, n));
         } else {
             n = 1;

@@ -1,8 +1,9 @@
 #include "driver/json.hpp"
 
+#include "text/number.hpp"
+
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 
 namespace yamsc::driver::json {
 
@@ -38,12 +39,7 @@ std::string quote(const std::string& s) {
 std::string number(double v) {
     if (!std::isfinite(v)) return "null";
     if (v == 0) return "0"; // no "-0"
-    char buf[32];
-    for (int precision = 15; precision <= 17; ++precision) {
-        std::snprintf(buf, sizeof buf, "%.*g", precision, v);
-        if (std::strtod(buf, nullptr) == v) break;
-    }
-    return buf;
+    return text::shortest_printf(v, 15);
 }
 
 std::string array(const std::vector<double>& v) {

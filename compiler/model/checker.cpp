@@ -210,8 +210,9 @@ private:
         for (const auto& p : model_.params)
             if (p.value) values[p.name] = *p.value;
         FlexibleInputs in{names_, values, data_, diags_};
-        auto flex = check_flexible(fb, in);
-        if (!flex) return std::nullopt;
+        auto checked = check_flexible(fb, in);
+        if (!checked) return std::nullopt;
+        if (checked->beam) beams_.emplace(fb.name, std::move(*checked->beam));
         Body b;
         b.name = fb.name;
         b.kind = Body::Kind::flexible;
@@ -219,7 +220,7 @@ private:
         b.mass = number("0", fb.loc);
         b.com = zero_vec(fb.loc);
         for (auto& e : b.inertia) e = number("0", fb.loc);
-        b.flex = std::move(flex);
+        b.flex = std::move(checked->flex);
         if (b.flex->symbolic) {
             for (const auto& sp : shape_parameters(b.name, *b.flex)) {
                 if (!declare(sp.name, NameKind::param, static_cast<int>(model_.params.size()),
@@ -728,7 +729,8 @@ private:
             return false;
         }
         Flexible& flex = *body.flex;
-        if (!flex.beam || flex.symbolic) {
+        const auto beam = beams_.find(name);
+        if (beam == beams_.end() || flex.symbolic) {
             diags_.error(Kind::NotSupported, e.loc,
                          "flexible body '" + name + "' cannot be cut at a section: its " +
                              (flex.symbolic ? "shape integrals are symbolic parameters"
@@ -740,7 +742,7 @@ private:
         const int node = section_node(body, e.text == "tip" ? nullptr : &e.args[1], e.loc);
         if (node < 0) return false;
         if (!flex.sections.count(node)) {
-            auto part = data_.section_sid(*flex.beam, node, e.loc, diags_);
+            auto part = data_.section_sid(beam->second, node, e.loc, diags_);
             if (!part) return false;
             flex.sections.emplace(node, std::make_shared<const sid::Sid>(std::move(*part)));
         }
@@ -1090,6 +1092,8 @@ private:
     DataSource& data_;
     diag::Diagnostics& diags_;
     Model model_;
+    /// The beams the SIDs of beam blocks were made of, by body: what sections cut.
+    std::map<std::string, beam::Beam> beams_;
     SymbolTable names_;
     ExprChecker exprs_;
 };

@@ -42,9 +42,10 @@ class FlexibleChecker {
 public:
     FlexibleChecker(const ast::FlexibleBody& body, FlexibleInputs& in) : b_(body), in_(in) {}
 
-    std::optional<Flexible> run() {
+    std::optional<CheckedFlexible> run() {
         std::vector<ast::ModeEntry> modes;
         std::optional<sid::Sid> data;
+        std::optional<beam::Beam> beam_made_of;
         int taylor = 1;
         const ast::Property* sid_file = nullptr;
         for (const auto& p : b_.properties) {
@@ -80,7 +81,7 @@ public:
             flex.description = "symbolic shape integrals";
             if (!modes_of_sid(modes, b_.loc, *data, flex)) return std::nullopt;
             flex.sid = std::make_shared<const sid::Sid>(std::move(*data));
-            return flex;
+            return CheckedFlexible{std::move(flex), std::nullopt};
         }
         if (sources != 1) {
             error(sources ? Kind::InvalidValue : Kind::MissingProperty, b_.loc,
@@ -106,7 +107,7 @@ public:
             if (!beam) return std::nullopt;
             data = in_.data.beam_sid(*beam, b_.name, b_.beam->loc, in_.diags);
             if (!data) return std::nullopt;
-            flex.beam = std::make_shared<const beam::Beam>(*beam);
+            beam_made_of = std::move(beam);
             flex.dofs.clear();
             for (const auto& m : beam_modes_) {
                 flex.sid_modes.push_back(static_cast<int>(flex.dofs.size()));
@@ -115,7 +116,7 @@ public:
             if (std::count(flex.dofs.begin(), flex.dofs.end(), -1)) return std::nullopt;
         }
         flex.sid = std::make_shared<const sid::Sid>(std::move(*data));
-        return flex;
+        return CheckedFlexible{std::move(flex), std::move(beam_made_of)};
     }
 
 private:
@@ -404,7 +405,7 @@ std::optional<beam::Beam> FlexibleChecker::inline_beam(const ast::Beam& block, d
 
 } // namespace
 
-std::optional<Flexible> check_flexible(const ast::FlexibleBody& body, FlexibleInputs& in) {
+std::optional<CheckedFlexible> check_flexible(const ast::FlexibleBody& body, FlexibleInputs& in) {
     return FlexibleChecker(body, in).run();
 }
 

@@ -17,8 +17,16 @@ struct FlexibleInputs {
     diag::Diagnostics& diags;
 };
 
+/// A checked `flexible` block and, for a beam block, the beam its SID was made
+/// of: the checker cuts it at the sections outputs name; the model keeps only
+/// the SIDs.
+struct CheckedFlexible {
+    Flexible flex;
+    std::optional<beam::Beam> beam;
+};
+
 /// Checks a `flexible NAME { ... }` block; nullopt after reporting errors.
-std::optional<Flexible> check_flexible(const ast::FlexibleBody& body, FlexibleInputs& in);
+std::optional<CheckedFlexible> check_flexible(const ast::FlexibleBody& body, FlexibleInputs& in);
 
 /// The SID restricted to the modes `keep` (indices into sid's modes, in the new order).
 sid::Sid select_modes(const sid::Sid& sid, const std::vector<int>& keep);

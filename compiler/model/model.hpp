@@ -4,7 +4,6 @@
 // to bodies. Expressions are still ast::Expr, but every name in them is known to
 // be declared and allowed where it stands (see checker.hpp). Plain data.
 #include "ast/ast.hpp"
-#include "beam/beam.hpp"
 #include "sid/sid.hpp"
 
 #include <array>
@@ -71,8 +70,6 @@ struct Flexible {
     /// shape_parameter_name(); the SID holds their defaults (NaN: no default).
     bool symbolic = false;
     std::vector<int> sid_modes; // index in the original SID of each mode kept
-    /// The beam the SID was made of (null for SID files): what a section needs.
-    std::shared_ptr<const beam::Beam> beam;
     /// Per SID node index cut by an output (`reaction_moment(tower.node(10))`): the
     /// inertia integrals of the part beyond it (beam::make_section_sid).
     std::map<int, std::shared_ptr<const sid::Sid>> sections;

@@ -1,4 +1,4 @@
-// The model text of an ElastoDyn turbine (see openfast_model.hpp and docs/openfast.md).
+// The model text of an ElastoDyn turbine (see model.hpp and docs/openfast.md).
 //
 // Frames follow OpenFAST's inertial axes: x downwind, y to the left looking downwind, z
 // up. The tower's fore-aft modes bend along +x, its side-side modes along +y; ElastoDyn's
@@ -8,11 +8,12 @@
 #include "openfast/model.hpp"
 
 #include "openfast/gauges.hpp"
+#include "text/number.hpp"
 
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <initializer_list>
 #include <sstream>
 
 namespace yamsc::openfast {
@@ -917,12 +918,8 @@ private:
 } // namespace
 
 std::string mbd_number(double v) {
-    if (v == 0) return "0";
-    char buffer[64];
-    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, v);
-    if (error != std::errc()) return "0";
-    std::string s(buffer, end);
-    return s;
+    if (v == 0) return "0"; // never "-0"
+    return text::shortest(v);
 }
 
 std::string mbd_string(const std::string& text) {

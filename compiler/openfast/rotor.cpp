@@ -1,4 +1,4 @@
-// Lumped rigid rotor and tower of an ElastoDyn deck (see openfast_rotor.hpp).
+// Lumped rigid rotor and tower of an ElastoDyn deck (see rotor.hpp).
 #include "openfast/rotor.hpp"
 
 #include "driver/files.hpp"

@@ -2,6 +2,7 @@
 
 #include "ast/keywords.hpp"
 #include "diag/diagnostics.hpp"
+#include "text/utf8.hpp"
 
 #include <cstdio>
 
@@ -33,27 +34,10 @@ std::string quoted(std::string_view word) {
     return "'" + std::string(word) + "'";
 }
 
-/// The length of the UTF-8 sequence at the start of `s`, or 0 if it is not valid UTF-8.
-std::size_t utf8_sequence_length(std::string_view s) {
-    const auto lead = static_cast<unsigned char>(s[0]);
-    std::size_t n = 0;
-    if (lead >= 0xC2 && lead <= 0xDF)
-        n = 2;
-    else if (lead >= 0xE0 && lead <= 0xEF)
-        n = 3;
-    else if (lead >= 0xF0 && lead <= 0xF4)
-        n = 4;
-    if (n == 0 || s.size() < n) return 0;
-    for (std::size_t i = 1; i < n; ++i) {
-        if ((static_cast<unsigned char>(s[i]) & 0xC0) != 0x80) return 0;
-    }
-    return n;
-}
-
 std::string describe_char(std::string_view rest) {
     const auto c = static_cast<unsigned char>(rest[0]);
     if (c > 0x20 && c < 0x7F) return quoted(rest.substr(0, 1));
-    if (const std::size_t n = utf8_sequence_length(rest)) return quoted(rest.substr(0, n));
+    if (const std::size_t n = text::utf8_sequence_length(rest)) return quoted(rest.substr(0, n));
     char hex[16];
     std::snprintf(hex, sizeof hex, "byte 0x%02X", static_cast<unsigned>(c));
     return hex;

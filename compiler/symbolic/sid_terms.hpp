@@ -44,7 +44,8 @@ private:
     std::vector<GiNaC::ex> q_, qd_;
 };
 
-/// An exact GiNaC number for a double read from data (shortest round-trip decimal).
+/// An exact GiNaC number for a double read from data: its 17 significant digits
+/// (%.17g, which read back as the same double; the golden files depend on them).
 GiNaC::ex data_number(double v);
 
 /// How a node moves relative to its body: p = origin + Φ q + ½ qᵀ Φ¹ q (the

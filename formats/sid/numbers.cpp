@@ -1,5 +1,7 @@
 #include "sid/numbers.hpp"
 
+#include "text/number.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -54,11 +56,8 @@ std::optional<long long> parse_integer(std::string_view text) {
 }
 
 std::string format_real(double value) {
-    if (std::isnan(value)) return "nan";
-    char buffer[64];
-    const auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-    if (ec != std::errc()) return "nan"; // cannot happen: 64 bytes hold any double
-    return std::string(buffer, ptr);
+    if (std::isnan(value)) return "nan"; // never "-nan"
+    return text::shortest(value);
 }
 
 } // namespace yamsc::sid

@@ -32,6 +32,19 @@ class Quantity(NamedTuple):
     value: Optional[float] = None    # parameters: the value bound at load()
 
 
+def _pandas(frame):
+    """pandas when a DataFrame is wanted: `frame` True (pandas required) or
+    None (if pandas is installed); else None."""
+    if not (frame is None or frame):
+        return None
+    try:
+        import pandas
+    except ImportError:
+        if frame:
+            raise
+        return None
+    return pandas
+
 def _assignments(values, what):
     """{"psi'": 1.2} -> [("psi", 1, 1.2)]: the driver's Assignment (name, primes, value)."""
     if values is None:
@@ -209,16 +222,11 @@ class Model:
             data[name] = run["states"][:, j]
         for j, name in enumerate(columns[1 + nx:]):
             data[name] = run["outputs"][:, j]
-        if frame is None or frame:
-            try:
-                import pandas
-            except ImportError:
-                if frame:
-                    raise
-            else:
-                df = pandas.DataFrame(data, copy=False)
-                df.attrs["completed"] = run["completed"]
-                return df
+        pandas = _pandas(frame)
+        if pandas is not None:
+            df = pandas.DataFrame(data, copy=False)
+            df.attrs["completed"] = run["completed"]
+            return df
         return data
 
 

@@ -19,6 +19,7 @@ import sys
 import uuid
 
 from . import _yamsc
+from . import _pandas
 
 __all__ = ["run", "default_output_dir", "read_summary"]
 
@@ -35,15 +36,10 @@ def read_summary(path, frame=None):
     file's columns (row, id, status, final, message, wall_s) when pandas is
     present and frame is not False, else a list of dicts."""
     rows = _yamsc.read_batch_summary(os.fspath(path))
-    if frame is None or frame:
-        try:
-            import pandas
-        except ImportError:
-            if frame:
-                raise
-        else:
-            columns = ["row", "id", "status", "final", "message", "wall_s"]
-            return pandas.DataFrame(rows, columns=columns)
+    pandas = _pandas(frame)
+    if pandas is not None:
+        columns = ["row", "id", "status", "final", "message", "wall_s"]
+        return pandas.DataFrame(rows, columns=columns)
     return rows
 
 

@@ -1,5 +1,7 @@
 // `yamsc lin` and `yamsc sim` end to end: the pendulum's natural frequency
 // sqrt(g/L)/2π from the generated Jacobian, and a CSV written by sim.
+#include "json_values.hpp"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -8,6 +10,10 @@
 #include <string>
 #include <sys/wait.h>
 #include <vector>
+
+using test_support::json_matrix;
+using test_support::json_number;
+using test_support::json_numbers_of;
 
 namespace {
 
@@ -27,21 +33,60 @@ double number_after(const std::string& text, const std::string& key) {
 
 } // namespace
 
-TEST_CASE("lin: the pendulum's frequency is sqrt(g/L)/2pi, for any L given with --set") {
-    std::string model = std::string(YAMSC_SOURCE_DIR) + "/models/pendulum.mbd";
+TEST_CASE("lin: the pendulum's matrices and frequency sqrt(g/L)/2pi, for any L given with --set") {
+    const std::string model = std::string(YAMSC_SOURCE_DIR) + "/models/pendulum.mbd";
+    const double m = 1.0, g = 9.81;
     for (double L : {1.0, 2.5}) {
-        std::string json = capture("lin " + model + " --set L=" + std::to_string(L) + " --json");
-        double f = number_after(json, "\"freq_hz\":");
-        CHECK(f == doctest::Approx(std::sqrt(9.81 / L) / (2 * M_PI)).epsilon(1e-12));
-        CHECK(json.find("\"K0\":[[" + std::string(L == 1.0 ? "9.81" : "24.52")) !=
-              std::string::npos);
+        CAPTURE(L);
+        const std::string json =
+            capture("lin " + model + " --set L=" + std::to_string(L) + " --json");
+        // About the hanging equilibrium: m L^2 theta'' + m g L theta = 0.
+        const auto M0 = json_matrix(json, "M0"), C0 = json_matrix(json, "C0"),
+                   K0 = json_matrix(json, "K0");
+        REQUIRE(M0.size() == 1);
+        REQUIRE(M0[0].size() == 1);
+        CHECK(M0[0][0] == doctest::Approx(m * L * L).epsilon(1e-14));
+        CHECK(C0 == std::vector<std::vector<double>>{{0.0}});
+        REQUIRE(K0.size() == 1);
+        REQUIRE(K0[0].size() == 1);
+        CHECK(K0[0][0] == doctest::Approx(m * g * L).epsilon(1e-14));
+        CHECK(json_number(json, "freq_hz") ==
+              doctest::Approx(std::sqrt(g / L) / (2 * M_PI)).epsilon(1e-12));
     }
 }
 
 TEST_CASE("lin: a free rotor azimuth is a rigid-body mode") {
     std::string json =
         capture("lin " + std::string(YAMSC_SOURCE_DIR) + "/models/nrel5mw_spar_rigid.mbd --json");
-    CHECK(json.find("\"rigid_body\":true") != std::string::npos);
+    // The azimuth has no stiffness or damping; nor, in this model, has surge.
+    const auto M0 = json_matrix(json, "M0"), C0 = json_matrix(json, "C0"),
+               K0 = json_matrix(json, "K0");
+    REQUIRE(K0.size() == 3);
+    for (std::size_t i = 0; i < 3; ++i) {
+        CHECK(K0[i][2] == 0);
+        CHECK(K0[2][i] == 0);
+        CHECK(C0[i][2] == 0);
+    }
+    CHECK(M0[0][2] == 0);
+    CHECK(M0[1][2] == 0);
+    CHECK(K0[0][0] == 0);
+    CHECK(M0[2][2] > 0);
+    // Two rigid-body modes (surge, azimuth) at 0 Hz, then platform pitch: the
+    // non-zero root of det(K - w^2 M) = 0 over surge and pitch.
+    std::vector<bool> rigid;
+    for (auto at = json.find("\"rigid_body\":"); at != std::string::npos;
+         at = json.find("\"rigid_body\":", at + 1))
+        rigid.push_back(json.compare(at + 13, 4, "true") == 0);
+    CHECK(rigid == std::vector<bool>{true, true, false});
+    const double det_m = M0[0][0] * M0[1][1] - M0[0][1] * M0[1][0];
+    const double w2 =
+        (M0[0][0] * K0[1][1] + M0[1][1] * K0[0][0] - M0[0][1] * K0[1][0] - M0[1][0] * K0[0][1]) /
+        det_m;
+    const auto freqs = json_numbers_of(json, "freq_hz");
+    REQUIRE(freqs.size() == 3);
+    CHECK(freqs[0] == 0);
+    CHECK(freqs[1] == 0);
+    CHECK(freqs[2] == doctest::Approx(std::sqrt(w2) / (2 * M_PI)).epsilon(1e-9));
 }
 
 TEST_CASE("sim: writes the CSV header of cli.md and the initial state") {

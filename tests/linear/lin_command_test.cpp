@@ -1,6 +1,7 @@
 // `yamsc lin` linearizes at the model's `linearize` point, evaluated with the
 // parameters of the run (--set), overridden by --at.
 #include "generated_model.hpp"
+#include "json_values.hpp"
 
 #include <doctest/doctest.h>
 
@@ -9,6 +10,8 @@
 #include <sstream>
 
 using namespace linear_test;
+using test_support::json_array;
+using test_support::json_number;
 
 namespace {
 
@@ -26,28 +29,6 @@ Lin lin(const std::string& args) {
     return {read_file(dir + "/out.txt"), read_file(dir + "/err.txt")};
 }
 
-/// The numbers of a JSON array value `"key":[...]` (flat arrays only).
-std::vector<double> array(const std::string& json, const std::string& key) {
-    const auto at = json.find("\"" + key + "\":[");
-    REQUIRE_MESSAGE(at != std::string::npos, key << " in " << json);
-    std::vector<double> out;
-    const char* p = json.c_str() + at + key.size() + 4;
-    while (*p != ']') {
-        char* end = nullptr;
-        out.push_back(std::strtod(p, &end));
-        REQUIRE_MESSAGE(end != p, "not a number in " << key << ": " << p); // else no progress
-        p = end;
-        if (*p == ',') ++p;
-    }
-    return out;
-}
-
-double first_number(const std::string& json, const std::string& key) {
-    const auto at = json.find("\"" + key + "\":");
-    REQUIRE(at != std::string::npos);
-    return std::strtod(json.c_str() + at + key.size() + 3, nullptr);
-}
-
 } // namespace
 
 TEST_CASE("yamsc lin: the model's operating point, a function of the parameters") {
@@ -55,28 +36,29 @@ TEST_CASE("yamsc lin: the model's operating point, a function of the parameters"
     for (double th0 : {0.4, 0.9}) {
         CAPTURE(th0);
         Lin r = lin("--json" + (th0 == 0.4 ? std::string() : " --set th0=0.9"));
-        CHECK(array(r.out, "q0")[0] == doctest::Approx(th0).epsilon(1e-15));
-        CHECK(array(r.out, "u0")[0] == doctest::Approx(m * g * L * std::sin(th0)).epsilon(1e-14));
-        CHECK(first_number(r.out, "equilibrium_residual") < 1e-12);
+        CHECK(json_array(r.out, "q0")[0] == doctest::Approx(th0).epsilon(1e-15));
+        CHECK(json_array(r.out, "u0")[0] ==
+              doctest::Approx(m * g * L * std::sin(th0)).epsilon(1e-14));
+        CHECK(json_number(r.out, "equilibrium_residual") < 1e-12);
         // No warning (stderr may say that the model is being compiled).
         CHECK(r.err.find("warning") == std::string::npos);
         const double wn = std::sqrt(g * std::cos(th0) / L);
-        CHECK(first_number(r.out, "freq_hz") == doctest::Approx(wn / (2 * M_PI)).epsilon(1e-12));
-        CHECK(first_number(r.out, "damping_ratio") ==
+        CHECK(json_number(r.out, "freq_hz") == doctest::Approx(wn / (2 * M_PI)).epsilon(1e-12));
+        CHECK(json_number(r.out, "damping_ratio") ==
               doctest::Approx(c / (2 * m * L * L * wn)).epsilon(1e-12));
     }
 }
 
 TEST_CASE("yamsc lin: --at overrides the point and a moving point is reported") {
     Lin r = lin("--json --at theta=0.7");
-    CHECK(array(r.out, "q0")[0] == 0.7);
+    CHECK(json_array(r.out, "q0")[0] == 0.7);
     // The torque still holds 0.4 rad: not an equilibrium at 0.7 rad.
     const double F = 1.3 * 9.81 * 0.9 * (std::sin(0.4) - std::sin(0.7));
-    CHECK(array(r.out, "residual")[0] == doctest::Approx(F).epsilon(1e-12));
+    CHECK(json_array(r.out, "residual")[0] == doctest::Approx(F).epsilon(1e-12));
     Lin text = lin("--at theta=0.7,tau=1");
     CHECK(text.err.find("warning: the operating point is not an equilibrium") != std::string::npos);
     Lin inputs = lin("--json --at tau=2.5");
-    CHECK(array(inputs.out, "u0")[0] == 2.5);
+    CHECK(json_array(inputs.out, "u0")[0] == 2.5);
 }
 
 TEST_CASE("yamsc lin --sweep: a Campbell diagram as CSV and SVG") {
@@ -112,7 +94,7 @@ TEST_CASE("yamsc lin --sweep: a Campbell diagram as CSV and SVG") {
     // The same as a single linearization at that speed.
     const std::string single = dir + "/single.json";
     REQUIRE(run(std::string(YAMSC_EXE) + " lin " + blade + " --set Omega=1.2 --json > " + single));
-    CHECK(first_number(read_file(single), "freq_hz") == doctest::Approx(rows[3][1]).epsilon(1e-12));
+    CHECK(json_number(read_file(single), "freq_hz") == doctest::Approx(rows[3][1]).epsilon(1e-12));
     const std::string svg = read_file(dir + "/c.svg");
     CHECK(svg.rfind("<svg", 0) == 0);
     std::size_t lines_drawn = 0;

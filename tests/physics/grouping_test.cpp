@@ -138,7 +138,7 @@ TEST_CASE("derive() sums M and F with the grouping that costs the fewest operati
         CHECK(chosen == cheapest);
     }
     // The 16-DOF turbine: the composites take about a quarter off M and F
-    // (7653 -> 5921 operations when this was written).
+    // (7653 -> 5921 operations).
     const model::Model m = checked(turbine_16dof());
     CHECK(cost(derive(m, std::nullopt)) < 0.8 * cost(derive(m, symbolic::Grouping::none)));
 }

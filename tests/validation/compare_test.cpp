@@ -1,5 +1,6 @@
 // Reference tables, the error measures of --compare, OpenFAST channel naming and the SVG
 // writer, on data whose answers are known by hand.
+#include "analysis/campbell.hpp"
 #include "analysis/svg_plot.hpp"
 #include "diag/errors.hpp"
 #include "validation_support.hpp"
@@ -116,4 +117,37 @@ TEST_CASE("svg: round ticks, one polyline per curve, escaped text, same bytes ev
     CHECK(svg.find("stroke-dasharray") != std::string::npos);
     CHECK(svg.find("a &amp; b") != std::string::npos);
     CHECK(svg.find("Q_TFA1_[m] &lt;x&gt;") != std::string::npos);
+    // Where the points go: x from 90 to 880 px over t = 0..2; y over the values
+    // 0..1 padded by 5 %, 200 px below the title's 70.
+    CHECK(svg.find("points=\"90.00,260.91 485.00,79.09 880.00,260.91\"") != std::string::npos);
+    // The time axis's round ticks under the last panel only.
+    CHECK(svg.find("text-anchor=\"middle\">1.5</text>") != std::string::npos);
+    std::size_t labels = 0;
+    for (auto at = svg.find(">1.5</text>"); at != std::string::npos;
+         at = svg.find(">1.5</text>", at + 1))
+        ++labels;
+    CHECK(labels == 1);
+}
+
+TEST_CASE("campbell_svg: a curve per mode in each panel, on the plot module's axes") {
+    std::vector<CampbellRow> rows(3);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        yamsc::runtime::Mode rigid, flap;
+        rigid.rigid_body = true;
+        flap.freq_hz = 1 + 0.5 * static_cast<double>(i);
+        flap.damping_ratio = 0.01;
+        rows[i] = {static_cast<double>(i), {rigid, flap}};
+    }
+    const std::string svg = campbell_svg("spin & bend", "Omega", rows);
+    std::size_t polylines = 0;
+    for (auto at = svg.find("<polyline"); at != std::string::npos;
+         at = svg.find("<polyline", at + 1))
+        ++polylines;
+    // Both modes' frequencies; only the flexible mode's damping (a rigid-body
+    // mode has none).
+    CHECK(polylines == 3);
+    for (const char* text : {">spin &amp; bend<", ">frequency [Hz]<", ">damping ratio [-]<",
+                             ">Omega<", ">mode 1<", ">mode 2<", ">0.5<", ">1.5<"})
+        CHECK_MESSAGE(svg.find(text) != std::string::npos, text);
+    CHECK(svg == campbell_svg("spin & bend", "Omega", rows));
 }
