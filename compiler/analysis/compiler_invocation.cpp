@@ -8,7 +8,7 @@
 #include <sstream>
 #include <unistd.h>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 namespace {
 
 std::string shell_quote(const std::string& s) {
@@ -66,4 +66,4 @@ std::string joined_words(const std::vector<std::string>& words) {
     return out;
 }
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

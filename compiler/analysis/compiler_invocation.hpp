@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace yamsc::driver {
+namespace yamsc::analysis {
 
 /// The compiler failed: `messages` is what it printed (stdout and stderr, at
 /// most 4000 characters); what() names the compiler and gives them.
@@ -46,4 +46,4 @@ private:
 /// `words` joined by spaces (flags in a cache key).
 std::string joined_words(const std::vector<std::string>& words);
 
-} // namespace yamsc::driver
+} // namespace yamsc::analysis

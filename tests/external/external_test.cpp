@@ -4,6 +4,7 @@
 // the closed form, the Jacobians equal finite differences of rhs and forcing,
 // and every error is located.
 #include "analysis/loaded_model.hpp"
+#include "codegen/routines.hpp"
 #include "test_files.hpp"
 
 #include <doctest/doctest.h>
@@ -114,7 +115,10 @@ TEST_CASE("the compiled Jacobians with externals equal finite differences of rhs
         std::ostringstream err;
         auto loaded = yamsc::analysis::load(
             model, {{"P", 0, 0.5}, {"c", 0, 0.7}}, "", false, err, {},
-            {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"}, source);
+            {yamsc::codegen::RoutineId::rhs, yamsc::codegen::RoutineId::rhs_jacobian,
+             yamsc::codegen::RoutineId::mass_matrix, yamsc::codegen::RoutineId::forcing,
+             yamsc::codegen::RoutineId::jacobians, yamsc::codegen::RoutineId::outputs},
+            source);
         REQUIRE_MESSAGE(loaded, err.str());
         const yamsc::runtime::ModelView& v = loaded->view;
         REQUIRE(v.nq == 1);

@@ -5,6 +5,7 @@
 #include "analysis/loaded_model.hpp"
 #include "analysis/rotor_aero_setup.hpp"
 #include "analysis/trim_point.hpp"
+#include "codegen/routines.hpp"
 #include "driver/values.hpp"
 #include "test_files.hpp"
 #include "validation_support.hpp"
@@ -158,7 +159,9 @@ yamsc::runtime::TrimResult trimmed(const std::string& wind, double rpm, const st
     std::ostringstream err;
     auto loaded = yamsc::analysis::load(
         model, {}, "", false, err, {},
-        {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"});
+        {yamsc::codegen::RoutineId::rhs, yamsc::codegen::RoutineId::rhs_jacobian,
+         yamsc::codegen::RoutineId::mass_matrix, yamsc::codegen::RoutineId::forcing,
+         yamsc::codegen::RoutineId::jacobians, yamsc::codegen::RoutineId::outputs});
     REQUIRE_MESSAGE(loaded, err.str());
     const yamsc::runtime::ModelView v = yamsc::analysis::close_rotor_aero(*loaded, table);
     std::vector<double> q, qd, u0;
@@ -414,7 +417,9 @@ TEST_CASE("the operating model closed by the rotor block: Jacobians equal finite
     std::ostringstream err;
     auto l = yamsc::analysis::load(
         model, {}, "", false, err, {},
-        {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"});
+        {yamsc::codegen::RoutineId::rhs, yamsc::codegen::RoutineId::rhs_jacobian,
+         yamsc::codegen::RoutineId::mass_matrix, yamsc::codegen::RoutineId::forcing,
+         yamsc::codegen::RoutineId::jacobians, yamsc::codegen::RoutineId::outputs});
     REQUIRE_MESSAGE(l, err.str());
     const yamsc::runtime::ModelView v = yamsc::analysis::close_rotor_aero(*l, table);
     const int nq = v.nq, nu = v.nu;
