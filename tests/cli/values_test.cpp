@@ -7,7 +7,10 @@
 #include <cmath>
 #include <string>
 
-using namespace yamsc::driver;
+using yamsc::diag::UsageError;
+using yamsc::driver::parse_assignments;
+using yamsc::driver::parse_list;
+using yamsc::driver::parse_value;
 
 TEST_CASE("values: numbers, degrees and blanks") {
     CHECK(parse_value("1.5", "--t") == 1.5);
