@@ -7,10 +7,10 @@
 #include <cmath>
 #include <string>
 
+using yamsc::diag::UsageError;
 using yamsc::driver::parse_assignments;
 using yamsc::driver::parse_list;
 using yamsc::driver::parse_value;
-using yamsc::diag::UsageError;
 
 TEST_CASE("values: numbers, degrees and blanks") {
     CHECK(parse_value("1.5", "--t") == 1.5);
