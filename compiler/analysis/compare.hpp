@@ -9,11 +9,8 @@
 
 namespace yamsc::analysis {
 
-/// Reads a table of numbers: CSV (`,` or `;`) or whitespace/tab separated, with a row
-/// of column names (`Time_[s]` or `Time`, optionally followed by a row of units in
-/// parentheses, as in OpenFAST `.out` files: names become `NAME_[unit]`). Lines
-/// before the names (an OpenFAST header) are skipped. Column 0 must be time, rising.
-/// Throws UserError with the file and line on bad input.
+/// Reads a time series (formats/table: CSV or an OpenFAST `.out`; column 0 is
+/// time, rising). Throws UserError with the file and line on bad input.
 Table read_table(const std::string& path);
 
 struct ChannelScore {

@@ -24,28 +24,15 @@ std::optional<Beam> read_elastodyn(elastodyn::BeamKind kind,
     Beam beam;
     beam.length = length;
     beam.integrated_shapes = !tower; // ElastoDyn's tower: SHP at its elements
-    for (const elastodyn::ModeShape& m : read->modes) {
-        Mode mode;
-        mode.name = m.name;
-        mode.direction = m.direction;
-        mode.coeffs = m.coeffs;
-        mode.damping_ratio = m.damping_ratio;
-        mode.stiffness_tuner = m.stiffness_tuner;
-        beam.modes.push_back(std::move(mode));
-    }
+    for (const elastodyn::ModeShape& m : read->modes)
+        beam.modes.push_back({m.name, m.direction, m.coeffs, m.damping_ratio, m.stiffness_tuner});
     const double deg = std::acos(-1.0) / 180;
-    for (const elastodyn::Section& section : read->sections) {
-        Station s;
-        s.s = section.fraction;
-        s.mass_per_length = section.mass_per_length;
-        // Displacement along x (fore-aft, flap) is resisted by EI_y, along y by EI_x.
-        s.EI_y = section.stiffness_x;
-        s.EI_x = section.stiffness_y;
-        // ElastoDyn turns the principal axes by StrcTwst about -z (TwistedSF: the flap
-        // curvature points along (cos, -sin)): our twist is about +z.
-        if (!tower) s.twist = -section.twist_deg * deg;
-        beam.stations.push_back(s);
-    }
+    // Displacement along x (fore-aft, flap) is resisted by EI_y, along y by EI_x.
+    // ElastoDyn turns a blade's principal axes by StrcTwst about -z (TwistedSF: the
+    // flap curvature points along (cos, -sin)): our twist is about +z.
+    for (const elastodyn::Section& s : read->sections)
+        beam.stations.push_back({s.fraction, s.mass_per_length, s.stiffness_y, s.stiffness_x,
+                                 tower ? 0.0 : -s.twist_deg * deg});
     return beam;
 }
 

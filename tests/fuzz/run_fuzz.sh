@@ -37,6 +37,9 @@ case $target in
   fuzz_values)
     seeds=("$here"/seeds/values/*)
     dict= ;;
+  fuzz_openfast_deck)
+    seeds=("$root"/models/data/*.dat "$here"/seeds/elastodyn/*)
+    dict= ;;
   fuzz_wind)
     seeds=("$here"/seeds/wind/*)
     dict= ;;
