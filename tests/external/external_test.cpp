@@ -112,9 +112,8 @@ TEST_CASE("the compiled Jacobians with externals equal finite differences of rhs
     for (const std::string& source : {with_jacobians}) {
         CAPTURE(source);
         std::ostringstream err;
-        auto loaded = yamsc::driver::load(
-            model, {{"P", 0, 0.5}, {"c", 0, 0.7}}, "", false, err, {},
-            {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"}, source);
+        auto loaded = yamsc::driver::load(model, {{"P", 0, 0.5}, {"c", 0, 0.7}}, "", false, err, {},
+                                          yamsc::codegen::abi_routines(), source);
         REQUIRE_MESSAGE(loaded, err.str());
         const yamsc::runtime::ModelView& v = loaded->view;
         REQUIRE(v.nq == 1);

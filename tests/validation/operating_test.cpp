@@ -156,9 +156,8 @@ TEST_CASE("the tower's fore-aft mode gets its aerodynamic damping at 16 m/s") {
 yamsc::runtime::TrimResult trimmed(const std::string& wind, double rpm, const std::string& u,
                                    const std::string& adjust) {
     std::ostringstream err;
-    auto loaded = yamsc::driver::load(
-        model, {}, "", false, err, {},
-        {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"});
+    auto loaded =
+        yamsc::driver::load(model, {}, "", false, err, {}, yamsc::codegen::abi_routines());
     REQUIRE_MESSAGE(loaded, err.str());
     const yamsc::runtime::ModelView v = yamsc::driver::close_rotor_aero(*loaded, table);
     std::vector<double> q, qd, u0;
@@ -412,9 +411,7 @@ TEST_CASE("the baseline controller's torque regions and pitch loop (DISCON calle
 
 TEST_CASE("the operating model closed by the rotor block: Jacobians equal finite differences") {
     std::ostringstream err;
-    auto l = yamsc::driver::load(
-        model, {}, "", false, err, {},
-        {"rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outputs"});
+    auto l = yamsc::driver::load(model, {}, "", false, err, {}, yamsc::codegen::abi_routines());
     REQUIRE_MESSAGE(l, err.str());
     const yamsc::runtime::ModelView v = yamsc::driver::close_rotor_aero(*l, table);
     const int nq = v.nq, nu = v.nu;
