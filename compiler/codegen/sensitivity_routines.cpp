@@ -15,6 +15,7 @@
 #include "codegen/routine_builder.hpp"
 #include "codegen/symbol_binding.hpp"
 #include "diag/diagnostics.hpp"
+#include "ir/param_index.hpp"
 
 #include <cstdint>
 #include <string>
@@ -114,12 +115,11 @@ std::vector<std::size_t> parameter_indices(const ir::System& s,
                                            const std::vector<std::string>& names) {
     std::vector<std::size_t> out;
     for (const std::string& name : names) {
-        std::size_t i = 0;
-        while (i < s.params.size() && s.params[i].name != name) ++i;
-        if (i == s.params.size())
+        const std::optional<std::size_t> i = ir::param_index(s, name);
+        if (!i)
             throw diag::InternalError("code generation: sensitivity of '" + name +
                                       "', which is not a parameter");
-        out.push_back(i);
+        out.push_back(*i);
     }
     return out;
 }

@@ -5,6 +5,7 @@
 #include "diag/errors.hpp"
 #include "driver/derivation_loader.hpp"
 #include "driver/files.hpp"
+#include "ir/param_index.hpp"
 #include "model/names.hpp"
 #include "parse/parser.hpp"
 #include "passes/pipeline.hpp"
@@ -94,12 +95,11 @@ std::vector<std::size_t> parameter_indices(const ir::System& s,
                                            const std::vector<std::string>& names) {
     std::vector<std::size_t> indices;
     for (const std::string& name : names) {
-        std::size_t i = 0;
-        while (i < s.params.size() && s.params[i].name != name) ++i;
-        if (i == s.params.size())
+        const std::optional<std::size_t> i = ir::param_index(s, name);
+        if (!i)
             throw diag::UsageError("--sensitivities: '" + name +
                                    "' is not a parameter of the model");
-        indices.push_back(i);
+        indices.push_back(*i);
     }
     return indices;
 }

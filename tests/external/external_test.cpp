@@ -113,12 +113,8 @@ TEST_CASE("the compiled Jacobians with externals equal finite differences of rhs
     for (const std::string& source : {with_jacobians}) {
         CAPTURE(source);
         std::ostringstream err;
-        auto loaded = yamsc::analysis::load(
-            model, {{"P", 0, 0.5}, {"c", 0, 0.7}}, "", false, err, {},
-            {yamsc::codegen::RoutineId::rhs, yamsc::codegen::RoutineId::rhs_jacobian,
-             yamsc::codegen::RoutineId::mass_matrix, yamsc::codegen::RoutineId::forcing,
-             yamsc::codegen::RoutineId::jacobians, yamsc::codegen::RoutineId::outputs},
-            source);
+        auto loaded = yamsc::analysis::load(model, {{"P", 0, 0.5}, {"c", 0, 0.7}}, "", false, err,
+                                            {}, yamsc::codegen::abi_routines(), source);
         REQUIRE_MESSAGE(loaded, err.str());
         const yamsc::runtime::ModelView& v = loaded->view;
         REQUIRE(v.nq == 1);

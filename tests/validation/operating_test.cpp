@@ -157,11 +157,8 @@ TEST_CASE("the tower's fore-aft mode gets its aerodynamic damping at 16 m/s") {
 yamsc::runtime::TrimResult trimmed(const std::string& wind, double rpm, const std::string& u,
                                    const std::string& adjust) {
     std::ostringstream err;
-    auto loaded = yamsc::analysis::load(
-        model, {}, "", false, err, {},
-        {yamsc::codegen::RoutineId::rhs, yamsc::codegen::RoutineId::rhs_jacobian,
-         yamsc::codegen::RoutineId::mass_matrix, yamsc::codegen::RoutineId::forcing,
-         yamsc::codegen::RoutineId::jacobians, yamsc::codegen::RoutineId::outputs});
+    auto loaded =
+        yamsc::analysis::load(model, {}, "", false, err, {}, yamsc::codegen::abi_routines());
     REQUIRE_MESSAGE(loaded, err.str());
     const yamsc::runtime::ModelView v = yamsc::analysis::close_rotor_aero(*loaded, table);
     std::vector<double> q, qd, u0;
@@ -415,11 +412,7 @@ TEST_CASE("the baseline controller's torque regions and pitch loop (DISCON calle
 
 TEST_CASE("the operating model closed by the rotor block: Jacobians equal finite differences") {
     std::ostringstream err;
-    auto l = yamsc::analysis::load(
-        model, {}, "", false, err, {},
-        {yamsc::codegen::RoutineId::rhs, yamsc::codegen::RoutineId::rhs_jacobian,
-         yamsc::codegen::RoutineId::mass_matrix, yamsc::codegen::RoutineId::forcing,
-         yamsc::codegen::RoutineId::jacobians, yamsc::codegen::RoutineId::outputs});
+    auto l = yamsc::analysis::load(model, {}, "", false, err, {}, yamsc::codegen::abi_routines());
     REQUIRE_MESSAGE(l, err.str());
     const yamsc::runtime::ModelView v = yamsc::analysis::close_rotor_aero(*l, table);
     const int nq = v.nq, nu = v.nu;
