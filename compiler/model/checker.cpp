@@ -27,11 +27,7 @@ int Model::point_index(const std::string& name) const {
 namespace {
 
 Expr number(const std::string& text, const Loc& loc) {
-    Expr e;
-    e.kind = Expr::Kind::number;
-    e.text = text;
-    e.loc = loc;
-    return e;
+    return Expr{Expr::Kind::number, loc, text, 0, {}};
 }
 
 Vec zero_vec(const Loc& loc) {
@@ -751,11 +747,9 @@ private:
         resolved.loc = e.loc;
         resolved.text = name;
         resolved.primes = node;
-        Expr id; // for dumps: the node's number in the SID
-        id.kind = Expr::Kind::number;
-        id.loc = e.loc;
-        id.text = std::to_string(flex.sid->nodes[static_cast<std::size_t>(node)].id);
-        resolved.args.push_back(std::move(id));
+        // For dumps: the node's number in the SID.
+        resolved.args.push_back(
+            number(std::to_string(flex.sid->nodes[static_cast<std::size_t>(node)].id), e.loc));
         e = std::move(resolved);
         return true;
     }

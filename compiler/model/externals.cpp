@@ -6,18 +6,6 @@
 #include "model/model.hpp"
 
 namespace yamsc::model {
-namespace {
-
-Expr name_expr(const std::string& name, const Loc& loc) {
-    Expr e;
-    e.kind = Expr::Kind::name;
-    e.text = name;
-    e.loc = loc;
-    return e;
-}
-
-} // namespace
-
 Model with_external_channels(const Model& model) {
     Model m = model;
     for (const External& e : model.externals) {
@@ -28,7 +16,7 @@ Model with_external_channels(const Model& model) {
             in.doc = "result " + std::to_string(r) + " of external function " + e.name;
             in.loc = e.loc;
             m.inputs.push_back(in);
-            results.push_back(name_expr(in.name, e.loc));
+            results.push_back(Expr{Expr::Kind::name, e.loc, in.name, 0, {}});
         }
         switch (e.kind) {
         case External::Kind::force:
