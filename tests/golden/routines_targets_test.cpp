@@ -79,18 +79,18 @@ TEST_CASE("the generated golden files define every routine of the table") {
 
 TEST_CASE("the JIT exports the routines asked for, and the loader finds exactly those") {
     const ir::System s = double_pendulum();
-    const std::string only_outputs = driver::shared_model_source(s, {RoutineId::outputs});
+    const std::string only_outputs = analysis::shared_model_source(s, {RoutineId::outputs});
     // rhs always: the loader needs it.
     CHECK(has(only_outputs, "\nYAMSC_EXPORT_RHS(double_pendulum)\n"));
     CHECK(has(only_outputs, "\nYAMSC_EXPORT_OUTPUTS(double_pendulum)\n"));
     CHECK(!has(only_outputs, "YAMSC_EXPORT_JACOBIANS(double_pendulum)"));
-    CHECK_THROWS_AS(driver::shared_model_source(s, {RoutineId::linear}), std::invalid_argument);
+    CHECK_THROWS_AS(analysis::shared_model_source(s, {RoutineId::linear}), std::invalid_argument);
 
     char folder[] = "/tmp/yamsc_routines_XXXXXX";
     REQUIRE(mkdtemp(folder));
-    driver::JitOptions o;
+    analysis::JitOptions o;
     o.cache_dir = folder;
-    const auto library = driver::load_compiled_model(s, o);
+    const auto library = analysis::load_compiled_model(s, o);
     std::string found;
     for (const std::string& r : library->routines()) found += (found.empty() ? "" : ", ") + r;
     CHECK(found == codegen::routine_names(codegen::abi_routines()));
