@@ -45,11 +45,10 @@ ModelHandle ModelHandle::from_source(const std::string& path, const std::string&
                                      const std::vector<driver::Assignment>& set,
                                      std::vector<std::string> routines,
                                      const std::string& external) {
-    const codegen::RoutineSet wanted = routine_set(routines);
     std::ostringstream err;
     std::optional<analysis::Loaded> loaded;
     try {
-        loaded = analysis::load(path, set, sid, false, err, {}, wanted, external);
+        loaded = analysis::load(path, set, sid, false, err, {}, routine_set(routines), external);
     } catch (const std::exception& e) {
         // UserError (a --set name that does not exist), a failed compile, ...
         throw LoadError(err.str() + e.what());

@@ -6,6 +6,7 @@
 #include "ir/system.hpp"
 #include "passes/forward.hpp"
 #include "passes/passes.hpp"
+#include "two_dof_system.hpp"
 
 #include <doctest/doctest.h>
 
@@ -168,19 +169,7 @@ TEST_CASE("a derivative visits only what depends on its variable and shares the 
 }
 
 TEST_CASE("the passes fill the rows of a System") {
-    System s;
-    s.dofs = {{"a", ""}, {"b", ""}};
-    s.inputs = {{"u", "u", ""}};
-    s.params = {{"k", "", 2.0}};
-    s.graph = Graph(4, two_dofs);
-    Graph& g = s.graph;
-    const NodeId q0 = g.symbol({SymbolKind::q, 0}), q1 = g.symbol({SymbolKind::q, 1});
-    const NodeId qd1 = g.symbol({SymbolKind::qd, 1}), u = g.symbol({SymbolKind::input, 0});
-    const NodeId k = g.symbol({SymbolKind::param, 0});
-    const NodeId c = g.call(Function::cos, {g.add({{q0, 1.0}, {q1, -1.0}}, 0.0)});
-    s.M = {{g.number(2.0), c}, {c, g.add({{k, 1.0}}, 1.0)}};
-    s.F = {g.mul({{k, 1.0}, {q0, 1.0}, {qd1, 1.0}}, -1.0), g.mul({{u, 1.0}, {q1, 2.0}}, 1.0)};
-    s.outputs = {{"y", "", g.mul({{q0, 1.0}, {u, 1.0}}, 1.0)}};
+    System s = ir_test::two_dof_system();
     yamsc::passes::derive_jacobians(s);
     yamsc::passes::output_jacobians(s);
     const Values x;
