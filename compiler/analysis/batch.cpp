@@ -5,6 +5,7 @@
 // arguments), and each thread binds each case's parameters in its own copy.
 #include "analysis/batch_manifest.hpp"
 #include "analysis/batch_summary.hpp"
+#include "analysis/load_blocks.hpp"
 #include "analysis/loaded_model.hpp"
 #include "analysis/sim_case.hpp"
 #include "diag/diagnostics.hpp"
@@ -331,7 +332,8 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
         if (job.c) {
             inputs.insert(real_path(job.c->sim.model));
             if (!job.c->sim.wind.empty()) inputs.insert(real_path(job.c->sim.wind));
-            if (!job.c->sim.aero.empty()) inputs.insert(real_path(job.c->sim.aero));
+            for (const NamedFile& f : block_files(block_options(job.c->sim)))
+                inputs.insert(real_path(f.path));
         }
 
     // Each distinct model (and set of routines) loaded once: from the JIT cache

@@ -19,7 +19,7 @@ namespace yamsc::driver {
 std::vector<std::string> sim_routines(const SimOptions& o);
 
 struct SimRun {
-    runtime::ModelView view; // what was integrated (linear, with the rotor block)
+    runtime::ModelView view; // what was integrated (linear, with the load blocks)
     runtime::SimulationResult result;
 };
 

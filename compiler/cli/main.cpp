@@ -332,8 +332,6 @@ int run(int argc, char** argv) {
         if (!o.at.empty() && !o.linear) throw UsageError("--at needs --linear");
         o.aero = a.get("--aero");
         o.wind = a.get("--wind");
-        if (o.linear && !o.aero.empty())
-            throw UsageError("--linear does not take --aero (use yamsc lin --aero)");
         o.controller = a.get("--controller");
         o.controller_input = a.get("--controller-input");
         if (o.controller.empty() && !o.controller_input.empty())
