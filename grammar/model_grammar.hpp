@@ -62,6 +62,7 @@ struct kw_initial : TAO_PEGTL_KEYWORD("initial") {};
 struct kw_output : TAO_PEGTL_KEYWORD("output") {};
 struct kw_point : TAO_PEGTL_KEYWORD("point") {};
 struct kw_external : TAO_PEGTL_KEYWORD("external") {};
+struct kw_load : TAO_PEGTL_KEYWORD("load") {};
 
 struct kw_order : TAO_PEGTL_KEYWORD("order") {};
 struct kw_deg : TAO_PEGTL_KEYWORD("deg") {};
@@ -84,7 +85,7 @@ struct kw_damping : TAO_PEGTL_KEYWORD("damping") {};
 struct statement_keyword
     : p::sor<kw_model, kw_param, kw_input, kw_dof, kw_gravity, kw_rigid, kw_flexible, kw_joint,
              kw_force, kw_torque, kw_spring, kw_genforce, kw_approx, kw_linearize, kw_initial,
-             kw_output, kw_point, kw_external> {};
+             kw_output, kw_point, kw_external, kw_load> {};
 
 struct digits : p::plus<p::digit> {};
 struct mantissa
@@ -512,6 +513,22 @@ struct ext_without : p::seq<TAO_PEGTL_KEYWORD("without"), blanks, p::must<ext_ja
 struct external_statement : p::seq<kw_external, blanks, p::must<ext_target>, p::must<ext_equals>,
                                    blanks, p::must<ext_call>, p::opt<blanks, ext_without>> {};
 
+// ---------------------------------------------------------------- load blocks
+
+/// `load rotor_table aero { wind = V_wind; thrust = thrust; ... }`: a load block of the
+/// runtime (docs/language.md, Load blocks) and what each of its roles is bound to: `role =
+/// value`, a property, so that later kinds can take names of points or bodies, lists of them
+/// and file names. The checker knows the kinds and their roles.
+struct load_kind : identifier {};
+struct load_name : identifier {};
+struct load_open : p::one<'{'> {};
+struct load_close : p::one<'}'> {};
+struct unknown_load_item {};
+struct load_item : p::sor<property, p::raise<unknown_load_item>> {};
+struct load_block : p::seq<load_open, block_items<load_item>, p::must<load_close>> {};
+struct load_statement : p::seq<kw_load, blanks, p::must<load_kind>, blanks, p::must<load_name>,
+                               blanks, p::must<load_block>> {};
+
 // ---------------------------------------------------------------- the file
 
 struct unknown_statement {};
@@ -520,7 +537,7 @@ struct statement
              rigid_statement, flexible_statement, joint_statement, force_statement,
              torque_statement, spring_statement, genforce_statement, approx_statement,
              linearize_statement, initial_statement, output_statement, point_statement,
-             external_statement, p::raise<unknown_statement>> {};
+             external_statement, load_statement, p::raise<unknown_statement>> {};
 struct statement_line : p::seq<statement, p::must<end_of_statement>> {};
 struct top_separator : p::plus<item_separator> {};
 struct model_file

@@ -1,4 +1,5 @@
 #include "analysis/batch_jobs.hpp"
+#include "analysis/load_blocks.hpp"
 
 #include "analysis/batch_files.hpp"
 #include "analysis/batch_models.hpp"
@@ -75,7 +76,8 @@ std::set<std::string> batch_inputs(const std::string& manifest, const std::vecto
         if (job.c) {
             inputs.insert(real_path(job.c->sim.model));
             if (!job.c->sim.wind.empty()) inputs.insert(real_path(job.c->sim.wind));
-            if (!job.c->sim.aero.empty()) inputs.insert(real_path(job.c->sim.aero));
+            for (const driver::NamedFile& f : block_files(block_options(job.c->sim)))
+                inputs.insert(real_path(f.path));
         }
     return inputs;
 }

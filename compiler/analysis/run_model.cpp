@@ -5,15 +5,16 @@
 #include "analysis/commands.hpp"
 #include "analysis/compare.hpp"
 #include "analysis/controller_loop.hpp"
+#include "analysis/load_blocks.hpp"
 #include "analysis/loaded_model.hpp"
 #include "analysis/openfast_lin_model.hpp"
-#include "analysis/rotor_aero_setup.hpp"
 #include "analysis/rotor_campbell.hpp"
 #include "analysis/rotor_modes.hpp"
 #include "analysis/sim_case.hpp"
 #include "analysis/svg_plot.hpp"
 #include "analysis/sweep_point.hpp"
 #include "analysis/trim_point.hpp"
+#include "analysis/wind_input.hpp"
 #include "driver/bindings.hpp"
 #include "driver/json.hpp"
 #include "driver/outputs.hpp"
@@ -131,6 +132,8 @@ bool wind_file(const std::string& spec) {
 
 int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     if (!o.at.empty() && !o.linear) throw UsageError("--at needs --linear");
+    if (o.linear && any_blocks(block_options(o)))
+        throw UsageError("--linear does not take --aero (use yamsc lin --aero)");
     std::vector<NamedFile> outputs{{"-o", o.output}, {"--plot", o.plot}};
     // The controller writes its own files from the run's root (ROSCO: a log).
     if (!o.controller.empty())
@@ -138,7 +141,7 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     std::vector<NamedFile> inputs = sid_files_of(o.sid);
     inputs.push_back({"the model", o.model});
     inputs.push_back({"the --compare table", o.compare});
-    inputs.push_back({"--aero", o.aero});
+    for (const NamedFile& f : block_files(block_options(o))) inputs.push_back(f);
     inputs.push_back({"--controller", o.controller});
     inputs.push_back({"--controller-input", o.controller_input});
     inputs.push_back({"--external", o.external});
@@ -191,15 +194,16 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     check_outputs(inputs, outputs);
     // The second-order model (M, F and its Jacobians) and, for the modes, A.
     codegen::RoutineSet routines = linear_model_routines();
-    if (!o.aero.empty() || lin_files) routines.insert(codegen::RoutineId::outputs);
+    if (lin_files) routines.insert(codegen::RoutineId::outputs);
+    add_block_routines(block_options(o), false, routines);
     auto loaded = load(o.model, o.set, o.sid, false, err, outputs, routines, o.external);
     if (!loaded) return 1;
     if (o.sweep) return campbell(*loaded, o, out);
-    const runtime::ModelView v = o.aero.empty() ? loaded->view : close_rotor_aero(*loaded, o.aero);
+    const runtime::ModelView v = with_load_blocks(*loaded, block_options(o));
     const int nq = v.nq, nu = v.nu;
     std::vector<double> q, qd, u;
     operating_point(*loaded, loaded->params, o.at, o.u, q, qd, u);
-    if (!o.wind.empty()) set_wind_at_start(v, u, o.wind);
+    if (!o.wind.empty()) set_wind_at_start(*loaded, v, u, o.wind);
     if (o.trim) {
         const runtime::TrimResult r = trim_point(v, q, qd, u, o.hold, o.adjust);
         q = r.q;

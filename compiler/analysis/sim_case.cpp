@@ -1,7 +1,8 @@
 #include "analysis/sim_case.hpp"
 
 #include "analysis/controller_loop.hpp"
-#include "analysis/rotor_aero_setup.hpp"
+#include "analysis/load_blocks.hpp"
+#include "analysis/wind_input.hpp"
 
 #include <yamsc/csv.hpp>
 #include <yamsc/linear_view.hpp>
@@ -44,8 +45,8 @@ codegen::RoutineSet sim_routines(const SimOptions& o) {
     using codegen::RoutineId;
     codegen::RoutineSet routines{RoutineId::rhs, RoutineId::outputs};
     if (o.method == SimMethod::cvode) routines.insert(RoutineId::rhs_jacobian);
-    if (o.linear || (!o.aero.empty() && o.method == SimMethod::cvode))
-        routines.insert({RoutineId::mass_matrix, RoutineId::jacobians});
+    if (o.linear) routines.insert({RoutineId::mass_matrix, RoutineId::jacobians});
+    add_block_routines(block_options(o), o.method == SimMethod::cvode, routines);
     return routines;
 }
 
@@ -53,9 +54,7 @@ SimRun simulate_case(const Loaded& l, const SimOptions& o, std::ostream& out, st
     std::vector<double> q, qd;
     initial_state(l, o.ic, q, qd);
     SimRun run;
-    run.view = o.linear         ? linear_model(l, o, out)
-               : o.aero.empty() ? l.view
-                                : close_rotor_aero(l, o.aero);
+    run.view = o.linear ? linear_model(l, o, out) : with_load_blocks(l, block_options(o));
     const runtime::ModelView& v = run.view;
     runtime::SimulationOptions s;
     s.t_end = o.tmax;
@@ -68,8 +67,9 @@ SimRun simulate_case(const Loaded& l, const SimOptions& o, std::ostream& out, st
     s.atol = o.atol;
     s.x0 = q;
     s.x0.insert(s.x0.end(), qd.begin(), qd.end());
+    s.x0.insert(s.x0.end(), v.block_initial_states.begin(), v.block_initial_states.end());
     s.u = inputs_of(v, o.u);
-    if (!o.wind.empty()) s.u_of_t = wind_inputs(v, s.u, o.wind);
+    if (!o.wind.empty()) s.u_of_t = wind_inputs(l, v, s.u, o.wind);
     int last_percent = -1;
     auto progress = [&](double t, double t_end) {
         int percent = static_cast<int>(100.0 * t / t_end);

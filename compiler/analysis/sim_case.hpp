@@ -20,7 +20,7 @@ namespace yamsc::analysis {
 codegen::RoutineSet sim_routines(const driver::SimOptions& o);
 
 struct SimRun {
-    runtime::ModelView view; // what was integrated (linear, with the rotor block)
+    runtime::ModelView view; // what was integrated (linear, with the load blocks)
     runtime::SimulationResult result;
 };
 

@@ -1,7 +1,8 @@
 #include "analysis/sweep_point.hpp"
 
-#include "analysis/rotor_aero_setup.hpp"
+#include "analysis/load_blocks.hpp"
 #include "analysis/trim_point.hpp"
+#include "analysis/wind_input.hpp"
 #include "diag/diagnostics.hpp"
 #include "diag/errors.hpp"
 
@@ -46,19 +47,19 @@ SweepPoints::SweepPoints(const Loaded& l, const LinOptions& o) : l_(l), o_(o) {
         }
     }
     if (!o.schedule.empty()) schedule_ = read_sweep_schedule(o.schedule, name);
-    if (!o.aero.empty()) {
+    if (any_blocks(block_options(o))) {
         if (param_ >= 0)
             throw UsageError("--sweep of the parameter " + name +
-                             " with --aero: the rotor block is bound to the model's parameters; "
-                             "sweep a rate or an input");
-        aero_view_ = close_rotor_aero(l, o.aero);
+                             " with load blocks (--aero): a block is bound to the model's "
+                             "parameters; sweep a rate or an input");
+        blocks_view_ = with_load_blocks(l, block_options(o));
     }
 }
 
 SweepPoint SweepPoints::at(double value) const {
     std::vector<double> params = l_.params;
     if (param_ >= 0) params[static_cast<std::size_t>(param_)] = value;
-    SweepPoint p{aero_view_ ? *aero_view_ : l_.library->view(params), {}, {}, {}};
+    SweepPoint p{blocks_view_ ? *blocks_view_ : l_.library->view(params), {}, {}, {}};
     std::vector<Assignment> at = o_.at;
     if (schedule_) {
         const std::vector<Assignment> scheduled = schedule_at(*schedule_, value);
@@ -67,7 +68,7 @@ SweepPoint SweepPoints::at(double value) const {
     if (!rate_dof_.empty()) at.push_back({rate_dof_, 1, value});
     if (!input_.empty()) at.push_back({input_, 0, value});
     operating_point(l_, params, at, o_.u, p.q, p.qd, p.u);
-    if (!o_.wind.empty()) set_wind_at_start(p.view, p.u, o_.wind);
+    if (!o_.wind.empty()) set_wind_at_start(l_, p.view, p.u, o_.wind);
     if (o_.trim) {
         const runtime::TrimResult r = trim_point(p.view, p.q, p.qd, p.u, o_.hold, o_.adjust);
         p.q = r.q;

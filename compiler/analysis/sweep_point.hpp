@@ -2,7 +2,7 @@
 // The operating points of `lin --sweep NAME=FROM:STEP:TO`: NAME is a
 // parameter, a DOF's rate (`psi'`, a rotor speed) or an input (`V_wind`, a
 // wind speed); `--schedule FILE` moves other DOFs, rates and inputs with it
-// (sweep_schedule.hpp); `--aero` closes the rotor block around the model;
+// (sweep_schedule.hpp); the model's load blocks (--aero) are closed around it;
 // `--trim [--adjust ..]` trims each point. Both Campbell diagrams (the plain
 // one, run_model.cpp, and the MBC3 one, rotor_campbell.cpp) take their
 // points from here.
@@ -39,7 +39,7 @@ private:
     std::string rate_dof_; // or the DOF whose rate is swept
     std::string input_;    // or the input
     std::optional<SweepSchedule> schedule_;
-    std::optional<runtime::ModelView> aero_view_; // --aero: the view closed once
+    std::optional<runtime::ModelView> blocks_view_; // load blocks: the view closed once
 };
 
 } // namespace yamsc::analysis

@@ -1,9 +1,10 @@
 // `yamsc trim`: the operating point at rest in the model's own equations
 // (yamsc/trim.hpp), from the model's `linearize` point moved by --at/--u;
 // with --aero and --wind, in steady wind, the --adjust inputs trimmed too.
+#include "analysis/load_blocks.hpp"
 #include "analysis/loaded_model.hpp"
-#include "analysis/rotor_aero_setup.hpp"
 #include "analysis/trim_point.hpp"
+#include "analysis/wind_input.hpp"
 #include "driver/json.hpp"
 
 #include <cmath>
@@ -17,13 +18,13 @@ namespace json = driver::json;
 
 int trim(const TrimOptions& o, std::ostream& out, std::ostream& err) {
     codegen::RoutineSet routines = linear_model_routines();
-    if (!o.aero.empty()) routines.insert(codegen::RoutineId::outputs);
+    add_block_routines(block_options(o), false, routines);
     auto loaded = load(o.model, o.set, o.sid, false, err, {}, routines, o.external);
     if (!loaded) return 1;
-    const runtime::ModelView v = o.aero.empty() ? loaded->view : close_rotor_aero(*loaded, o.aero);
+    const runtime::ModelView v = with_load_blocks(*loaded, block_options(o));
     std::vector<double> q, qd, u0;
     operating_point(*loaded, loaded->params, o.at, o.u, q, qd, u0);
-    if (!o.wind.empty()) set_wind_at_start(v, u0, o.wind);
+    if (!o.wind.empty()) set_wind_at_start(*loaded, v, u0, o.wind);
     const runtime::TrimResult r = trim_point(v, q, qd, u0, o.hold, o.adjust);
     const std::vector<double>& u = r.u;
     if (o.json) {

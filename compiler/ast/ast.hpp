@@ -245,6 +245,17 @@ struct External {
     Loc loc;
 };
 
+/// `load KIND NAME { role = value ... }`: a load block of the runtime closed around the
+/// model when it runs (sim, lin, trim), its roles bound to the model's names. Run-time
+/// metadata: the equations and the generated code do not see it.
+struct Load {
+    Named kind;
+    Named id;
+    std::vector<Property> roles;
+    Loc loc; // the `load` keyword
+    Loc end; // the closing `}`
+};
+
 struct ModelFile {
     std::shared_ptr<const diag::SourceFile> source;
     std::optional<Named> model; // the model's name
@@ -267,6 +278,7 @@ struct ModelFile {
     std::optional<Initial> initial;
     std::vector<Output> outputs;
     std::vector<External> externals;
+    std::vector<Load> loads;
 };
 
 /// A readable dump of the tree, for `yamsc --dump=ast` and tests.

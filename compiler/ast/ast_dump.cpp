@@ -302,6 +302,10 @@ std::string dump(const ModelFile& file) {
             out += (i > 0 ? ", " : "") + to_string(e.args[i].value) + frame(e.args[i].frame);
         out += ")" + std::string(e.without_jacobian ? " without jacobian" : "") + at(e.loc) + "\n";
     }
+    for (const Load& l : file.loads) {
+        out += "load " + l.kind.name + " " + l.id.name + at(l.loc) + "\n";
+        for (const Property& p : l.roles) out += "  " + property(p);
+    }
     return out;
 }
 

@@ -6,6 +6,7 @@
 #include "driver/derivation_loader.hpp"
 #include "driver/files.hpp"
 #include "ir/param_index.hpp"
+#include "model/load_check.hpp"
 #include "model/names.hpp"
 #include "parse/parser.hpp"
 #include "passes/pipeline.hpp"
@@ -143,7 +144,7 @@ std::string external_prototypes(const model::Model& m) {
 }
 
 std::string content_digest(const diag::SourceFile& source, const model::Model& m) {
-    std::string all = source.text();
+    std::string all = model::without_load_statements(source.text(), m);
     for (const auto& f : m.files_read) {
         diag::Diagnostics ignored;
         if (auto data = read_source(f, ignored)) all += "\n" + data->text();

@@ -2,6 +2,7 @@
 
 #include "model/expr_check.hpp"
 #include "model/flexible.hpp"
+#include "model/load_check.hpp"
 
 #include <algorithm>
 #include <functional>
@@ -47,6 +48,7 @@ public:
         build_bodies();
         check_loads();
         check_outputs();
+        model_.loads = check_load_blocks(file_, model_, names_, diags_);
         check_externals();
         check_dof_usage();
         check_linearize();

@@ -122,6 +122,13 @@ std::string dump(const Model& m) {
                 << frame_name(m, e.arg_frames[i]);
         out << ")" << (e.without_jacobian ? " without jacobian" : "") << "\n";
     }
+    for (const LoadBlock& l : m.loads) {
+        const LoadKindInfo& kind = load_kind_info(l.kind);
+        out << "  load " << kind.name << " " << l.name << " {";
+        for (std::size_t r = 0; r < l.bound.size(); ++r)
+            if (!l.bound[r].empty()) out << " " << kind.roles[r].name << " = " << l.bound[r] << ";";
+        out << " }\n";
+    }
     return out.str();
 }
 

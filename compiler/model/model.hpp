@@ -4,6 +4,7 @@
 // to bodies. Expressions are still ast::Expr, but every name in them is known to
 // be declared and allowed where it stands (see checker.hpp). Plain data.
 #include "ast/ast.hpp"
+#include "model/load_kinds.hpp"
 #include "sid/sid.hpp"
 
 #include <array>
@@ -191,6 +192,21 @@ struct InitialState {
     Loc loc;
 };
 
+/// `load KIND NAME { role = name ... }`: a load block the runtime closes around the
+/// model when it runs, its roles bound to the model's names. Run-time metadata:
+/// the derivation and the generated code do not read it.
+struct LoadBlock {
+    LoadKind kind = LoadKind::rotor_table;
+    std::string name;
+    // Per role of the kind (load_kinds.hpp): the name bound, "" if unbound.
+    std::vector<std::string> bound;
+    Loc loc, end; // the statement: `load` to its closing `}`
+
+    template <class Role> const std::string& role(Role r) const {
+        return bound[static_cast<std::size_t>(r)];
+    }
+};
+
 struct Model {
     std::string name, title;
     std::vector<std::string> files_read; // data files (SID, ElastoDyn), for digests and depfiles
@@ -210,6 +226,7 @@ struct Model {
     std::optional<OperatingPoint> operating_point; // the `linearize` block, if any
     std::optional<InitialState> initial_state;     // the `initial` block, if any
     std::vector<Approximation> approximations;     // `approx` groups, in file order
+    std::vector<LoadBlock> loads;                  // `load` blocks, in file order
 
     int body_index(const std::string& name) const;
     int point_index(const std::string& name) const;

@@ -66,6 +66,7 @@ public:
         displacement_outputs();
         load_outputs();
         operation_outputs();
+        rotor_block();
         return out_.str();
     }
 
@@ -903,6 +904,17 @@ private:
             if (tower_mode_on(m)) ss += (ss.empty() ? "q_" : " + q_") + std::string(m) + "''";
         if (!fa.empty()) output("YawBrTAxp", fa, "m/s^2");
         if (!ss.empty()) output("YawBrTAyp", ss, "m/s^2");
+    }
+
+    /// The rotor block of `--aero` on the channels above (docs/language.md, Load blocks).
+    void rotor_block() {
+        if (!in_.operation) return;
+        out_ << "\n# ---- the rotor block of `--aero TABLE` on these channels\n"
+                "load rotor_table aero {\n"
+                "    wind = V_wind; pitch = pitch; thrust = thrust; rotor_torque = aero_torque\n"
+                "    speed = rotor_speed; hub_velocity = hub_shaft_velocity\n"
+                "    radius = rotor_radius; density = air_density\n"
+                "}\n";
     }
 
     void output(const std::string& name, const std::string& value, const std::string& unit) {

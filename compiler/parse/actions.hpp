@@ -570,6 +570,25 @@ YAMSC_ACTION(point_value) {
     st.file.points.back().at = st.pop();
 }
 
+// ---------------------------------------------------------------- load blocks
+
+YAMSC_ACTION(kw_load) {
+    st.file.loads.emplace_back().loc = st.loc(in.position());
+}
+YAMSC_ACTION(load_kind) {
+    st.file.loads.back().kind = ast::Named{in.string(), st.loc(in.position()), {}};
+}
+YAMSC_ACTION(load_name) {
+    st.file.loads.back().id = ast::Named{in.string(), st.loc(in.position()), {}};
+}
+YAMSC_ACTION(load_open) {
+    st.property_sinks.push_back(&st.file.loads.back().roles);
+}
+YAMSC_ACTION(load_close) {
+    st.property_sinks.pop_back();
+    st.file.loads.back().end = st.loc(in.position());
+}
+
 #undef YAMSC_ACTION
 #undef YAMSC_CONTEXT_ACTION
 

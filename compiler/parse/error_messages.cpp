@@ -164,4 +164,9 @@ ErrorMessage error_message<grammar::unknown_initial_item>::compose(std::string_v
     return {fill_message("expected 'name = value' in the initial block, found {found}", rest, st)};
 }
 
+ErrorMessage error_message<grammar::unknown_load_item>::compose(std::string_view rest,
+                                                                const ParseState& st) {
+    return {fill_message("expected 'role = value' in the load block, found {found}", rest, st)};
+}
+
 } // namespace yamsc::parse

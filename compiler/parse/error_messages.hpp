@@ -199,6 +199,13 @@ YAMSC_ERROR_MESSAGE(point_at, "expected 'at' after the body name, found {found}"
 // ---- statements
 YAMSC_COMPOSED_ERROR_MESSAGE(unknown_statement);
 
+// ---- load blocks
+YAMSC_ERROR_MESSAGE(load_kind, "expected the kind of load block after 'load', found {found}");
+YAMSC_ERROR_MESSAGE(load_name, "expected a name for the load block after its kind, found {found}");
+YAMSC_ERROR_MESSAGE(load_block, "expected '{' after the load block's name, found {found}");
+YAMSC_UNCLOSED_BLOCK_MESSAGE(load_close, "expected '}' to close the load block started at {open}");
+YAMSC_COMPOSED_ERROR_MESSAGE(unknown_load_item);
+
 #undef YAMSC_ERROR_MESSAGE
 #undef YAMSC_UNCLOSED_BLOCK_MESSAGE
 #undef YAMSC_COMPOSED_ERROR_MESSAGE

@@ -43,19 +43,27 @@ template <class Item> const Item* named(const std::vector<Item>& items, const st
 
 ModelHandle ModelHandle::from_source(const std::string& path, const std::string& sid,
                                      const std::vector<driver::Assignment>& set,
-                                     std::vector<std::string> routines,
-                                     const std::string& external) {
+                                     std::vector<std::string> routines, const std::string& external,
+                                     const analysis::BlockOptions& blocks) {
     std::ostringstream err;
-    std::optional<analysis::Loaded> loaded;
+    ModelHandle h;
+    h.blocks_ = blocks;
     try {
-        loaded = analysis::load(path, set, sid, false, err, {}, routine_set(routines), external);
+        codegen::RoutineSet wanted = routine_set(routines);
+        analysis::add_block_routines(blocks, wanted.contains(codegen::RoutineId::rhs_jacobian),
+                                     wanted);
+        std::optional<analysis::Loaded> loaded =
+            analysis::load(path, set, sid, false, err, {}, wanted, external);
+        if (!loaded) throw LoadError(err.str());
+        h.loaded_ = std::move(*loaded);
+        h.loaded_.view = analysis::with_load_blocks(h.loaded_, blocks);
+    } catch (const LoadError&) {
+        throw;
     } catch (const std::exception& e) {
-        // UserError (a --set name that does not exist), a failed compile, ...
+        // UserError (a --set name that does not exist, a block the model does
+        // not declare), a failed compile, ...
         throw LoadError(err.str() + e.what());
     }
-    if (!loaded) throw LoadError(err.str());
-    ModelHandle h;
-    h.loaded_ = std::move(*loaded);
     return h;
 }
 
@@ -75,7 +83,8 @@ const runtime::ModelView& ModelHandle::view_at(const double* p) {
     const std::size_t n = loaded_.params.size();
     if (n == 0 || std::equal(p, p + n, loaded_.params.begin())) return loaded_.view;
     if (other_params_.size() != n || !std::equal(p, p + n, other_params_.begin())) {
-        other_view_ = library().view(std::vector<double>(p, p + n));
+        const std::vector<double> params(p, p + n);
+        other_view_ = analysis::with_load_blocks(loaded_, library().view(params), params, blocks_);
         other_params_.assign(p, p + n);
     }
     return other_view_;

@@ -3,6 +3,7 @@
 // through the JIT's cache, or built beforehand), its bound parameters and the
 // view at other parameters a call asks for. No pybind11 here: the binding
 // (module.cpp) converts arrays and exceptions.
+#include "analysis/load_blocks.hpp"
 #include "analysis/loaded_model.hpp"
 
 #include <yamsc/model_view.hpp>
@@ -30,11 +31,14 @@ public:
     /// Checks and compiles a model file like `yamsc sim`: `routines` of the ABI
     /// (empty: every one) in one cached library, shared with the commands that
     /// compile the same routines. `external`: the model's external functions
-    /// (a library or a C/C++ source, as `--external`). Throws LoadError with the diagnostics.
+    /// (a library or a C/C++ source, as `--external`). `blocks`: the load
+    /// blocks the model declares that are closed around it, as `yamsc sim`
+    /// closes them (analysis/load_blocks.hpp). Throws LoadError with the diagnostics.
     static ModelHandle from_source(const std::string& path, const std::string& sid,
                                    const std::vector<driver::Assignment>& set,
                                    std::vector<std::string> routines,
-                                   const std::string& external = "");
+                                   const std::string& external = "",
+                                   const analysis::BlockOptions& blocks = {});
     /// A library exporting a model (abi_export.hpp), bound to its defaults and `set`.
     static ModelHandle from_library(const std::string& path,
                                     const std::vector<driver::Assignment>& set);
@@ -57,6 +61,7 @@ public:
 
 private:
     analysis::Loaded loaded_;
+    analysis::BlockOptions blocks_;
     std::vector<double> other_params_;
     runtime::ModelView other_view_;
 };

@@ -325,13 +325,15 @@ PYBIND11_MODULE(_yamsc, mod) {
     mod.def(
         "load",
         [](const std::string& path, const std::string& sid, const Assignments& set,
-           const std::vector<std::string>& routines, const std::string& external) {
+           const std::vector<std::string>& routines, const std::string& external,
+           const std::string& aero) {
             const auto a = assignments(set);
             py::gil_scoped_release released; // compiling can take seconds
-            return ModelHandle::from_source(path, sid, a, routines, external);
+            return ModelHandle::from_source(path, sid, a, routines, external,
+                                            yamsc::analysis::BlockOptions{aero});
         },
         py::arg("path"), py::arg("sid"), py::arg("set"), py::arg("routines"),
-        py::arg("external") = std::string());
+        py::arg("external") = std::string(), py::arg("aero") = std::string());
     mod.def(
         "load_library",
         [](const std::string& path, const Assignments& set) {

@@ -236,18 +236,20 @@ ROUTINES = ("rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outpu
 SIMULATE = ("rhs", "outputs")
 
 
-def load(path, sid=None, set=None, routines=None, external=None):
+def load(path, sid=None, set=None, routines=None, external=None, aero=None):
     """Checks and compiles a model file (cached like `yamsc sim`).
 
     sid: "body=file.sid,..." or {"body": "file.sid"} (as --sid); set: {name:
     value} over the parameters' defaults (as --set); routines: those to
     compile (default: all of ROUTINES; fewer compile faster for large models);
     external: the model's external functions, a shared library or a C/C++
-    source (as --external; one implementation per function name and process).
-    Raises yamsc.Error with the located diagnostics when the model has errors.
+    source (as --external; one implementation per function name and process);
+    aero: a Cp/Ct/Cq table for the model's `load rotor_table` block, closed
+    around the model as `yamsc sim --aero` closes it (its outputs follow the
+    model's). Raises yamsc.Error with the located diagnostics when the model has errors.
     """
     return Model(_yamsc.load(str(path), _sid_spec(sid), _assignments(set, "set"),
-                             list(routines or ()), str(external or "")))
+                             list(routines or ()), str(external or ""), str(aero or "")))
 
 
 def load_library(path, set=None):

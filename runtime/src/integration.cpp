@@ -52,6 +52,11 @@ double TimeGrid::operator[](std::size_t k) const {
 
 std::string state_name(const ModelView& view, int i) {
     if (i < 0 || i >= view.nx()) return "state " + std::to_string(i);
+    if (i >= 2 * view.nq) {
+        const auto k = static_cast<std::size_t>(i - 2 * view.nq);
+        return k < view.block_state_names.size() ? view.block_state_names[k]
+                                                 : "state " + std::to_string(i);
+    }
     const auto dof = static_cast<std::size_t>(i % view.nq);
     const std::string name =
         dof < view.dof_names.size() ? view.dof_names[dof] : "q" + std::to_string(dof);
@@ -62,7 +67,7 @@ void check_initial_state(const ModelView& view, const std::vector<double>& x0) {
     if (x0.size() != static_cast<std::size_t>(view.nx()))
         throw std::invalid_argument("initial state has " + std::to_string(x0.size()) +
                                     " values, the model needs " + std::to_string(view.nx()) +
-                                    " (its DOFs and their rates)");
+                                    " (its DOFs, their rates and its load blocks' states)");
     for (std::size_t i = 0; i < x0.size(); ++i)
         if (!std::isfinite(x0[i]))
             throw std::invalid_argument("initial value of " +

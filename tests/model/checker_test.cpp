@@ -2,6 +2,7 @@
 // text, the data of flexible bodies from a fake model::DataSource that records what
 // it was asked and never touches a disk.
 #include "model/checker.hpp"
+#include "model/load_check.hpp"
 #include "parse/parser.hpp"
 
 #include <doctest/doctest.h>
@@ -220,4 +221,39 @@ TEST_CASE("one DOF may drive steps of several joints (a gear), not two steps of 
     INFO(diags.render());
     CHECK(m.has_value());
     CHECK(!diags.has_errors());
+}
+
+TEST_CASE("load: roles bound to the model's names; the source digest leaves the statement out") {
+    const std::string base = R"(model m
+param R = 63, rho = 1.2
+input V, T, Q
+dof s, psi
+rigid tower { mass = 1 }
+rigid rotor { mass = 1; inertia = (1, 1, 1) }
+joint ground -> tower { translate x s }
+joint tower -> rotor { rotate x psi }
+force on rotor = (T, 0, 0)
+torque on rotor = (Q, 0, 0)
+output speed = psi'
+output hub = s'
+)";
+    const std::string decl = "load rotor_table aero { wind = V; thrust = T; rotor_torque = Q\n"
+                             "    speed = speed; hub_velocity = hub; radius = R; density = rho }\n";
+    FakeData data;
+    diag::Diagnostics diags;
+    auto m = check_text(base + decl + "output after = s\n", data, diags);
+    INFO(diags.render());
+    REQUIRE(m);
+    REQUIRE(m->loads.size() == 1);
+    const model::LoadBlock& b = m->loads[0];
+    CHECK(b.kind == model::LoadKind::rotor_table);
+    CHECK(b.name == "aero");
+    using Role = model::RotorTableRole;
+    CHECK(b.role(Role::wind) == "V");
+    CHECK(b.role(Role::pitch).empty()); // optional, not bound
+    CHECK(b.role(Role::torque) == "Q");
+    CHECK(b.role(Role::hub_velocity) == "hub");
+    CHECK(b.role(Role::density) == "rho");
+    CHECK(model::without_load_statements(base + decl + "output after = s\n", *m) ==
+          base + "output after = s\n");
 }

@@ -433,3 +433,26 @@ TEST_CASE("an empty file and a file of comments parse to an empty model") {
         CHECK(f.source.get() != nullptr);
     }
 }
+
+TEST_CASE("load: kind, name, roles as properties, the statement's extent") {
+    const ast::ModelFile f = parse_ok("model m\n"
+                                      "load rotor_table aero {   # a comment\n"
+                                      "    wind = V; pitch = beta\n"
+                                      "    radius = R\n"
+                                      "}\n");
+    REQUIRE(f.loads.size() == 1);
+    const ast::Load& l = f.loads[0];
+    CHECK(l.kind.name == "rotor_table");
+    CHECK(l.kind.loc.col == 6);
+    CHECK(l.id.name == "aero");
+    CHECK(l.loc.line == 2);
+    CHECK(l.loc.col == 1);
+    CHECK(l.end.line == 5);
+    CHECK(l.end.col == 1);
+    REQUIRE(l.roles.size() == 3);
+    CHECK(l.roles[0].key == "wind");
+    CHECK(str(l.roles[0].value.expr) == "V");
+    CHECK(l.roles[1].key == "pitch");
+    CHECK(l.roles[2].key == "radius");
+    CHECK(l.roles[2].loc.line == 4);
+}

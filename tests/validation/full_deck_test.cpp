@@ -82,6 +82,12 @@ TEST_CASE("a full deck: the rotor block, the wind, the generator and the control
     CHECK(text.find("#     --tmax 200 --dt 0.00625\n") != std::string::npos);
     CHECK(text.find("#   (--aero from PerfFileName, DISCON.IN; --wind from "
                     "NRELOffshrBsline5MW_InflowWind.dat:14)\n") != std::string::npos);
+    // The rotor block of --aero, declared on those channels (docs/language.md, Load blocks).
+    CHECK(
+        text.find("\nload rotor_table aero {\n"
+                  "    wind = V_wind; pitch = pitch; thrust = thrust; rotor_torque = aero_torque\n"
+                  "    speed = rotor_speed; hub_velocity = hub_shaft_velocity\n"
+                  "    radius = rotor_radius; density = air_density\n}\n") != std::string::npos);
     // What the block and a controller read.
     for (const char* channel :
          {"output rotor_speed = (psi' + drtr')",

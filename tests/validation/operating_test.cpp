@@ -2,9 +2,10 @@
 // (`sim --aero --wind`), against OpenFAST + AeroDyn's BEM in steady operation
 // (tests/data/reference/operating/README.md), and the tower's aerodynamic
 // damping from `lin --aero`. Differences and their causes: docs/validation.md.
+#include "analysis/load_blocks.hpp"
 #include "analysis/loaded_model.hpp"
-#include "analysis/rotor_aero_setup.hpp"
 #include "analysis/trim_point.hpp"
+#include "analysis/wind_input.hpp"
 #include "codegen/routines.hpp"
 #include "driver/values.hpp"
 #include "test_files.hpp"
@@ -165,6 +166,11 @@ yamsc::runtime::TrimResult trimmed(const std::string& wind, double rpm, const st
     yamsc::analysis::operating_point(*loaded, loaded->params, {},
                                      yamsc::driver::parse_assignments(u, "--u"), q, qd, u0);
     yamsc::analysis::set_wind_at_start(v, u0, wind);
+    const yamsc::runtime::ModelView v = yamsc::driver::with_load_blocks(*loaded, {table});
+    std::vector<double> q, qd, u0;
+    yamsc::driver::operating_point(*loaded, loaded->params, {},
+                                   yamsc::driver::parse_assignments(u, "--u"), q, qd, u0);
+    yamsc::driver::set_wind_at_start(*loaded, v, u0, wind);
     qd[2] = rpm * pi / 30; // psi
     return yamsc::analysis::trim_point(v, q, qd, u0, {}, {adjust});
 }
@@ -415,6 +421,7 @@ TEST_CASE("the operating model closed by the rotor block: Jacobians equal finite
     auto l = yamsc::analysis::load(model, {}, "", false, err, {}, yamsc::codegen::abi_routines());
     REQUIRE_MESSAGE(l, err.str());
     const yamsc::runtime::ModelView v = yamsc::analysis::close_rotor_aero(*l, table);
+    const yamsc::runtime::ModelView v = yamsc::driver::with_load_blocks(*l, {table});
     const int nq = v.nq, nu = v.nu;
     std::vector<double> q{0.2, -0.02, 1.0, 0.003}, qd{0.05, 0.01, 1.27, 0.001};
     REQUIRE(nq == 4);

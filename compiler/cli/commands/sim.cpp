@@ -49,8 +49,6 @@ SimOptions parse_sim(const Args& a) {
     if (!o.at.empty() && !o.linear) throw UsageError("--at needs --linear");
     o.aero = a.get("--aero");
     o.wind = a.get("--wind");
-    if (o.linear && !o.aero.empty())
-        throw UsageError("--linear does not take --aero (use yamsc lin --aero)");
     o.controller = a.get("--controller");
     o.controller_input = a.get("--controller-input");
     if (o.controller.empty() && !o.controller_input.empty())

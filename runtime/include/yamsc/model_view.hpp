@@ -40,7 +40,15 @@ struct ModelView {
                        const double* u, double* y)>
         outputs_from_qdd;
 
-    int nx() const { return 2 * nq; }
+    // First-order states of load blocks closed around the model (load_block.hpp),
+    // after q and q' in x = [q, q', z]. The functions given q and q' apart read
+    // them after q' (at qd + nq), as the integrators pass x and x + nq; a view
+    // with such states has no forcing or jacobians (it is not second order).
+    int nz = 0;
+    std::vector<std::string> block_state_names; // nz names
+    std::vector<double> block_initial_states;   // nz values
+
+    int nx() const { return 2 * nq + nz; }
 };
 
 namespace detail {

@@ -7,11 +7,13 @@
 // The model declares the loads as inputs (force and torque on the rotor) and
 // the hub's velocity along the shaft and the rotor speed as outputs; the
 // wrapped view feeds the loads back, so the tower sees its aerodynamic damping
-// (v_hub) and the rotor its speed feedback (lambda). This is one kind of load
-// block over a ModelView; a blade-element one can be another.
+// (v_hub) and the rotor its speed feedback (lambda). It is a LoadBlock
+// (load_block.hpp) without states.
+#include "yamsc/load_block.hpp"
 #include "yamsc/model_view.hpp"
 #include "yamsc/performance_table.hpp"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,7 @@ struct RotorAero {
     // Outputs of the model: rotor speed [rad/s] and the hub's velocity along
     // the shaft, downwind positive [m/s].
     int speed_output = -1, hub_velocity_output = -1;
+    std::string name = "aero"; // its outputs are NAME_thrust, NAME_torque_out, ...
 };
 
 /// Loads and their exact partial derivatives in V_rel, Omega and pitch [rad].
@@ -49,13 +52,14 @@ RotorAero bind_rotor_aero(const ModelView& view, PerformanceTable table, double 
                           const std::string& thrust, const std::string& torque,
                           const std::string& speed, const std::string& hub_velocity);
 
-/// `base` with the block closed around it: same states and inputs; outputs
-/// followed by aero_thrust [N], aero_torque_out [N m], aero_power [W], aero_tsr,
-/// aero_v_rel [m/s], aero_cp, aero_ct. Jacobians: the base's plus the loads'
-/// chain rule (table partials exact; the two outputs' derivatives in the
-/// states by central differences of the base's outputs). The two outputs are
-/// read through the base's outputs_from_qdd when it has one (they do not read
-/// q'': no solve of M q'' = F); the view has outputs_from_qdd when the base has.
+/// The block: it reads the rotor speed and hub velocity outputs and the wind
+/// and pitch inputs, adds thrust and torque to their inputs; its outputs are
+/// NAME_thrust [N], NAME_torque_out [N m], NAME_power [W], NAME_tsr,
+/// NAME_v_rel [m/s], NAME_cp, NAME_ct; its derivatives are exact (the table's
+/// partials).
+std::shared_ptr<const LoadBlock> rotor_table_block(RotorAero aero);
+
+/// `base` with the block closed around it (close_blocks).
 ModelView with_rotor_aero(const ModelView& base, const RotorAero& aero);
 
 } // namespace yamsc::runtime

@@ -1,0 +1,29 @@
+#pragma once
+// The builders of the load-block kinds (one file each, rotor_table_block.cpp,
+// ...), registered in load_blocks.cpp: a model's declaration of the kind, its
+// roles bound to names of the view, turned into the runtime's block.
+#include "analysis/load_blocks.hpp"
+#include "model/model.hpp"
+
+#include <memory>
+
+namespace yamsc::analysis {
+
+/// What a builder gets besides the declaration.
+struct BlockContext {
+    const Loaded& loaded;
+    const runtime::ModelView& view;    // the view the block is closed around
+    const std::vector<double>& params; // the parameters it is bound to
+    const BlockOptions& options;
+};
+
+/// The index of `name` in `names` (the checker has seen it declared).
+int index_in(const std::vector<std::string>& names, const std::string& name);
+
+/// The value of parameter `name` in the context.
+double parameter(const BlockContext& c, const std::string& name);
+
+std::shared_ptr<const runtime::LoadBlock> build_rotor_table(const model::LoadBlock& decl,
+                                                            const BlockContext& c);
+
+} // namespace yamsc::analysis

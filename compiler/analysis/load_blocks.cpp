@@ -1,0 +1,154 @@
+#include "analysis/load_blocks.hpp"
+
+#include "analysis/load_block_kinds.hpp"
+#include "diag/errors.hpp"
+#include "model/load_kinds.hpp"
+
+#include <stdexcept>
+
+namespace yamsc::analysis {
+
+using diag::InternalError;
+using diag::UserError;
+
+namespace {
+
+using Builder = std::shared_ptr<const runtime::LoadBlock> (*)(const model::LoadBlock&,
+                                                              const BlockContext&);
+
+/// A kind of load block: the option that supplies its data and its builder.
+struct Registration {
+    model::LoadKind kind;
+    const char* option;
+    std::string BlockOptions::*file; // the file that option names
+    Builder build;
+};
+
+const Registration registry[] = {
+    {model::LoadKind::rotor_table, "--aero", &BlockOptions::aero, build_rotor_table},
+};
+
+bool supplied(const Registration& r, const BlockOptions& b) {
+    return !(b.*r.file).empty();
+}
+
+const model::Model* model_of(const Loaded& l) {
+    return l.front.model ? &*l.front.model : nullptr;
+}
+
+const char* target_noun(model::RoleTarget t) {
+    switch (t) {
+    case model::RoleTarget::input_read:
+        return "INPUT";
+    case model::RoleTarget::load_input:
+        return "INPUT";
+    case model::RoleTarget::output_read:
+        return "OUTPUT";
+    case model::RoleTarget::parameter:
+        return "PARAM";
+    }
+    return "NAME";
+}
+
+/// The declaration a model lacks, written out with its roles.
+std::string declaration_to_add(const model::LoadKindInfo& k) {
+    std::string text = "    load " + k.name + " NAME {\n";
+    for (const model::LoadRole& r : k.roles) {
+        std::string line = "        " + r.name + " = " + target_noun(r.target);
+        line.resize(std::max<std::size_t>(line.size() + 1, 36), ' ');
+        text += line + "# " + r.what + (r.required ? "" : " (optional)") + "\n";
+    }
+    return text + "    }";
+}
+
+} // namespace
+
+int index_in(const std::vector<std::string>& names, const std::string& name) {
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name) return static_cast<int>(i);
+    throw InternalError("load block: '" + name + "' is not a channel of the model's view");
+}
+
+double parameter(const BlockContext& c, const std::string& name) {
+    const int i = c.loaded.library->param_index(name);
+    if (i < 0) throw InternalError("load block: '" + name + "' is not a parameter of the model");
+    return c.params[static_cast<std::size_t>(i)];
+}
+
+bool any_blocks(const BlockOptions& b) {
+    for (const Registration& r : registry)
+        if (supplied(r, b)) return true;
+    return false;
+}
+
+void add_block_routines(const BlockOptions& b, bool exact_jacobian, codegen::RoutineSet& routines) {
+    if (!any_blocks(b)) return;
+    routines.insert(codegen::RoutineId::outputs);
+    if (exact_jacobian)
+        routines.insert({codegen::RoutineId::mass_matrix, codegen::RoutineId::jacobians});
+}
+
+std::vector<driver::NamedFile> block_files(const BlockOptions& b) {
+    std::vector<driver::NamedFile> files;
+    for (const Registration& r : registry)
+        if (supplied(r, b)) files.push_back({r.option, b.*r.file});
+    return files;
+}
+
+runtime::LoadBlocks load_blocks(const Loaded& l, const runtime::ModelView& v,
+                                const std::vector<double>& params, const BlockOptions& b) {
+    const model::Model* m = model_of(l);
+    const BlockContext context{l, v, params, b};
+    runtime::LoadBlocks blocks;
+    for (const Registration& r : registry) {
+        if (!supplied(r, b)) continue;
+        const model::LoadKindInfo& kind = model::load_kind_info(r.kind);
+        bool declared = false;
+        for (const model::LoadBlock& decl : m ? m->loads : std::vector<model::LoadBlock>{}) {
+            if (decl.kind != r.kind) continue;
+            declared = true;
+            try {
+                blocks.push_back(r.build(decl, context));
+            } catch (const std::invalid_argument& e) {
+                throw UserError(std::string(r.option) + ": " + e.what());
+            } catch (const std::runtime_error& e) {
+                throw UserError(std::string(r.option) + ": " + e.what());
+            }
+        }
+        if (!declared)
+            throw UserError(std::string(r.option) + ": the model declares no `load " + kind.name +
+                            "` block for it; add one that binds its roles to the model's " +
+                            "names (docs/language.md, Load blocks):\n" + declaration_to_add(kind));
+    }
+    return blocks;
+}
+
+runtime::ModelView with_load_blocks(const Loaded& l, const BlockOptions& b) {
+    return with_load_blocks(l, l.view, l.params, b);
+}
+
+runtime::ModelView with_load_blocks(const Loaded& l, const runtime::ModelView& v,
+                                    const std::vector<double>& params, const BlockOptions& b) {
+    if (!any_blocks(b)) return v;
+    const runtime::LoadBlocks blocks = load_blocks(l, v, params, b);
+    try {
+        return runtime::close_blocks(v, blocks);
+    } catch (const std::invalid_argument& e) {
+        throw UserError(std::string("load blocks: ") + e.what());
+    }
+}
+
+int wind_input(const Loaded& l, const runtime::ModelView& v) {
+    if (const model::Model* m = model_of(l))
+        for (const model::LoadBlock& decl : m->loads) {
+            const model::LoadKindInfo& kind = model::load_kind_info(decl.kind);
+            if (kind.wind_role < 0) continue;
+            const std::string& name = decl.bound[static_cast<std::size_t>(kind.wind_role)];
+            if (!name.empty()) return index_in(v.input_names, name);
+        }
+    throw UserError("--wind: the model declares no load block with a wind input; add one that "
+                    "binds it (docs/language.md, Load blocks), e.g.\n" +
+                    declaration_to_add(model::load_kinds().front()));
+}
+
+} // namespace yamsc::analysis

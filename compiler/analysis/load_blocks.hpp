@@ -1,0 +1,56 @@
+#pragma once
+// The one place where a command's load blocks are chosen: the blocks the model
+// declares (`load KIND NAME { role = name ... }`, model/load_kinds.hpp) whose
+// data the command line supplies (--aero TABLE: the rotor_table blocks), each
+// built by its kind's builder (one file per kind, registered in
+// load_blocks.cpp) and closed around the model's view (yamsc/load_block.hpp).
+// sim, batch, trim, lin, the sweeps and the Python module all come here.
+#include "analysis/loaded_model.hpp"
+#include "codegen/routines.hpp"
+#include "driver/outputs.hpp"
+
+#include <yamsc/load_block.hpp>
+#include <yamsc/model_view.hpp>
+
+#include <string>
+#include <vector>
+
+namespace yamsc::analysis {
+
+/// What the command line gives the load blocks.
+struct BlockOptions {
+    std::string aero; // --aero TABLE: the Cp/Ct/Cq table of the rotor_table blocks
+};
+
+/// The block options of a command's options (sim, lin, trim: each has --aero).
+template <class Options> BlockOptions block_options(const Options& o) {
+    return {o.aero};
+}
+
+/// Whether the options ask for any load block.
+bool any_blocks(const BlockOptions& b);
+
+/// The routines closed blocks call besides the command's (jit.hpp): the outputs
+/// they read; with `exact_jacobian` (CVODE's rhs_jacobian), M and F's Jacobians.
+void add_block_routines(const BlockOptions& b, bool exact_jacobian, codegen::RoutineSet& routines);
+
+/// The files the options name: inputs no output of the command may replace.
+std::vector<driver::NamedFile> block_files(const BlockOptions& b);
+
+/// The model's blocks the options supply, built at `params` for the view `v`
+/// (UserError naming what to declare when the model has no block of a kind
+/// the options supply, or what a block's data lacks).
+runtime::LoadBlocks load_blocks(const Loaded& l, const runtime::ModelView& v,
+                                const std::vector<double>& params, const BlockOptions& b);
+
+/// `l`'s view with those blocks closed around it (the view itself without any).
+runtime::ModelView with_load_blocks(const Loaded& l, const BlockOptions& b);
+/// The same for a view of `l`'s library at other parameters.
+runtime::ModelView with_load_blocks(const Loaded& l, const runtime::ModelView& v,
+                                    const std::vector<double>& params, const BlockOptions& b);
+
+/// The input `--wind` drives: the wind role of the model's first load block
+/// that has one (UserError naming the declaration to add without one).
+int wind_input(const Loaded& l, const runtime::ModelView& v);
+
+} // namespace yamsc::analysis

@@ -1,0 +1,43 @@
+#pragma once
+// The kinds of load block a model may declare (`load KIND NAME { role = ... }`,
+// docs/language.md) and their roles: what each binds to in the model. The
+// checker validates a declaration against this table; analysis/load_blocks.cpp
+// builds the runtime's block of each kind from the bound names. A new kind is a
+// row here, its role enum, and its builder in analysis/.
+#include <string>
+#include <vector>
+
+namespace yamsc::model {
+
+enum class LoadKind { rotor_table };
+
+/// What a role is bound to.
+enum class RoleTarget {
+    input_read,  // an input the block reads (wind, pitch)
+    load_input,  // an input the block's load is added to
+    output_read, // an output the block reads (the motion it responds to)
+    parameter,   // a parameter, at its bound value
+};
+
+struct LoadRole {
+    std::string name;
+    RoleTarget target;
+    bool required;
+    std::string what; // for messages and docs
+};
+
+struct LoadKindInfo {
+    LoadKind kind;
+    std::string name;
+    std::vector<LoadRole> roles;      // in the order of the kind's role enum
+    std::vector<std::string> outputs; // the block's outputs, NAME_<output>, after the model's
+    int wind_role = -1;               // the role `--wind` drives, if any
+};
+
+/// The roles of `load rotor_table`, in the order of its LoadKindInfo::roles.
+enum class RotorTableRole { wind, pitch, thrust, torque, speed, hub_velocity, radius, density };
+
+const std::vector<LoadKindInfo>& load_kinds();
+const LoadKindInfo& load_kind_info(LoadKind kind);
+
+} // namespace yamsc::model

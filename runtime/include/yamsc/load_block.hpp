@@ -1,0 +1,62 @@
+#pragma once
+// Load blocks: whatever computes loads on a model from its motion and time (the
+// quasi-steady rotor table of rotor_aero.hpp; blade elements, wind fields,
+// hydrodynamics and mooring alike). A block reads some of the model's outputs
+// (its motion: speeds, velocities, positions) and inputs (wind, pitch), has
+// states of its own if it needs them, and adds its loads to input channels of
+// the model; close_blocks() feeds them back, so the closed view is again a
+// ModelView that every integrator, `lin` and `trim` take as they take a model.
+#include "yamsc/model_view.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace yamsc::runtime {
+
+/// Where a block meets the view it is closed around, as indices of its channels.
+struct BlockPorts {
+    std::vector<int> outputs_read; // the view's outputs the block reads
+    std::vector<int> inputs_read;  // the view's inputs it reads; -1: an absent optional one (0)
+    std::vector<int> loads;        // the inputs its loads are added to, one per load
+};
+
+/// Partial derivatives of a block's loads and state rates, row-major: rows are
+/// loads (or rates), columns the block's states z or the values r it reads,
+/// r = [outputs read, inputs read] in the order of its ports.
+struct BlockJacobian {
+    std::vector<double> loads_z, loads_r, rates_z, rates_r;
+};
+
+class LoadBlock {
+public:
+    virtual ~LoadBlock() = default;
+    virtual const BlockPorts& ports() const = 0;
+    /// Its own outputs, appended to the view's.
+    virtual std::vector<std::string> output_names() const = 0;
+    /// Its states, integrated with the model's (none unless it has some).
+    virtual std::vector<std::string> state_names() const { return {}; }
+    virtual std::vector<double> initial_states() const;
+    /// The loads (one per port load), the state rates z' and the block's outputs
+    /// at time t, states z and read values r. May throw std::invalid_argument.
+    virtual void evaluate(double t, const double* z, const double* r, double* loads, double* rates,
+                          double* out) const = 0;
+    /// d(loads, z')/d(z, r); central differences of evaluate unless the block
+    /// knows them exactly.
+    virtual void derivatives(double t, const double* z, const double* r, BlockJacobian& j) const;
+};
+
+using LoadBlocks = std::vector<std::shared_ptr<const LoadBlock>>;
+
+/// `base` with the blocks closed around it, in order: each around the view
+/// closed by those before it (its ports are indices of that view, whose outputs
+/// end with theirs). Same DOFs and inputs; outputs followed by each block's;
+/// states [q, q', z of the first block, z of the second, ...] (ModelView::nz).
+/// Jacobians: the base's plus the chain rule through the loads (the block's
+/// derivatives; those of the outputs it reads by central differences of the
+/// base's outputs, read without q'' when the base has outputs_from_qdd).
+/// A closed view with states has rhs, rhs_jacobian, mass_matrix and outputs
+/// (it is integrated, not linearized): no forcing or jacobians.
+ModelView close_blocks(const ModelView& base, const LoadBlocks& blocks);
+
+} // namespace yamsc::runtime

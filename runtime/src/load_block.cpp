@@ -1,0 +1,367 @@
+#include "yamsc/load_block.hpp"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace yamsc::runtime {
+
+using Vec = std::vector<double>;
+
+namespace {
+
+std::size_t at(int i) {
+    return static_cast<std::size_t>(i);
+}
+
+/// A central-difference step for a value of this size.
+double step(double v) {
+    return 1e-6 * (1.0 + std::fabs(v));
+}
+
+/// One block closed around a view: what its closures share.
+struct Closed {
+    std::shared_ptr<const ModelView> base;
+    std::shared_ptr<const LoadBlock> block;
+    int nq = 0, nxb = 0, nz = 0, nro = 0, nr = 0, nl = 0, nout = 0;
+
+    /// The block at one point: the values it read, its loads, rates and outputs.
+    struct Point {
+        Vec r, loads, rates, out;
+    };
+
+    /// The base outputs at (q, q', u) as far as the block reads them. Those
+    /// read the motion: outputs_from_qdd with q'' = NaN gives them without
+    /// outputs' solve of M q'' = F, with the same numbers; a NaN in them
+    /// would mean they read q'': then outputs.
+    Vec read_outputs(double t, const double* q, const double* qd, const double* u) const {
+        Vec y(at(base->ny));
+        const std::vector<int>& read = block->ports().outputs_read;
+        if (base->outputs_from_qdd) {
+            const Vec unknown(at(nq), std::numeric_limits<double>::quiet_NaN());
+            base->outputs_from_qdd(t, q, qd, unknown.data(), u, y.data());
+            bool known = true;
+            for (int i : read) known = known && !std::isnan(y[at(i)]);
+            if (known) return y;
+        }
+        base->outputs(t, q, qd, u, y.data());
+        return y;
+    }
+
+    Vec reads(double t, const double* q, const double* qd, const double* u) const {
+        const BlockPorts& p = block->ports();
+        Vec r(at(nr));
+        if (nro) {
+            const Vec y = read_outputs(t, q, qd, u);
+            for (int i = 0; i < nro; ++i) r[at(i)] = y[at(p.outputs_read[at(i)])];
+        }
+        for (int i = nro; i < nr; ++i) {
+            const int c = p.inputs_read[at(i - nro)];
+            r[at(i)] = c < 0 ? 0.0 : u[c];
+        }
+        return r;
+    }
+
+    /// The block's states: after the base's states, which follow q' (ModelView::nz).
+    const double* states(const double* qd) const { return nz ? qd + nq + base->nz : nullptr; }
+
+    Point evaluate(double t, const double* q, const double* qd, const double* u) const {
+        Point p{reads(t, q, qd, u), Vec(at(nl)), Vec(at(nz)), Vec(at(nout))};
+        block->evaluate(t, states(qd), p.r.data(), p.loads.data(), p.rates.data(), p.out.data());
+        return p;
+    }
+
+    Vec effective_inputs(const Point& p, const double* u) const {
+        Vec ue(u, u + base->nu);
+        const std::vector<int>& loads = block->ports().loads;
+        for (int k = 0; k < nl; ++k) ue[at(loads[at(k)])] += p.loads[at(k)];
+        return ue;
+    }
+
+    /// d(outputs read)/d(base state), nro x nxb, by central differences.
+    Vec read_outputs_x(double t, const double* x, const double* u) const {
+        Vec d(at(nro * nxb));
+        const std::vector<int>& read = block->ports().outputs_read;
+        for (int j = 0; j < nxb && nro; ++j) {
+            const double h = step(x[j]);
+            Vec xp(x, x + nxb), xm = xp;
+            xp[at(j)] += h;
+            xm[at(j)] -= h;
+            const Vec yp = read_outputs(t, xp.data(), xp.data() + nq, u);
+            const Vec ym = read_outputs(t, xm.data(), xm.data() + nq, u);
+            for (int i = 0; i < nro; ++i) {
+                const std::size_t o = at(read[at(i)]);
+                d[at(i * nxb + j)] = (yp[o] - ym[o]) / (2 * h);
+            }
+        }
+        return d;
+    }
+
+    /// Rows d(v)/d(base state, z), (rows x (nxb + nz)), of loads or rates
+    /// v(z, r(x)): through the outputs read, and the states.
+    Vec chain(const Vec& v_r, const Vec& v_z, int rows, const Vec& dy_dx) const {
+        const int n = nxb + nz;
+        Vec d(at(rows * n), 0.0);
+        for (int k = 0; k < rows; ++k) {
+            for (int j = 0; j < nxb; ++j) {
+                double s = 0.0;
+                for (int i = 0; i < nro; ++i) s += v_r[at(k * nr + i)] * dy_dx[at(i * nxb + j)];
+                d[at(k * n + j)] = s;
+            }
+            for (int j = 0; j < nz; ++j) d[at(k * n + nxb + j)] = v_z[at(k * nz + j)];
+        }
+        return d;
+    }
+
+    /// d(loads)/du (nl x nu) through the inputs read.
+    Vec loads_u(const BlockJacobian& bj) const {
+        const int nu = base->nu;
+        Vec d(at(nl * nu), 0.0);
+        for (int k = 0; k < nl; ++k)
+            for (int i = nro; i < nr; ++i) {
+                const int c = block->ports().inputs_read[at(i - nro)];
+                if (c >= 0) d[at(k * nu + c)] += bj.loads_r[at(k * nr + i)];
+            }
+        return d;
+    }
+
+    BlockJacobian derivatives(double t, const double* qd, const Point& p) const {
+        BlockJacobian bj;
+        bj.loads_z.assign(at(nl * nz), 0.0);
+        bj.loads_r.assign(at(nl * nr), 0.0);
+        bj.rates_z.assign(at(nz * nz), 0.0);
+        bj.rates_r.assign(at(nz * nr), 0.0);
+        block->derivatives(t, states(qd), p.r.data(), bj);
+        return bj;
+    }
+
+    bool is_load(int column) const {
+        for (int c : block->ports().loads)
+            if (c == column) return true;
+        return false;
+    }
+
+    void jacobians(double t, const double* q, const double* qd, const double* u, double* dF_dq,
+                   double* dF_dqd, double* dF_du) const;
+    void rhs_jacobian(double t, const double* x, const double* u, double* J) const;
+};
+
+void Closed::jacobians(double t, const double* q, const double* qd, const double* u, double* dF_dq,
+                       double* dF_dqd, double* dF_du) const {
+    const Point p = evaluate(t, q, qd, u);
+    const Vec ue = effective_inputs(p, u);
+    base->jacobians(t, q, qd, ue.data(), dF_dq, dF_dqd, dF_du);
+    Vec x(q, q + nq);
+    x.insert(x.end(), qd, qd + nq);
+    const BlockJacobian bj = derivatives(t, qd, p);
+    const Vec dL_dx = chain(bj.loads_r, bj.loads_z, nl, read_outputs_x(t, x.data(), u));
+    const Vec dL_du = loads_u(bj);
+    const std::vector<int>& loads = block->ports().loads;
+    const int nu = base->nu, n = 2 * nq;
+    Vec f(at(nl));
+    for (int r = 0; r < nq; ++r) {
+        // dF/d(load) is F's column of the load's input (F is linear in it when
+        // the model applies it as a force or torque; taken at the effective
+        // input either way).
+        for (int k = 0; k < nl; ++k) f[at(k)] = dF_du[r * nu + loads[at(k)]];
+        for (int j = 0; j < nq; ++j) {
+            double sq = 0.0, sqd = 0.0;
+            for (int k = 0; k < nl; ++k) {
+                sq += f[at(k)] * dL_dx[at(k * n + j)];
+                sqd += f[at(k)] * dL_dx[at(k * n + nq + j)];
+            }
+            dF_dq[r * nq + j] += sq;
+            dF_dqd[r * nq + j] += sqd;
+        }
+        // The load channels stay additive: their columns are unchanged.
+        for (int j = 0; j < nu; ++j) {
+            if (is_load(j)) continue;
+            double s = 0.0;
+            for (int k = 0; k < nl; ++k) s += f[at(k)] * dL_du[at(k * nu + j)];
+            dF_du[r * nu + j] += s;
+        }
+    }
+}
+
+void Closed::rhs_jacobian(double t, const double* x, const double* u, double* J) const {
+    const Point p = evaluate(t, x, x + nq, u);
+    const Vec ue = effective_inputs(p, u);
+    const int n = nxb + nz, nu = base->nu;
+    Vec Jb(at(nxb * nxb));
+    base->rhs_jacobian(t, x, ue.data(), Jb.data());
+    for (int r = 0; r < n; ++r)
+        for (int j = 0; j < n; ++j) J[r * n + j] = r < nxb && j < nxb ? Jb[at(r * nxb + j)] : 0.0;
+    const BlockJacobian bj = derivatives(t, x + nq, p);
+    const Vec dy_dx = read_outputs_x(t, x, u);
+    const Vec dL = chain(bj.loads_r, bj.loads_z, nl, dy_dx);
+    const Vec dR = chain(bj.rates_r, bj.rates_z, nz, dy_dx);
+    for (int r = 0; r < nz; ++r)
+        for (int j = 0; j < n; ++j) J[(nxb + r) * n + j] = dR[at(r * n + j)];
+    const std::vector<int>& loads = block->ports().loads;
+    if (base->nz == 0 && base->mass_matrix && base->jacobians) {
+        // d q''/d(x, z) through the loads: M^-1 dF/d(load) d(load)/d(x, z).
+        const std::size_t m = at(nq * nq);
+        Vec M(m), dq(m), dqd(m), du(at(nq * nu));
+        base->mass_matrix(t, x, ue.data(), M.data());
+        base->jacobians(t, x, x + nq, ue.data(), dq.data(), dqd.data(), du.data());
+        Eigen::MatrixXd Me(nq, nq), G(nq, n);
+        for (int r = 0; r < nq; ++r) {
+            for (int j = 0; j < nq; ++j) Me(r, j) = M[at(r * nq + j)];
+            for (int j = 0; j < n; ++j) {
+                double s = 0.0;
+                for (int k = 0; k < nl; ++k) s += du[at(r * nu + loads[at(k)])] * dL[at(k * n + j)];
+                G(r, j) = s;
+            }
+        }
+        const Eigen::MatrixXd add = Me.ldlt().solve(G);
+        for (int r = 0; r < nq; ++r)
+            for (int j = 0; j < n; ++j) J[(nq + r) * n + j] += add(r, j);
+        return;
+    }
+    // A base with states of its own: its rates' derivatives in the loads by
+    // central differences of its rhs.
+    Vec up = ue, xdp(at(nxb)), xdm(at(nxb));
+    for (int k = 0; k < nl; ++k) {
+        const std::size_t c = at(loads[at(k)]);
+        const double h = step(ue[c]);
+        up[c] = ue[c] + h;
+        base->rhs(t, x, up.data(), xdp.data());
+        up[c] = ue[c] - h;
+        base->rhs(t, x, up.data(), xdm.data());
+        up[c] = ue[c];
+        for (int r = 0; r < nxb; ++r) {
+            const double d = (xdp[at(r)] - xdm[at(r)]) / (2 * h);
+            for (int j = 0; j < n; ++j) J[r * n + j] += d * dL[at(k * n + j)];
+        }
+    }
+}
+
+ModelView close_one(const ModelView& base_view, const std::shared_ptr<const LoadBlock>& block) {
+    if (!base_view.outputs)
+        throw std::invalid_argument("load block: the model view has no outputs");
+    const BlockPorts& ports = block->ports();
+    for (int i : ports.outputs_read)
+        if (i < 0 || i >= base_view.ny)
+            throw std::invalid_argument("load block: an output read is out of range");
+    for (int i : ports.inputs_read)
+        if (i >= base_view.nu)
+            throw std::invalid_argument("load block: an input read is out of range");
+    for (int i : ports.loads)
+        if (i < 0 || i >= base_view.nu)
+            throw std::invalid_argument("load block: a load's input is out of range");
+    Closed c;
+    c.base = std::make_shared<const ModelView>(base_view);
+    c.block = block;
+    const ModelView* base = c.base.get();
+    c.nq = base->nq;
+    c.nxb = base->nx();
+    c.nz = static_cast<int>(block->state_names().size());
+    c.nro = static_cast<int>(ports.outputs_read.size());
+    c.nr = c.nro + static_cast<int>(ports.inputs_read.size());
+    c.nl = static_cast<int>(ports.loads.size());
+    const std::vector<std::string> out_names = block->output_names();
+    c.nout = static_cast<int>(out_names.size());
+
+    ModelView v;
+    v.nq = base->nq;
+    v.nu = base->nu;
+    v.dof_names = base->dof_names;
+    v.input_names = base->input_names;
+    v.output_names = base->output_names;
+    v.output_names.insert(v.output_names.end(), out_names.begin(), out_names.end());
+    v.ny = static_cast<int>(v.output_names.size());
+    v.nz = base->nz + c.nz;
+    v.block_state_names = base->block_state_names;
+    v.block_initial_states = base->block_initial_states;
+    const std::vector<std::string> z_names = block->state_names();
+    const Vec z0 = block->initial_states();
+    if (z0.size() != z_names.size())
+        throw std::invalid_argument("load block: initial states do not match its states");
+    v.block_state_names.insert(v.block_state_names.end(), z_names.begin(), z_names.end());
+    v.block_initial_states.insert(v.block_initial_states.end(), z0.begin(), z0.end());
+    const int nq = v.nq, nxb = c.nxb;
+
+    if (base->rhs)
+        v.rhs = [c, nq, nxb](double t, const double* x, const double* u, double* xdot) {
+            const Closed::Point p = c.evaluate(t, x, x + nq, u);
+            c.base->rhs(t, x, c.effective_inputs(p, u).data(), xdot);
+            for (int i = 0; i < c.nz; ++i) xdot[nxb + i] = p.rates[at(i)];
+        };
+    if (base->mass_matrix)
+        v.mass_matrix = [c](double t, const double* q, const double* u, double* M) {
+            // M does not depend on the loads; u only for prescribed motion.
+            c.base->mass_matrix(t, q, u, M);
+        };
+    const bool second_order = v.nz == 0;
+    if (base->forcing && second_order)
+        v.forcing = [c](double t, const double* q, const double* qd, const double* u, double* F) {
+            const Closed::Point p = c.evaluate(t, q, qd, u);
+            c.base->forcing(t, q, qd, c.effective_inputs(p, u).data(), F);
+        };
+    v.outputs = [c](double t, const double* q, const double* qd, const double* u, double* y) {
+        // The loads from the outputs read, then every output again with the
+        // loads applied: those that read q'' or a reaction load see them too.
+        const Closed::Point p = c.evaluate(t, q, qd, u);
+        c.base->outputs(t, q, qd, c.effective_inputs(p, u).data(), y);
+        for (int i = 0; i < c.nout; ++i) y[c.base->ny + i] = p.out[at(i)];
+    };
+    // rhs's q'' is the base's at the effective inputs, as outputs uses them.
+    if (base->outputs_from_qdd)
+        v.outputs_from_qdd = [c](double t, const double* q, const double* qd, const double* qdd,
+                                 const double* u, double* y) {
+            const Closed::Point p = c.evaluate(t, q, qd, u);
+            c.base->outputs_from_qdd(t, q, qd, qdd, c.effective_inputs(p, u).data(), y);
+            for (int i = 0; i < c.nout; ++i) y[c.base->ny + i] = p.out[at(i)];
+        };
+    if (base->jacobians && second_order)
+        v.jacobians = [c](double t, const double* q, const double* qd, const double* u,
+                          double* dF_dq, double* dF_dqd,
+                          double* dF_du) { c.jacobians(t, q, qd, u, dF_dq, dF_dqd, dF_du); };
+    const bool exact = base->nz == 0 && base->mass_matrix && base->jacobians;
+    if (base->rhs_jacobian && (exact || base->rhs))
+        v.rhs_jacobian = [c](double t, const double* x, const double* u, double* J) {
+            c.rhs_jacobian(t, x, u, J);
+        };
+    return v;
+}
+
+} // namespace
+
+Vec LoadBlock::initial_states() const {
+    return Vec(state_names().size(), 0.0);
+}
+
+void LoadBlock::derivatives(double t, const double* z, const double* r, BlockJacobian& j) const {
+    const BlockPorts& p = ports();
+    const int nz = static_cast<int>(state_names().size()), nl = static_cast<int>(p.loads.size());
+    const int nr = static_cast<int>(p.outputs_read.size() + p.inputs_read.size());
+    const int nout = static_cast<int>(output_names().size());
+    Vec zv(z, z + nz), rv(r, r + nr), lp(at(nl)), lm(at(nl)), rp(at(nz)), rm(at(nz)), out(at(nout));
+    // Column `col` of d(loads)/dv and d(rates)/dv by a central difference in v[i].
+    auto column = [&](Vec& v, int i, std::vector<double>& dl, std::vector<double>& dr, int ncol) {
+        const double h = step(v[at(i)]), v0 = v[at(i)];
+        v[at(i)] = v0 + h;
+        evaluate(t, zv.data(), rv.data(), lp.data(), rp.data(), out.data());
+        v[at(i)] = v0 - h;
+        evaluate(t, zv.data(), rv.data(), lm.data(), rm.data(), out.data());
+        v[at(i)] = v0;
+        for (int k = 0; k < nl; ++k) dl[at(k * ncol + i)] = (lp[at(k)] - lm[at(k)]) / (2 * h);
+        for (int k = 0; k < nz; ++k) dr[at(k * ncol + i)] = (rp[at(k)] - rm[at(k)]) / (2 * h);
+    };
+    j.loads_z.assign(at(nl * nz), 0.0);
+    j.rates_z.assign(at(nz * nz), 0.0);
+    j.loads_r.assign(at(nl * nr), 0.0);
+    j.rates_r.assign(at(nz * nr), 0.0);
+    for (int i = 0; i < nz; ++i) column(zv, i, j.loads_z, j.rates_z, nz);
+    for (int i = 0; i < nr; ++i) column(rv, i, j.loads_r, j.rates_r, nr);
+}
+
+ModelView close_blocks(const ModelView& base, const LoadBlocks& blocks) {
+    ModelView v = base;
+    for (const auto& b : blocks) v = close_one(v, b);
+    return v;
+}
+
+} // namespace yamsc::runtime
