@@ -161,16 +161,11 @@ yamsc::runtime::TrimResult trimmed(const std::string& wind, double rpm, const st
     auto loaded =
         yamsc::analysis::load(model, {}, "", false, err, {}, yamsc::codegen::abi_routines());
     REQUIRE_MESSAGE(loaded, err.str());
-    const yamsc::runtime::ModelView v = yamsc::analysis::close_rotor_aero(*loaded, table);
+    const yamsc::runtime::ModelView v = yamsc::analysis::with_load_blocks(*loaded, {table});
     std::vector<double> q, qd, u0;
     yamsc::analysis::operating_point(*loaded, loaded->params, {},
                                      yamsc::driver::parse_assignments(u, "--u"), q, qd, u0);
-    yamsc::analysis::set_wind_at_start(v, u0, wind);
-    const yamsc::runtime::ModelView v = yamsc::driver::with_load_blocks(*loaded, {table});
-    std::vector<double> q, qd, u0;
-    yamsc::driver::operating_point(*loaded, loaded->params, {},
-                                   yamsc::driver::parse_assignments(u, "--u"), q, qd, u0);
-    yamsc::driver::set_wind_at_start(*loaded, v, u0, wind);
+    yamsc::analysis::set_wind_at_start(*loaded, v, u0, wind);
     qd[2] = rpm * pi / 30; // psi
     return yamsc::analysis::trim_point(v, q, qd, u0, {}, {adjust});
 }
@@ -420,8 +415,7 @@ TEST_CASE("the operating model closed by the rotor block: Jacobians equal finite
     std::ostringstream err;
     auto l = yamsc::analysis::load(model, {}, "", false, err, {}, yamsc::codegen::abi_routines());
     REQUIRE_MESSAGE(l, err.str());
-    const yamsc::runtime::ModelView v = yamsc::analysis::close_rotor_aero(*l, table);
-    const yamsc::runtime::ModelView v = yamsc::driver::with_load_blocks(*l, {table});
+    const yamsc::runtime::ModelView v = yamsc::analysis::with_load_blocks(*l, {table});
     const int nq = v.nq, nu = v.nu;
     std::vector<double> q{0.2, -0.02, 1.0, 0.003}, qd{0.05, 0.01, 1.27, 0.001};
     REQUIRE(nq == 4);
