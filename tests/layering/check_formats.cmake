@@ -1,11 +1,12 @@
 # formats/ stands below the compiler and the runtime: a format includes its own
-# headers, those of other formats, compiler/diag (located errors) and libraries,
+# headers, those of other formats, compiler/diag (located errors), compiler/text
+# (numbers as text; below diag) and libraries,
 # never a compiler stage or the runtime. The include paths alone would not stop it
 # (yamsc_diag exports compiler/), so the sources are read.
 #   cmake -DFORMATS=<source>/formats [-DEXTRA=<a file that must fail>] -P check_formats.cmake
 cmake_minimum_required(VERSION 3.20)
 file(GLOB folders LIST_DIRECTORIES true ${FORMATS}/*)
-set(allowed diag)
+set(allowed diag text)
 foreach(f ${folders})
   if(IS_DIRECTORY ${f})
     get_filename_component(name ${f} NAME)
@@ -30,4 +31,4 @@ if(bad)
   message(FATAL_ERROR "formats/ includes what stands above it:${bad}")
 endif()
 list(LENGTH sources count)
-message(STATUS "${count} files of formats/ include only formats/ and diag/")
+message(STATUS "${count} files of formats/ include only formats/, diag/ and text/")
