@@ -46,6 +46,9 @@ SweepPoints::SweepPoints(const Loaded& l, const LinOptions& o) : l_(l), o_(o) {
                             " (a rotor speed is swept as a rate: psi'=FROM:STEP:TO)");
         }
     }
+    if (!input_.empty() && !o.wind.empty() &&
+        v.input_names[static_cast<std::size_t>(wind_input(l, v))] == input_)
+        throw UsageError("--sweep " + input_ + "=.. sets the wind: drop --wind");
     if (!o.schedule.empty()) schedule_ = read_sweep_schedule(o.schedule, name);
     if (any_blocks(block_options(o))) {
         if (param_ >= 0)

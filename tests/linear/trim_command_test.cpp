@@ -128,5 +128,9 @@ TEST_CASE("trim --adjust: the pitch of steady operation in wind, and lin about i
     const Run typo = yamsc("trim " + operating + rated + " --adjust pich");
     CHECK_FALSE(typo.ok);
     CHECK(typo.err.find("did you mean 'pitch'") != std::string::npos);
+    // sweeping the input the rotor block declares as its wind while --wind sets it
+    const Run both = yamsc("lin " + operating + rated + " --sweep V_wind=10:2:12");
+    CHECK_FALSE(both.ok);
+    CHECK(both.err.find("--sweep V_wind=.. sets the wind: drop --wind") != std::string::npos);
     CHECK_FALSE(yamsc("lin " + operating + rated + " --adjust pitch").ok); // needs --trim
 }

@@ -54,8 +54,6 @@ LinOptions parse_lin(const Args& a) {
     if (o.sweep && o.json) throw UsageError("--sweep writes CSV, not --json");
     o.schedule = a.get("--schedule");
     if (!o.sweep && !o.schedule.empty()) throw UsageError("--schedule needs --sweep");
-    if (o.sweep && !o.wind.empty() && o.sweep->name == "V_wind")
-        throw UsageError("--sweep V_wind=.. sets the wind: drop --wind");
     return o;
 }
 
@@ -83,7 +81,8 @@ const char* point_help =
   --sid body=file.sid the shape integrals of a flexible body with `symbolic modes`
   --external LIB      the model's external functions: lib.so, or file.c|file.cpp compiled
   --aero TABLE        the quasi-steady rotor block from a Cp/Ct/Cq table (ROSCO's format)
-  --wind V            V_wind at the point (a --wind SPEC's value at t = 0)
+  --wind V            the wind at the point (the input a load block declares as its
+                      wind; a --wind SPEC's value at t = 0)
   --json              JSON on stdout
 )";
 

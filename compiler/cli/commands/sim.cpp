@@ -90,7 +90,8 @@ Command sim_command() {
   --linear            integrate the linear model about the operating point
   --at name=v,..      the operating point of --linear
   --aero TABLE        the quasi-steady rotor block from a Cp/Ct/Cq table (ROSCO's format)
-  --wind SPEC         V_wind: a speed, step:V0:V1:t=T, or a CSV of time and speed
+  --wind SPEC         the wind input a load block declares: a speed, step:V0:V1:t=T,
+                      or a CSV of time and speed
   --controller LIB    a DISCON controller library called at every step (RK4, ABM4)
   --controller-input F  its input file (accINFILE)
 Details: docs/cli.md.
