@@ -7,14 +7,9 @@
 #include "driver/files.hpp"
 
 #include "embedded_abi.hpp"
-#include <yamsc/atomic_file.hpp>
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <unistd.h>
 

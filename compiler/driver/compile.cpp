@@ -51,10 +51,9 @@ void check_namespace(const std::string& ns, const Target& target) {
 }
 
 /// Make-style dependency file: the outputs depend on the model file and on every
-/// data file it read (SID, ElastoDyn).
-/// Make-style dependencies, escaped as GCC escapes them and as make and Ninja
-/// read them: a space as "\ ", '#' as "\#", '$' as "$$". A line break cannot be
-/// written in a depfile at all.
+/// data file it read (SID, ElastoDyn), escaped as GCC escapes them and as make and
+/// Ninja read them: a space as "\ ", '#' as "\#", '$' as "$$". A line break cannot
+/// be written in a depfile at all.
 std::string depfile_text(const CompileOptions& o, const std::vector<std::string>& data_files) {
     auto escape = [](const std::string& s) {
         std::string out;
