@@ -46,6 +46,8 @@ const char* target_noun(model::RoleTarget t) {
         return "OUTPUT";
     case model::RoleTarget::parameter:
         return "PARAM";
+    case model::RoleTarget::body:
+        return "BODY";
     }
     return "NAME";
 }

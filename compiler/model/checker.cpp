@@ -3,6 +3,7 @@
 #include "model/expr_check.hpp"
 #include "model/flexible.hpp"
 #include "model/load_check.hpp"
+#include "model/mesh_channels.hpp"
 
 #include <algorithm>
 #include <functional>
@@ -49,6 +50,7 @@ public:
         check_loads();
         check_outputs();
         model_.loads = check_load_blocks(file_, model_, names_, diags_);
+        if (!diags_.has_errors()) add_mesh_channels(model_);
         check_externals();
         check_dof_usage();
         check_linearize();

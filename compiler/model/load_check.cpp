@@ -1,5 +1,7 @@
 #include "model/load_check.hpp"
 
+#include "model/mesh_channels.hpp"
+
 #include <algorithm>
 #include <map>
 
@@ -22,6 +24,8 @@ const char* target_noun(RoleTarget t) {
         return "output";
     case RoleTarget::parameter:
         return "parameter";
+    case RoleTarget::body:
+        return "body";
     }
     return "name";
 }
@@ -51,6 +55,7 @@ public:
         for (const Output& o : model.outputs) outputs_.push_back(o.name);
         for (const Input& i : model.inputs) inputs_.push_back(i.name);
         for (const Param& p : model.params) params_.push_back(p.name);
+        for (const Body& b : model.bodies) bodies_.push_back(b.name);
     }
 
     void check(const ast::Load& decl, std::vector<LoadBlock>& out) {
@@ -159,10 +164,10 @@ private:
         const ast::Value& v = p.value;
         if (v.kind != ast::Value::Kind::expr || v.expr.kind != Expr::Kind::name ||
             v.expr.primes != 0) {
+            const bool a = role.target == RoleTarget::parameter || role.target == RoleTarget::body;
             diags_.error(Kind::InvalidValue, v.loc,
-                         "role " + quoted(p.key) + " takes the name of " +
-                             (role.target == RoleTarget::parameter ? "a " : "an ") + noun + " (" +
-                             role.what + ")");
+                         "role " + quoted(p.key) + " takes the name of " + (a ? "a " : "an ") +
+                             noun + " (" + role.what + ")");
             return "";
         }
         const std::string& name = v.expr.text;
@@ -178,8 +183,9 @@ private:
                              "unknown output " + quoted(name) + diag::did_you_mean(name, outputs_));
             return "";
         }
-        const NameKind want =
-            role.target == RoleTarget::parameter ? NameKind::param : NameKind::input;
+        const NameKind want = role.target == RoleTarget::parameter ? NameKind::param
+                              : role.target == RoleTarget::body    ? NameKind::body
+                                                                   : NameKind::input;
         const auto it = names_.find(name);
         if (it == names_.end()) {
             const bool output = std::find(outputs_.begin(), outputs_.end(), name) != outputs_.end();
@@ -188,10 +194,11 @@ private:
                              quoted(name) + " is an output; role " + quoted(p.key) + " takes " +
                                  kind_noun(want) + " (" + role.what + ")");
             else
-                diags_.error(
-                    Kind::UnknownName, v.loc,
-                    std::string("unknown ") + noun + " " + quoted(name) +
-                        diag::did_you_mean(name, want == NameKind::param ? params_ : inputs_));
+                diags_.error(Kind::UnknownName, v.loc,
+                             std::string("unknown ") + noun + " " + quoted(name) +
+                                 diag::did_you_mean(name, want == NameKind::param  ? params_
+                                                          : want == NameKind::body ? bodies_
+                                                                                   : inputs_));
             return "";
         }
         if (it->second.kind != want) {
@@ -229,7 +236,7 @@ private:
 
     const SymbolTable& names_;
     diag::Diagnostics& diags_;
-    std::vector<std::string> outputs_, inputs_, params_;
+    std::vector<std::string> outputs_, inputs_, params_, bodies_;
     std::map<std::string, Loc> seen_;
 };
 
@@ -256,6 +263,7 @@ std::string without_load_statements(const std::string& text, const Model& model)
     std::string out;
     std::size_t from = 0;
     for (const LoadBlock& b : model.loads) {
+        if (has_mesh(b)) continue; // its mesh channels are part of the equations
         const std::size_t start = offset(b.loc);
         std::size_t stop = text.find('\n', offset(b.end));
         stop = stop == std::string::npos ? text.size() : stop + 1;

@@ -14,7 +14,8 @@ std::vector<LoadBlock> check_load_blocks(const ast::ModelFile& file, const Model
                                          const SymbolTable& names, diag::Diagnostics& diags);
 
 /// `text` (the model's source) without its `load` statements, each from its
-/// keyword to the end of the line of its `}`: they are run-time metadata, so
+/// keyword to the end of the line of its `}`, except those with a body role
+/// (their mesh channels are equations): the others are run-time metadata, so
 /// the digest of what the code is generated from leaves them out (models that
 /// differ only in them have the same generated code and cache entries).
 std::string without_load_statements(const std::string& text, const Model& model);

@@ -22,6 +22,21 @@ const std::vector<LoadKindInfo>& load_kinds() {
          },
          {"thrust", "torque_out", "power", "tsr", "v_rel", "cp", "ct"},
          static_cast<int>(RotorTableRole::wind)},
+        {LoadKind::blade_elements,
+         "blade_elements",
+         {
+             {"wind", T::input_read, true, "the hub-height wind speed [m/s]"},
+             {"pitch", T::input_read, false,
+              "the collective blade pitch added to the blades' own [rad]"},
+             {"hub", T::body, true, "the hub: its x axis is the rotor's axis"},
+             {"blade1", T::body, true, "blade 1 (a flexible body: its nodes follow it)"},
+             {"blade2", T::body, false, "blade 2"},
+             {"blade3", T::body, false, "blade 3"},
+             {"tower", T::body, false, "the tower (its influence and drag; not yet used)"},
+         },
+         {"RtSpeed", "RtTSR", "RtVAvgxh", "RtSkew", "RtFldFxh", "RtFldMxh", "RtFldPwr", "RtFldCp",
+          "RtFldCt", "RtFldCq"},
+         static_cast<int>(BladeElementsRole::wind)},
     };
     return kinds;
 }

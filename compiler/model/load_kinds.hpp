@@ -9,7 +9,7 @@
 
 namespace yamsc::model {
 
-enum class LoadKind { rotor_table };
+enum class LoadKind { rotor_table, blade_elements };
 
 /// What a role is bound to.
 enum class RoleTarget {
@@ -17,6 +17,7 @@ enum class RoleTarget {
     load_input,  // an input the block's load is added to
     output_read, // an output the block reads (the motion it responds to)
     parameter,   // a parameter, at its bound value
+    body,        // a body the block moves with and loads: its mesh channels (mesh_channels.hpp)
 };
 
 struct LoadRole {
@@ -36,6 +37,9 @@ struct LoadKindInfo {
 
 /// The roles of `load rotor_table`, in the order of its LoadKindInfo::roles.
 enum class RotorTableRole { wind, pitch, thrust, torque, speed, hub_velocity, radius, density };
+
+/// The roles of `load blade_elements`: AeroDyn's blade elements on the blades' nodes.
+enum class BladeElementsRole { wind, pitch, hub, blade1, blade2, blade3, tower };
 
 const std::vector<LoadKindInfo>& load_kinds();
 const LoadKindInfo& load_kind_info(LoadKind kind);

@@ -1,0 +1,59 @@
+#pragma once
+// Points of a body that move with it, rigid or flexible, and loads at them: the
+// runtime side of a load block's body roles (the compiler's mesh channels,
+// compiler/model/mesh_channels.hpp). The generated model gives the motion of the
+// body frame and of its modes; a point's motion follows from its shapes (a SID
+// node's, or a blend of two nodes'), exactly as the derivation moves a joint on
+// that node. A force and moment at the point become the body's loads through the
+// point's partial velocities: the force and moment at the body origin (body
+// axes) and the generalized force on each mode, Σ Jᵀ f with J the exact partial
+// velocities of the point, so nothing is lost between the block and Kane's
+// equations.
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace yamsc::runtime {
+
+/// The motion of a body frame and its modes, as its mesh channels give it.
+struct BodyFrame {
+    Eigen::Vector3d r, v, w;   // origin position, velocity, angular velocity (ground)
+    Eigen::Matrix3d R;         // the body's axes, in ground components (columns)
+    std::vector<double> q, qd; // its modes' coordinates and rates
+};
+
+/// A point of the body: undeformed position in body axes and, on a flexible
+/// body, its shapes per mode (SID node terms: translation Φ with its
+/// second-order part Φ¹ (axial shortening), rotation Ψ).
+struct BodyPoint {
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+    std::vector<Eigen::Vector3d> phi, psi; // per mode k
+    std::vector<Eigen::Vector3d> phi1;     // [k * nq + j]: Φ¹_·kj (empty: none)
+    Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity(); // the node frame in body axes
+};
+
+/// `a` and `b` blended, (1 - s) a + s b: a point between two nodes.
+BodyPoint blend(const BodyPoint& a, const BodyPoint& b, double s);
+
+/// A point's motion: position, orientation (its axes in ground components:
+/// body axes turned by the elastic rotations about x, then y, then z, then the
+/// node's orientation), velocity and angular velocity, in ground axes.
+struct PointMotion {
+    Eigen::Vector3d r, v, w;
+    Eigen::Matrix3d R;
+};
+
+PointMotion point_motion(const BodyFrame& f, const BodyPoint& p);
+
+/// The loads a block sets on a body through its mesh channels: force and moment
+/// at the body's origin in body axes, generalized force per mode.
+struct BodyLoad {
+    Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+    std::vector<double> modal;
+};
+
+/// Adds force `f` and moment `m` (ground axes) acting at point `p` to `load`.
+void add_point_load(const BodyFrame& frame, const BodyPoint& p, const Eigen::Vector3d& f,
+                    const Eigen::Vector3d& m, BodyLoad& load);
+
+} // namespace yamsc::runtime
