@@ -11,6 +11,7 @@ constexpr double pi = 3.14159265358979323846;
 
 // To [-pi, pi).
 inline double wrap_pi(double a) {
+    if (a >= -pi && a < pi) return a;
     a = std::fmod(a + pi, 2 * pi);
     if (a < 0) a += 2 * pi;
     return a - pi;

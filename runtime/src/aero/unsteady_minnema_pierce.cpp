@@ -21,10 +21,13 @@ namespace {
 constexpr double gonzalez_factor = 0.2; // offset of sqrt(f_c) (FLookup)
 
 // Y_n = Y_{n-1} exp(-dt/T) + (x_n - x_{n-1}) exp(-dt/(2T)).
+// (One exponential: the chain evaluates a dozen of these per step.)
 double deficiency(double dt, double T, double y_prev, double x, double x_prev) {
-    const double e = -dt / T;
-    return y_prev * std::exp(e) + (x - x_prev) * std::exp(0.5 * e);
+    const double half = std::exp(-0.5 * dt / T);
+    return y_prev * half * half + (x - x_prev) * half;
 }
+
+double square(double x) { return x * x; }
 
 bool same_single(double a, double b) {
     return static_cast<float>(a) == static_cast<float>(b);
@@ -47,7 +50,7 @@ Separation f_from_lookup(const UnsteadyAirfoil& af, double alpha_in, double alph
     if (!same_single(cna_circ, 0) && !same_single(alpha, alpha0) && !same_single(cn, 0))
         root = std::max(0.0, cn / (cna_circ * da));
     Separation s;
-    s.f = std::min(1.0, std::pow(2 * std::sqrt(root) - 1, 2));
+    s.f = std::min(1.0, square(2 * std::sqrt(root) - 1));
     s.cn_fs = s.f == 1 ? 0.0 : (cn - cna_circ * da * s.f) / (1 - s.f);
     return s;
 }
@@ -64,7 +67,7 @@ double f_c_from_lookup(const UnsteadyAirfoil& af, double alpha_in, double alpha0
     const double cc = p.cl * std::sin(alpha) - (p.cd - af.constants().Cd0) * std::cos(alpha);
     alpha = near(alpha0, alpha);
     const double denom = eta_e * cna_circ * (alpha - alpha0) * std::tan(alpha);
-    return std::min(limit, std::pow(cc / denom + gonzalez_factor, 2));
+    return std::min(limit, square(cc / denom + gonzalez_factor));
 }
 
 // Everything ComputeKelvinChain gives.
@@ -155,7 +158,7 @@ Chain kelvin_chain(const UnsteadyAirfoil& af, const UnsteadySettings& s, double 
         kc.cn_aq_nc + kc.cna_circ * kc.alpha_e * kc.fprimeprime + cn_fs_sep * (1 - kc.fprimeprime);
     kc.Dalphaf =
         x.first_pass ? 0.0 : deficiency(kc.ds, 0.1 * kc.T_f, x.Dalphaf, kc.alpha_f, x.alpha_f);
-    kc.C_V = kc.cn_aq_circ * (1 - std::pow(0.5 + 0.5 * std::sqrt(kc.fprimeprime), 2));
+    kc.C_V = kc.cn_aq_circ * (1 - square(0.5 + 0.5 * std::sqrt(kc.fprimeprime)));
     kc.T_V = k.T_V0 / x.sigma3;
     if (x.first_pass) {
         kc.cn_v = 0;

@@ -10,14 +10,15 @@
 // Per-airfoil data (polar columns, the separation function of Oye's model) is computed
 // once by UnsteadyAirfoil; a step allocates nothing.
 #include "yamsc/aero/airfoil.hpp"
+#include "yamsc/aero/rotor_input.hpp"
 
 #include <vector>
 
 namespace yamsc::aero {
 
-enum class UnsteadyModel { minnema_pierce = 3, oye = 6 };     // UA_Mod
 enum class UnsteadyIntegrator { rk4 = 1, ab4 = 2, abm4 = 3 }; // UA's IntegrationMethod
 
+// UnsteadyModel (UA_Mod, rotor_input.hpp): minnema_pierce and oye are modelled here.
 struct UnsteadySettings {
     UnsteadyModel model = UnsteadyModel::minnema_pierce;
     bool f_lookup = true;        // FLookup (UA_Mod 3)
