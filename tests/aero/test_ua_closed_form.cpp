@@ -62,6 +62,8 @@ constexpr double chord = 2, speed = 40;
 
 TEST_CASE("Oye's separation function recovers Kirchhoff's f from the polar") {
     const UnsteadyAirfoil af(kirchhoff());
+    CHECK(af.supports(UnsteadyModel::oye));
+    CHECK(af.supports(UnsteadyModel::minnema_pierce));
     for (int a = -20; a <= 30; ++a) {
         const double alpha = a * deg;
         const auto p = af.at(alpha);
@@ -142,4 +144,19 @@ TEST_CASE("UA_Mod 3: slow small pitching in attached flow tends to the steady po
                                                                         << faster);
     CHECK(slow < 0.02);
     CHECK(slow < faster);
+}
+
+TEST_CASE("Unsteady aerodynamics is off where AeroDyn turns it off") {
+    Airfoil no_ua = kirchhoff();
+    no_ua.tables.front().unsteady.reset();
+    CHECK_FALSE(UnsteadyAirfoil(no_ua).supports(UnsteadyModel::minnema_pierce));
+    Airfoil flat = kirchhoff();
+    auto& t = flat.tables.front();
+    std::fill(t.cl.begin(), t.cl.end(), 0.3);
+    std::fill(t.cd.begin(), t.cd.end(), 0.02);
+    CHECK_FALSE(UnsteadyAirfoil(flat).supports(UnsteadyModel::oye));
+    Airfoil no_slope = kirchhoff();
+    no_slope.tables.front().unsteady->C_lalpha = 0;
+    CHECK_FALSE(UnsteadyAirfoil(no_slope).supports(UnsteadyModel::oye));
+    CHECK(UnsteadyAirfoil(no_slope).supports(UnsteadyModel::minnema_pierce));
 }

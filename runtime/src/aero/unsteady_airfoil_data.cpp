@@ -146,11 +146,16 @@ AttachedRange attached_range_defaults(const PolarTable& t, double cd0) {
 }
 
 UnsteadyAirfoil::UnsteadyAirfoil(const Airfoil& airfoil) {
-    if (airfoil.tables.empty() || !airfoil.tables.front().unsteady)
+    if (airfoil.tables.empty() || airfoil.tables.front().alpha.empty())
         throw std::invalid_argument("unsteady aerodynamics: airfoil '" + airfoil.name +
-                                    "' has no unsteady-aerodynamics data in its first table");
+                                    "' has no table");
     const PolarTable& t = airfoil.tables.front();
-    k_ = *t.unsteady;
+    has_unsteady_ = t.unsteady.has_value();
+    if (has_unsteady_) k_ = *t.unsteady;
+    bool all_same = true;
+    for (std::size_t i = 1; i < t.alpha.size(); ++i)
+        all_same = all_same && t.cl[i] == t.cl[0] && t.cd[i] == t.cd[0];
+    constant_ = t.alpha.size() < 3 || all_same;
     alpha_ = t.alpha;
     cl_ = t.cl;
     cd_ = t.cd;
@@ -200,6 +205,18 @@ UnsteadyAirfoil::UnsteadyAirfoil(const Airfoil& airfoil) {
         f_st_[i] = same(cl_inv, cl_fs_[i])
                        ? 1.0
                        : std::clamp((cl_[i] - cl_fs_[i]) / (cl_inv - cl_fs_[i]), 0.0, 1.0);
+    }
+}
+
+bool UnsteadyAirfoil::supports(UnsteadyModel model) const {
+    if (!has_unsteady_ || constant_) return false;
+    switch (model) {
+    case UnsteadyModel::minnema_pierce:
+        return k_.C_nalpha != 0;
+    case UnsteadyModel::oye:
+        return k_.C_lalpha != 0 && *std::max_element(f_st_.begin(), f_st_.end()) > 0;
+    default:
+        return false;
     }
 }
 

@@ -27,7 +27,9 @@ double deficiency(double dt, double T, double y_prev, double x, double x_prev) {
     return y_prev * half * half + (x - x_prev) * half;
 }
 
-double square(double x) { return x * x; }
+double square(double x) {
+    return x * x;
+}
 
 bool same_single(double a, double b) {
     return static_cast<float>(a) == static_cast<float>(b);

@@ -49,10 +49,16 @@ struct AttachedRange {
 };
 AttachedRange attached_range_defaults(const PolarTable& table, double cd0);
 
-// One airfoil prepared for the unsteady models (the first table; it must carry UA data).
+// One airfoil prepared for the unsteady models (its first table, AFTabMod 1).
 class UnsteadyAirfoil {
 public:
     explicit UnsteadyAirfoil(const Airfoil& airfoil);
+
+    // Whether UA can run on this airfoil (UA_TurnOff_param): the table carries UA
+    // constants, its coefficients vary, and C_nalpha (UA_Mod 3) or C_lalpha and the
+    // separation function (UA_Mod 6) are not zero. AeroDyn computes such elements
+    // with the steady polar.
+    bool supports(UnsteadyModel model) const;
 
     struct Point {
         double cl = 0, cd = 0, cm = 0;
@@ -67,7 +73,7 @@ public:
 private:
     std::vector<double> alpha_, cl_, cd_, cm_, f_st_, cl_fs_;
     UnsteadyConstants k_;
-    bool has_cm_ = false;
+    bool has_cm_ = false, has_unsteady_ = false, constant_ = false;
     double cutout_blend_ = 0;
 };
 
