@@ -51,14 +51,28 @@ TEST_CASE("UA_Mod 3 (Minnema/Pierce) follows OpenFAST's driver on the pitching D
     s.model = UnsteadyModel::minnema_pierce;
     MinnemaPierceState x;
     Series out;
+    std::vector<double> fpp, cn_v, tau_v, alpha_filt;
     for (int n = 1; n <= d.steps(); ++n) {
-        const UnsteadyOutput y = step(af, s, d.chord, d.dt(), driver_input(d, n), x);
+        const UnsteadyInput u = driver_input(d, n);
+        const UnsteadyOutput y0 = evaluate(af, s, d.chord, d.dt(), u, x);
+        const UnsteadyOutput y = step(af, s, d.chord, d.dt(), u, x);
+        CHECK(y0.cl == y.cl); // evaluate gives step's outputs without the update
         out.cl.push_back(y.cl);
         out.cd.push_back(y.cd);
         out.cm.push_back(y.cm);
+        fpp.push_back(y.fprimeprime);
+        cn_v.push_back(y.cn_v);
+        tau_v.push_back(y.tau_V);
+        alpha_filt.push_back(y.alpha_filt / deg);
     }
     REQUIRE(ref["Cl_[-]"].size() == out.cl.size());
     check(out, ref);
+    // The internal states behind them: separation point, vortex lift and its time, and
+    // the filtered angle of attack.
+    CHECK(error_of_range(fpp, ref["fprimeprime_[-]"]) < 1e-4);
+    CHECK(error_of_range(cn_v, ref["Cn_v_[-]"]) < 1e-4);
+    CHECK(error_of_range(tau_v, ref["Tau_V_[-]"]) < 1e-4);
+    CHECK(error_of_range(alpha_filt, ref["ALPHA_filt_[deg]"]) < 1e-4);
 }
 
 TEST_CASE("UA_Mod 6 (Oye) follows OpenFAST's driver on the pitching DU25") {
