@@ -40,14 +40,24 @@ struct Separation {
     double cn_fs = 0;
 };
 
+// The steady polar at an angle, with its sine and cosine: the two separation functions
+// of alpha_f read the same point.
+struct PolarAt {
+    double alpha, sin, cos;
+    UnsteadyAirfoil::Point p;
+};
+
+PolarAt polar_at(const UnsteadyAirfoil& af, double alpha) {
+    return {alpha, std::sin(alpha), std::cos(alpha), af.at(alpha)};
+}
+
 // f solving Cn = C_nalpha_circ (alpha - alpha0) ((1 + sqrt f)/2)^2 at the polar's Cn, and
 // the fully separated Cn (Get_f_from_Lookup).
-Separation f_from_lookup(const UnsteadyAirfoil& af, double alpha_in, double alpha0,
+Separation f_from_lookup(const UnsteadyAirfoil& af, const PolarAt& at, double alpha0,
                          double cna_circ) {
-    const double alpha = near(alpha0, alpha_in);
+    const double alpha = near(alpha0, at.alpha);
     const double da = alpha - alpha0;
-    const auto p = af.at(alpha);
-    const double cn = p.cl * std::cos(alpha) + (p.cd - af.constants().Cd0) * std::sin(alpha);
+    const double cn = at.p.cl * at.cos + (at.p.cd - af.constants().Cd0) * at.sin;
     double root = 0;
     if (!same_single(cna_circ, 0) && !same_single(alpha, alpha0) && !same_single(cn, 0))
         root = std::max(0.0, cn / (cna_circ * da));
@@ -58,17 +68,16 @@ Separation f_from_lookup(const UnsteadyAirfoil& af, double alpha_in, double alph
 }
 
 // The chordwise separation function (Get_f_c_from_Lookup), limited to (1 + 0.2)^2.
-double f_c_from_lookup(const UnsteadyAirfoil& af, double alpha_in, double alpha0_in,
+double f_c_from_lookup(const UnsteadyAirfoil& af, const PolarAt& at, double alpha0_in,
                        double cna_circ, double eta_e) {
     constexpr double limit = (1 + gonzalez_factor) * (1 + gonzalez_factor);
-    double alpha = wrap_pi(alpha_in);
+    double alpha = wrap_pi(at.alpha);
     const double alpha0 = wrap_pi(alpha0_in);
     if (same_single(alpha, 0) || same_single(alpha, alpha0) || same_single(cna_circ, 0))
         return limit;
-    const auto p = af.at(alpha);
-    const double cc = p.cl * std::sin(alpha) - (p.cd - af.constants().Cd0) * std::cos(alpha);
+    const double cc = at.p.cl * at.sin - (at.p.cd - af.constants().Cd0) * at.cos;
     alpha = near(alpha0, alpha);
-    const double denom = eta_e * cna_circ * (alpha - alpha0) * std::tan(alpha);
+    const double denom = eta_e * cna_circ * (alpha - alpha0) * (at.sin / at.cos);
     return std::min(limit, square(cc / denom + gonzalez_factor));
 }
 
@@ -147,15 +156,17 @@ Chain kelvin_chain(const UnsteadyAirfoil& af, const UnsteadySettings& s, double 
 
     if (!s.f_lookup)
         throw std::invalid_argument("unsteady aerodynamics: UA_Mod 3 needs FLookup True");
-    kc.fprime = f_from_lookup(af, kc.alpha_f, k.alpha0, kc.cna_circ).f;
+    const PolarAt at_alpha_f = polar_at(af, kc.alpha_f);
+    kc.fprime = f_from_lookup(af, at_alpha_f, k.alpha0, kc.cna_circ).f;
     kc.Df = x.first_pass ? 0.0 : deficiency(kc.ds, kc.T_f, x.Df, kc.fprime, x.fprime);
     kc.fprimeprime = kc.fprime - kc.Df;
-    kc.fprime_c = f_c_from_lookup(af, kc.alpha_f, k.alpha0, kc.cna_circ, eta_e);
+    kc.fprime_c = f_c_from_lookup(af, at_alpha_f, k.alpha0, kc.cna_circ, eta_e);
     // T_fc = T_f0 / sigma1c, and sigma1c stays 1 outside UA_Mod 2.
     kc.Df_c = x.first_pass ? 0.0 : deficiency(kc.ds, k.T_f0, x.Df_c, kc.fprime_c, x.fprime_c);
     kc.fprimeprime_c = kc.fprime_c - kc.Df_c;
 
-    const double cn_fs_sep = f_from_lookup(af, kc.alpha_e + k.alpha0, k.alpha0, kc.cna_circ).cn_fs;
+    const double cn_fs_sep =
+        f_from_lookup(af, polar_at(af, kc.alpha_e + k.alpha0), k.alpha0, kc.cna_circ).cn_fs;
     kc.cn_fs =
         kc.cn_aq_nc + kc.cna_circ * kc.alpha_e * kc.fprimeprime + cn_fs_sep * (1 - kc.fprimeprime);
     kc.Dalphaf =
