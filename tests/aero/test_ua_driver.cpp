@@ -41,14 +41,19 @@ const Airfoil& du25() {
     return af;
 }
 
+UnsteadySettings settings(UnsteadyModel model) {
+    UnsteadySettings s; // the driver's: SpdSound 335 m/s, FLookup, d_34_to_ac 0.5, ABM4
+    s.model = model;
+    return s;
+}
+
 } // namespace
 
 TEST_CASE("UA_Mod 3 (Minnema/Pierce) follows OpenFAST's driver on the pitching DU25") {
     const Driver d;
     const Csv ref = read_csv(data("reference/aero/ua3_DU25_m8_a8_f1.csv"));
     const UnsteadyAirfoil af(du25());
-    UnsteadySettings s;
-    s.model = UnsteadyModel::minnema_pierce;
+    const UnsteadySettings s = settings(UnsteadyModel::minnema_pierce);
     MinnemaPierceState x;
     Series out;
     std::vector<double> fpp, cn_v, tau_v, alpha_filt;
@@ -79,8 +84,7 @@ TEST_CASE("UA_Mod 6 (Oye) follows OpenFAST's driver on the pitching DU25") {
     const Driver d;
     const Csv ref = read_csv(data("reference/aero/ua6_DU25_m8_a8_f1.csv"));
     const UnsteadyAirfoil af(du25());
-    UnsteadySettings s;
-    s.model = UnsteadyModel::oye;
+    const UnsteadySettings s = settings(UnsteadyModel::oye);
     OyeState x;
     x.n = 1; // the driver counts its steps from 1
     Series out;

@@ -85,15 +85,21 @@ AttachedRange attached_range_defaults(const PolarTable& t, double cd0) {
 
     AttachedRange r;
     int i_high = i_high_limit < i_cd_min ? n - 1 : i_high_limit;
-    double max_slope = slope_cd_min;
-    int i_high2 = i_cd_min;
-    for (int row = i_cd_min; row <= i_high; ++row) {
-        i_high2 = row;
-        if (S(row) > max_slope)
-            max_slope = S(row);
-        else if (S(row) < 0.9 * max_slope)
-            break;
-    }
+    // Walking the segments from `from` to `to`, the last one before the smoothed slope
+    // falls below 90 % of its largest value so far (from the slope at Cd's minimum on).
+    auto last_attached = [&](int from, int to, int dir) {
+        double max_slope = slope_cd_min;
+        int last = from;
+        for (int row = from; dir > 0 ? row <= to : row >= to; row += dir) {
+            last = row;
+            if (S(row) > max_slope)
+                max_slope = S(row);
+            else if (S(row) < 0.9 * max_slope)
+                break;
+        }
+        return last;
+    };
+    int i_high2 = last_attached(i_cd_min, i_high, +1);
     if (i_high2 == i_cd_min) {
         r.alpha_upper = alpha_cd_min;
     } else {
@@ -101,18 +107,10 @@ AttachedRange attached_range_defaults(const PolarTable& t, double cd0) {
         r.alpha_upper = M(i_high2);
     }
 
-    max_slope = slope_cd_min;
     int i_low = i_low_limit;
     i_high = std::max(1, std::min({i_high2, i_cd_min, n - 1}));
     if (i_high < i_low) i_low = 1;
-    int i_low2 = i_high;
-    for (int row = i_high; row >= i_low; --row) {
-        i_low2 = row;
-        if (S(row) > max_slope)
-            max_slope = S(row);
-        else if (S(row) < 0.9 * max_slope)
-            break;
-    }
+    int i_low2 = last_attached(i_high, i_low, -1);
     if (i_low2 == i_cd_min) {
         r.alpha_lower = alpha_cd_min;
     } else {
