@@ -160,3 +160,13 @@ TEST_CASE("Unsteady aerodynamics is off where AeroDyn turns it off") {
     CHECK_FALSE(UnsteadyAirfoil(no_slope).supports(UnsteadyModel::oye));
     CHECK(UnsteadyAirfoil(no_slope).supports(UnsteadyModel::minnema_pierce));
 }
+
+TEST_CASE("Unsteady settings from the AeroDyn primary file's switches") {
+    RotorInput rotor;
+    rotor.unsteady = UnsteadyModel::oye;
+    rotor.speed_of_sound = 340;
+    const UnsteadySettings s = unsteady_settings(rotor);
+    CHECK(s.model == UnsteadyModel::oye);
+    CHECK(s.speed_of_sound == 340);
+    CHECK(s.integrator == UnsteadyIntegrator::abm4);
+}

@@ -27,6 +27,15 @@ struct UnsteadySettings {
     UnsteadyIntegrator integrator = UnsteadyIntegrator::abm4; // UA_Mod 6
 };
 
+// The settings an AeroDyn primary file gives (UA_Mod, FLookup, SpdSound).
+inline UnsteadySettings unsteady_settings(const RotorInput& rotor) {
+    UnsteadySettings s;
+    s.model = rotor.unsteady;
+    s.f_lookup = rotor.f_lookup;
+    s.speed_of_sound = rotor.speed_of_sound;
+    return s;
+}
+
 // UA's inputs of one element at one time (UA_InputType): AeroDyn's BEM gives alpha,
 // U = |relative velocity| and v_ac = U (sin alpha, cos alpha); the pitch rate omega is
 // the element's rotation rate about the span axis. Angles in rad.
