@@ -36,9 +36,8 @@ void check(const Series& s, const Csv& ref) {
     CHECK(ecm < 0.02);
 }
 
-const Airfoil& du25() {
-    static const Airfoil af = read_airfoil(data("reference/operating/deck/Airfoils/DU25_A17.dat"));
-    return af;
+Airfoil du25(UnsteadyModel model) {
+    return read_airfoil(data("reference/operating/deck/Airfoils/DU25_A17.dat"), model);
 }
 
 UnsteadySettings settings(UnsteadyModel model) {
@@ -52,7 +51,7 @@ UnsteadySettings settings(UnsteadyModel model) {
 TEST_CASE("UA_Mod 3 (Minnema/Pierce) follows OpenFAST's driver on the pitching DU25") {
     const Driver d;
     const Csv ref = read_csv(data("reference/aero/ua3_DU25_m8_a8_f1.csv"));
-    const UnsteadyAirfoil af(du25());
+    const UnsteadyAirfoil af(du25(UnsteadyModel::minnema_pierce));
     const UnsteadySettings s = settings(UnsteadyModel::minnema_pierce);
     MinnemaPierceState x;
     Series out;
@@ -83,7 +82,7 @@ TEST_CASE("UA_Mod 3 (Minnema/Pierce) follows OpenFAST's driver on the pitching D
 TEST_CASE("UA_Mod 6 (Oye) follows OpenFAST's driver on the pitching DU25") {
     const Driver d;
     const Csv ref = read_csv(data("reference/aero/ua6_DU25_m8_a8_f1.csv"));
-    const UnsteadyAirfoil af(du25());
+    const UnsteadyAirfoil af(du25(UnsteadyModel::oye));
     const UnsteadySettings s = settings(UnsteadyModel::oye);
     OyeState x;
     x.n = 1; // the driver counts its steps from 1
@@ -108,7 +107,8 @@ TEST_CASE("AirfoilInfo's defaults of the attached range give the driver's Cl slo
     // Oye's fully attached Cl, (alpha_E - alpha0) C_lalpha, in the driver's output
     // gives the slope it used.
     const Csv ref = read_csv(data("reference/aero/ua6_DU25_m8_a8_f1.csv"));
-    const auto& k = *du25().tables.front().unsteady;
+    const Airfoil af = du25(UnsteadyModel::oye);
+    const auto& k = *af.tables.front().unsteady;
     const double alpha_e = ref["alphaE_[deg]"].at(0) * deg;
     CHECK(k.C_lalpha ==
           doctest::Approx(ref["cl_fa_[-]"].at(0) / (alpha_e - k.alpha0)).epsilon(1e-4));

@@ -1,6 +1,9 @@
 #pragma once
 // OpenFAST's unsteady-aerodynamics driver runs (data/reference/aero/ua*_DU25_*): the
 // driver's prescribed motion (SimMod 1), its output channels, and the DU25 airfoil.
+#include "aerodyn/airfoil_file.hpp"
+#include "analysis/aerodyn_airfoil.hpp"
+#include "diag/read_text.hpp"
 #include "yamsc/aero/airfoil.hpp"
 #include "yamsc/aero/unsteady_airfoil.hpp"
 
@@ -69,70 +72,16 @@ inline Csv read_csv(const std::string& path) {
     return csv;
 }
 
-// The first table of an AeroDyn airfoil file with its UA constants; the constants the
-// file leaves out (alphaUpper, alphaLower, C_lalpha) as AirfoilInfo computes them.
-inline yamsc::aero::Airfoil read_airfoil(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error("cannot open " + path);
-    std::map<std::string, std::string> values;
-    std::vector<std::vector<double>> rows;
-    std::string line;
-    int table_rows = -1;
-    while (std::getline(in, line)) {
-        if (line.empty() || line.find_first_not_of(" \t") == std::string::npos) continue;
-        if (line[line.find_first_not_of(" \t")] == '!') continue;
-        std::stringstream ss(line);
-        if (table_rows > 0) {
-            std::vector<double> row;
-            for (double v; ss >> v;) row.push_back(v);
-            rows.push_back(row);
-            if (static_cast<int>(rows.size()) == table_rows) break;
-            continue;
-        }
-        std::string value, key;
-        ss >> value >> key;
-        values[key] = value;
-        if (key == "NumAlf") table_rows = std::stoi(value);
-    }
-    yamsc::aero::Airfoil af;
-    af.name = path;
-    yamsc::aero::PolarTable t;
-    for (const auto& r : rows) {
-        t.alpha.push_back(r.at(0) * deg);
-        t.cl.push_back(r.at(1));
-        t.cd.push_back(r.at(2));
-        if (r.size() > 3) t.cm.push_back(r[3]);
-    }
-    auto num = [&](const char* key) { return std::stod(values.at(key)); };
-    yamsc::aero::UnsteadyConstants k;
-    k.alpha0 = num("alpha0") * deg;
-    k.alpha1 = num("alpha1") * deg;
-    k.alpha2 = num("alpha2") * deg;
-    k.eta_e = num("eta_e");
-    k.C_nalpha = num("C_nalpha");
-    k.T_f0 = num("T_f0");
-    k.T_V0 = num("T_V0");
-    k.T_p = num("T_p");
-    k.T_VL = num("T_VL");
-    k.b1 = num("b1");
-    k.b2 = num("b2");
-    k.b5 = num("b5");
-    k.A1 = num("A1");
-    k.A2 = num("A2");
-    k.A5 = num("A5");
-    k.Cn1 = num("Cn1");
-    k.Cn2 = num("Cn2");
-    k.St_sh = num("St_sh");
-    k.Cd0 = num("Cd0");
-    k.Cm0 = num("Cm0");
-    k.x_cp_bar = num("x_cp_bar");
-    const auto range = yamsc::aero::attached_range_defaults(t, k.Cd0);
-    k.alphaUpper = range.alpha_upper;
-    k.alphaLower = range.alpha_lower;
-    k.C_lalpha = range.cl_alpha;
-    t.unsteady = k;
-    af.tables.push_back(t);
-    return af;
+// An AeroDyn airfoil file as the unsteady models read it (AeroDyn's reader, the
+// constants the file leaves out computed as AirfoilInfo does for `model`).
+inline yamsc::aero::Airfoil read_airfoil(const std::string& path,
+                                         yamsc::aero::UnsteadyModel model) {
+    yamsc::diag::Diagnostics diags;
+    const auto text = yamsc::diag::read_text_file(path, diags);
+    if (!text) throw std::runtime_error("cannot open " + path);
+    const auto file = yamsc::aerodyn::read_airfoil_file(text, {}, diags);
+    if (!file) throw std::runtime_error("cannot read " + path);
+    return yamsc::analysis::to_airfoil(*file, model);
 }
 
 inline std::string data(const std::string& relative) {

@@ -47,17 +47,6 @@ struct UnsteadyInput {
     double v_ac_c = 0; // ... along the chord, toward the trailing edge [m/s]
 };
 
-// AirfoilInfo's defaults of the attached-flow range and slopes of one table (used when
-// the file omits alphaUpper, alphaLower, C_nalpha, C_lalpha or alpha0): the range where
-// the smoothed slope of Cn stays within 90 % of its largest value around Cd's minimum,
-// and least-squares slopes of Cn and Cl inside it. cd0 enters Cn = Cl cos + (Cd-Cd0) sin.
-struct AttachedRange {
-    double alpha_upper = 0, alpha_lower = 0; // [rad]
-    double cn_alpha = 0, cl_alpha = 0;       // [1/rad]
-    double alpha0 = 0;                       // zero of the Cn fit [rad]
-};
-AttachedRange attached_range_defaults(const PolarTable& table, double cd0);
-
 // One airfoil prepared for the unsteady models (its first table, AFTabMod 1).
 class UnsteadyAirfoil {
 public:
