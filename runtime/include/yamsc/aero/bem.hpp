@@ -1,0 +1,88 @@
+#pragma once
+// Steady blade-element momentum theory of one blade element, as AeroDyn v15
+// (OpenFAST v4/v5, BEM_Mod 1 "legacy") solves it: Ning's single residual in the
+// inflow angle phi, bracketed in AeroDyn's three regions and solved with Brent's
+// method (it cannot fail to converge; without a root, phi is the wake-free
+// angle and the inductions are zero), Prandtl's tip and hub losses, Buhl's
+// high-induction correction, the propeller-brake region, the optional drag
+// terms, and the Pitt/Peters skewed-wake redistribution of the axial induction.
+// The element frame is AeroDyn's "without sweep, pitch and twist" frame: x along
+// the (coned) rotor axis downwind, y opposite to the blade's motion (from the
+// leading to the trailing edge), z along the blade.
+#include "yamsc/aero/airfoil.hpp"
+#include "yamsc/aero/rotor_input.hpp"
+
+namespace yamsc::aero {
+
+// The switches of the solve, taken once from RotorInput.
+struct BemOptions {
+    bool tip_loss = true, hub_loss = true, tangential_induction = true;
+    bool axial_drag = false, tangential_drag = false;
+    double tolerance = 5e-10; // IndToler; AeroDyn's double-precision default
+    int max_iterations = 100;
+    bool skew_redistribution = true;                           // Skew_Mod 1 with SkewRedistr_Mod 1
+    double skew_factor = 15.0 * 3.14159265358979323846 / 32.0; // SkewRedistrFactor
+    bool use_pitching_moment = true;                           // UseBlCm
+};
+BemOptions bem_options(const RotorInput& input);
+
+struct ElementInput {
+    double vx = 0, vy = 0; // relative inflow, axial (downwind) and tangential [m/s]
+    double r = 0;          // distance from the rotor axis (solidity) [m]
+    // Distances along the blade from the apex (AeroDyn's zLocal, zHub, zTip) for
+    // Prandtl's losses [m].
+    double z = 0, z_hub = 0, z_tip = 0;
+    int blades = 3;
+    double theta = 0; // twist + pitch [rad]
+    double chord = 0; // [m]
+    const Airfoil* airfoil = nullptr;
+    // Skewed wake: chi0 the angle between the rotor axis and the disk-averaged
+    // relative wind, psi the blade's azimuth from the skew plane (AeroDyn's psi_s),
+    // tip_ratio r / R_tip [rad, rad, -].
+    double chi0 = 0, psi = 0, tip_ratio = 0;
+    // Blend of the inductions at low tip-speed ratio (AeroDyn's BEM_weight:
+    // 1 above TSR 2, 0 below TSR 1); see induction_weight().
+    double weight = 1;
+    // AeroDyn's constraint state: the previous phi orders the search regions and,
+    // when it was a valid root, is tried first.
+    double phi_guess = 0;
+    bool guess_valid = false;
+};
+
+struct ElementSolution {
+    double phi = 0;   // inflow angle after the skew correction [rad]
+    double alpha = 0; // phi - theta [rad], not wrapped
+    double a = 0, ap = 0, F = 1;
+    double cl = 0, cd = 0, cm = 0;
+    double cx = 0, cy = 0; // normal and tangential force coefficients (with drag)
+    double vrel = 0;       // [m/s]
+    double fx = 0, fy = 0; // force per length along x and along the motion (BkNjFx, BkNjFy) [N/m]
+    double mz = 0;         // pitching moment per length about z [N m/m]
+    double phi_bem = 0;    // root of the residual, before the corrections (the state)
+    bool valid = false;    // a BEM root was found (else the wake-free phi)
+};
+
+// The residual of Ning's equation at phi and the inductions it implies (before
+// the limits and corrections); exposed for tests.
+struct Residual {
+    double f = 0, a = 0, ap = 0, k = 0, kp = 0, F = 1;
+    bool valid = true; // k in the range of the region (AeroDyn's IsValidSolution)
+};
+Residual bem_residual(const ElementInput& in, const BemOptions& opt, double phi);
+
+// Solves the element: the residual's root, the inductions, the coefficients and
+// the loads per length for air density rho. Allocates nothing.
+ElementSolution solve_element(const ElementInput& in, const BemOptions& opt, double rho);
+
+// Prandtl's loss factor of AeroDyn (BEM_Mod 1): tip and hub constants
+// B (z_tip - z) / (2 z) and B (z - z_hub) / (2 z_hub) over |sin phi|.
+double prandtl_loss(const ElementInput& in, const BemOptions& opt, double phi);
+
+// Axial induction from k = sigma' Cx / (4 F sin^2 phi) in the momentum region:
+// k / (1 + k) up to a = 0.4, Buhl's empirical curve above.
+double axial_induction_momentum(double k, double F);
+
+// AeroDyn's blend of the inductions at low tip-speed ratio.
+double induction_weight(double tsr);
+
+} // namespace yamsc::aero

@@ -1,0 +1,346 @@
+#include "yamsc/aero/bem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "yamsc/aero/polar.hpp"
+
+namespace yamsc::aero {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+// AeroDyn's margin around the singular inflow angles 0 and +-pi/2:
+// 10 sqrt(machine epsilon) in double precision.
+const double phi_margin = 10.0 * std::sqrt(std::numeric_limits<double>::epsilon());
+constexpr double induction_limit = 1e6;
+
+// NWTC's EqualRealNos: equal to 50 machine epsilons, relative above 1.
+bool nearly_equal(double x, double y) {
+    const double scale = std::max(std::abs(x + y), 1.0);
+    return std::abs(x - y) <= scale * 50.0 * std::numeric_limits<double>::epsilon();
+}
+
+// Below 1 mm/s a velocity counts as zero for the BEM (AeroDyn's VelocityIsZero).
+bool velocity_is_zero(double v) {
+    return std::abs(v) < 0.001;
+}
+
+double loss_constant_tip(const ElementInput& in) {
+    return in.blades * (in.z_tip - in.z) / (2.0 * in.z);
+}
+double loss_constant_hub(const ElementInput& in) {
+    return in.blades * (in.z - in.z_hub) / (2.0 * in.z_hub);
+}
+
+// At the tip (or the hub) with its loss on, AeroDyn fixes a = 1, a' = 0.
+bool fixed_inductions(const ElementInput& in, const BemOptions& opt) {
+    return (opt.tip_loss && nearly_equal(loss_constant_tip(in), 0.0)) ||
+           (opt.hub_loss && nearly_equal(loss_constant_hub(in), 0.0));
+}
+
+double prandtl(double constant, double abs_sin_phi) {
+    return 2.0 / pi * std::acos(std::min(1.0, std::exp(-constant / abs_sin_phi)));
+}
+
+double sign_of(double magnitude, double s) {
+    return s >= 0 ? magnitude : -magnitude;
+}
+
+// The wake-free inflow angle, or phi with the given inductions.
+double inflow_angle(double vx, double vy, double a, double ap) {
+    const double x = vx * (1.0 - a);
+    const double y = vy * (1.0 + ap);
+    if (nearly_equal(x, 0.0) && nearly_equal(y, 0.0)) return 0.0;
+    return std::atan2(x, y);
+}
+
+// Brent's method on [lo, hi] with f(lo), f(hi) of opposite signs: stops when the
+// bracket is below 1e-6 rad or |f| below the tolerance (AeroDyn's sub_brent).
+struct BrentResult {
+    double x;
+    bool valid;
+};
+BrentResult brent(const ElementInput& in, const BemOptions& opt, double lo, double hi, double flo,
+                  double fhi, bool hi_valid) {
+    constexpr double x_tolerance = 1e-6;
+    const double eps = std::numeric_limits<double>::epsilon();
+    double a = lo, b = hi, fa = flo, fb = fhi;
+    double c = a, fc = fa, d = b - a, e = d;
+    bool valid = hi_valid;
+    for (int iter = 1; iter <= opt.max_iterations; ++iter) {
+        if (iter == 1 || (fb > 0 && fc > 0) || (fb <= 0 && fc <= 0)) {
+            c = a;
+            fc = fa;
+            e = b - a;
+            d = e;
+        }
+        if (std::abs(fc) < std::abs(fb)) {
+            a = b;
+            b = c;
+            c = a;
+            fa = fb;
+            fb = fc;
+            fc = fa;
+        }
+        const double tol = 2.0 * eps * std::abs(b) + x_tolerance;
+        const double m = 0.5 * (c - b);
+        if (std::abs(m) <= tol || fb == 0.0) return {b, valid};
+        if (std::abs(e) >= tol && std::abs(fa) > std::abs(fb)) {
+            double s = fb / fa, p, q;
+            if (a != c) {
+                const double qa = fa / fc, r = fb / fc;
+                p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
+                q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
+            } else {
+                p = 2.0 * m * s;
+                q = 1.0 - s;
+            }
+            if (p <= 0) {
+                p = -p;
+            } else {
+                q = -q;
+            }
+            s = e;
+            e = d;
+            if (2.0 * p >= 3.0 * m * q - std::abs(tol * q) || p >= std::abs(0.5 * s * q)) {
+                e = m;
+                d = m;
+            } else {
+                d = p / q;
+            }
+        } else {
+            e = m;
+            d = m;
+        }
+        a = b;
+        fa = fb;
+        b += std::abs(d) <= tol ? (m > 0 ? tol : -tol) : d;
+        const Residual rb = bem_residual(in, opt, b);
+        fb = rb.f;
+        valid = rb.valid;
+        if (std::abs(fb) < opt.tolerance) return {b, valid};
+    }
+    return {b, valid};
+}
+
+struct SolvedPhi {
+    double phi;
+    bool valid;
+};
+
+// AeroDyn's BEMT_UnCoupledSolve: the guess if it is still a root, else the
+// three regions in AeroDyn's order, the first bracketed valid root.
+SolvedPhi solve_phi(const ElementInput& in, const BemOptions& opt) {
+    if (velocity_is_zero(in.vx)) return {0.0, true};
+    if (velocity_is_zero(in.vy)) return {in.vx > 0 ? pi / 2 : -pi / 2, true};
+
+    const double guess = in.phi_guess;
+    bool guess_is_valid = false;
+    double f_guess = 0;
+    if (in.guess_valid && !nearly_equal(guess, 0.0) && !nearly_equal(std::abs(guess), pi / 2)) {
+        const Residual r = bem_residual(in, opt, guess);
+        if (std::abs(r.f) < opt.tolerance && r.valid) return {guess, true};
+        guess_is_valid = r.valid;
+        f_guess = r.f;
+    }
+
+    // Regions: the momentum region first, then the two others in the order the
+    // previous phi suggests.
+    double lower[3], upper[3];
+    const bool near_zero = guess < pi / 4 && guess > -pi / 4;
+    const double s = in.vx > 0 ? 1.0 : -1.0;
+    lower[0] = s * phi_margin;
+    upper[0] = s * (pi / 2 - phi_margin);
+    const int second = near_zero ? 1 : 2, third = near_zero ? 2 : 1;
+    lower[second] = -s * pi / 4;
+    upper[second] = -s * phi_margin;
+    lower[third] = s * (pi / 2 + phi_margin);
+    upper[third] = s * (pi - phi_margin);
+
+    for (int i = 0; i < 3; ++i) {
+        double lo = lower[i], hi = upper[i];
+        const Residual r1 = bem_residual(in, opt, lo);
+        const Residual r2 = bem_residual(in, opt, hi);
+        double f1 = r1.f, f2 = r2.f;
+        bool hi_valid = r2.valid;
+        if (nearly_equal(f1, 0.0) && nearly_equal(f2, 0.0) && r1.valid && r2.valid)
+            return {lo > 0 ? lo : hi, true}; // every phi is a root: the one nearer 0
+        if (std::abs(f1) < opt.tolerance) {
+            if (std::abs(f2) < std::abs(f1) && r2.valid) return {hi, true};
+            if (r1.valid) return {lo, true};
+        } else if (std::abs(f2) < opt.tolerance && r2.valid) {
+            return {hi, true};
+        }
+        if ((f1 >= 0) == (f2 >= 0)) continue; // no sign change in this region
+        if (guess_is_valid && ((lo < guess && guess < hi) || (hi < guess && guess < lo))) {
+            // Narrow the bracket with the previous solution.
+            if ((f1 >= 0) != (f_guess >= 0)) {
+                hi = guess;
+                f2 = f_guess;
+                hi_valid = true;
+            } else {
+                lo = guess;
+                f1 = f_guess;
+            }
+        }
+        const BrentResult root = brent(in, opt, lo, hi, f1, f2, hi_valid);
+        if (root.valid) return {root.x, true};
+        guess_is_valid = false; // AeroDyn carries Brent's last validity on
+    }
+    return {inflow_angle(in.vx, in.vy, 0.0, 0.0), false};
+}
+
+} // namespace
+
+BemOptions bem_options(const RotorInput& input) {
+    BemOptions o;
+    o.tip_loss = input.tip_loss;
+    o.hub_loss = input.hub_loss;
+    o.tangential_induction = input.tangential_induction;
+    o.axial_drag = input.axial_drag;
+    o.tangential_drag = input.tangential_drag;
+    if (input.induction_tolerance > 0) o.tolerance = input.induction_tolerance;
+    o.max_iterations = input.max_iterations;
+    o.skew_redistribution = input.skew == SkewModel::active &&
+                            input.skew_redistribution == SkewRedistribution::pitt_peters;
+    o.skew_factor = input.skew_redistribution_factor;
+    o.use_pitching_moment = input.use_pitching_moment;
+    return o;
+}
+
+double prandtl_loss(const ElementInput& in, const BemOptions& opt, double phi) {
+    const double s = std::abs(std::sin(phi));
+    if (nearly_equal(s, 0.0)) return 1.0;
+    double F = 1.0;
+    if (opt.tip_loss) F *= prandtl(loss_constant_tip(in), s);
+    if (opt.hub_loss) F *= prandtl(loss_constant_hub(in), s);
+    return F;
+}
+
+double axial_induction_momentum(double k, double F) {
+    if (k <= 2.0 / 3.0)
+        return nearly_equal(k, -1.0) ? -sign_of(induction_limit, 1.0 + k) : k / (1.0 + k);
+    // Buhl: CT = 8/9 + (4F - 40/9) a + (50/9 - 4F) a^2 equated to 4 F k (1 - a)^2.
+    const double t = 2.0 * F * k;
+    const double g1 = t - (10.0 / 9.0 - F);
+    const double g2 = t - (4.0 / 3.0 - F) * F;
+    const double g3 = t - (25.0 / 9.0 - 2.0 * F);
+    if (std::abs(g3) < 1e-6) return 1.0 - 0.5 / std::sqrt(g2);
+    return (g1 - std::sqrt(std::abs(g2))) / g3;
+}
+
+double induction_weight(double tsr) {
+    constexpr double lower = 1.0, upper = 2.0;
+    const double x = std::abs(tsr);
+    if (x >= upper) return 1.0;
+    if (x <= lower) return 0.0;
+    return 0.5 * (1.0 - std::cos(pi * (x - lower) / (upper - lower)));
+}
+
+Residual bem_residual(const ElementInput& in, const BemOptions& opt, double phi) {
+    Residual r;
+    if (fixed_inductions(in, opt)) {
+        r.a = 1.0;
+        return r;
+    }
+    if (nearly_equal(phi, 0.0) || velocity_is_zero(in.vx) || velocity_is_zero(in.vy)) return r;
+
+    const Coefficients c = lookup(*in.airfoil, phi - in.theta);
+    const double sphi = std::sin(phi), cphi = std::cos(phi);
+    const double cx = c.cl * cphi + (opt.axial_drag ? c.cd * sphi : 0.0);
+    const double cy = c.cl * sphi - (opt.tangential_drag ? c.cd * cphi : 0.0);
+    const double F = std::max(prandtl_loss(in, opt, phi), 1e-4);
+    r.F = F;
+
+    const double sigma = in.blades * in.chord / (2.0 * pi * in.r);
+    const double k = sigma * cx / (4.0 * F * sphi * sphi);
+    r.k = k;
+    const bool momentum = (phi > 0 && in.vx >= 0) || (phi < 0 && in.vx < 0);
+    double a;
+    if (momentum) {
+        a = axial_induction_momentum(k, F);
+        if (k < -1.0) r.valid = false; // a > 1 is no momentum solution
+    } else {                           // propeller brake
+        if (nearly_equal(k, 1.0)) {
+            r.valid = false;
+            a = induction_limit;
+        } else {
+            a = k / (k - 1.0);
+        }
+        if (k <= 1.0) r.valid = false; // a < 1 is no brake solution
+    }
+
+    double ap = 0, kp = 0;
+    if (opt.tangential_induction) {
+        if (nearly_equal(cphi, 0.0)) {
+            ap = -1.0;
+            kp = sign_of(induction_limit, cy * sphi) * (in.vx >= 0 ? 1.0 : -1.0);
+        } else {
+            kp = sigma * cy / (4.0 * F * sphi * cphi);
+            if (in.vx < 0) kp = -kp;
+            ap = nearly_equal(kp, 1.0) ? sign_of(induction_limit, 1.0 - kp) : kp / (1.0 - kp);
+        }
+    }
+
+    const double lambda = in.vy / in.vx;
+    if (momentum) {
+        r.f = nearly_equal(a, 1.0) ? -cphi / lambda * (1.0 - kp)
+                                   : sphi / (1.0 - a) - cphi / lambda * (1.0 - kp);
+    } else {
+        r.f = sphi * (1.0 - k) - cphi / lambda * (1.0 - kp);
+    }
+    r.a = a;
+    r.ap = ap;
+    r.kp = kp;
+    return r;
+}
+
+ElementSolution solve_element(const ElementInput& in, const BemOptions& opt, double rho) {
+    ElementSolution s;
+    const SolvedPhi solved = solve_phi(in, opt);
+    s.phi_bem = solved.phi;
+    s.valid = solved.valid;
+
+    double a = 0, ap = 0;
+    if (solved.valid) {
+        const Residual r = bem_residual(in, opt, solved.phi);
+        s.F = r.F;
+        if (r.valid) {
+            a = std::clamp(r.a, -1.0, 1.5);
+            ap = std::clamp(r.ap, -1.0, 1.0);
+        }
+    }
+    // Pitt/Peters: more induction on the downwind side of the skewed wake. At a
+    // fixed-induction node (tip or hub) AeroDyn leaves a = 1.
+    if (opt.skew_redistribution && !fixed_inductions(in, opt)) {
+        double chi = (0.6 * a + 1.0) * in.chi0;
+        chi = std::remainder(chi, 2.0 * pi);
+        const double t = std::abs(chi) > pi / 2 ? (chi >= 0 ? 1.0 : -1.0) : std::tan(chi / 2.0);
+        a *= 1.0 + opt.skew_factor * t * in.tip_ratio * std::sin(in.psi);
+    }
+    a *= in.weight;
+    ap *= in.weight;
+
+    s.a = a;
+    s.ap = ap;
+    s.phi = inflow_angle(in.vx, in.vy, a, ap);
+    s.alpha = s.phi - in.theta;
+    const double wx = in.vx * (1.0 - a), wy = in.vy * (1.0 + ap);
+    s.vrel = std::sqrt(wx * wx + wy * wy);
+    const Coefficients c = lookup(*in.airfoil, s.alpha);
+    s.cl = c.cl;
+    s.cd = c.cd;
+    s.cm = opt.use_pitching_moment ? c.cm : 0.0;
+    const double cphi = std::cos(s.phi), sphi = std::sin(s.phi);
+    s.cx = c.cl * cphi + c.cd * sphi;
+    s.cy = c.cl * sphi - c.cd * cphi;
+    const double qc = 0.5 * rho * s.vrel * s.vrel * in.chord;
+    s.fx = s.cx * qc;
+    s.fy = s.cy * qc;
+    s.mz = s.cm * qc * in.chord;
+    return s;
+}
+
+} // namespace yamsc::aero
