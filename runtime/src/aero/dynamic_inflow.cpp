@@ -12,18 +12,24 @@ namespace {
 
 constexpr double k0 = Dbemt::k_0ye;
 
+// tau2 / tau1 at r / R (ComputeTau2).
+double k_tau_at(double span_ratio) {
+    return 0.39 - 0.26 * span_ratio * span_ratio;
+}
+
 // Øye's filters for a quasi-steady input w0 + rate * s over a step of dt, exactly
-// (AeroDyn's DBEMT theory, eqs. 1.17-1.25): w1 is W_int, w is W.
-void exact_step(double w0, double rate, double tau1, double k_tau, double dt, double& w1,
-                double& w) {
-    const double tau2 = k_tau * tau1;
-    const double a = w0 + rate * k0 * tau1;
-    const double c1 = w1 - a + rate * tau1;
-    const double e1 = std::exp(-dt / tau1);
-    w1 = c1 * e1 + a + rate * (dt - tau1);
-    const double c1_2 = c1 / (1 - k_tau);
-    const double c2 = w - c1_2 - a + rate * (tau1 + tau2);
-    w = c2 * std::exp(-dt / tau2) + a + rate * (dt - tau1 - tau2) + c1_2 * e1;
+// (AeroDyn's DBEMT theory, eqs. 1.17-1.25): w1 is W_int, w is W; e1 = exp(-dt/tau1),
+// e2 = exp(-dt/tau2).
+struct StepConstants {
+    double tau1, tau2, k_tau, e1, e2;
+};
+void exact_step(double w0, double rate, const StepConstants& c, double dt, double& w1, double& w) {
+    const double a = w0 + rate * k0 * c.tau1;
+    const double c1 = w1 - a + rate * c.tau1;
+    w1 = c1 * c.e1 + a + rate * (dt - c.tau1);
+    const double c1_2 = c1 / (1 - c.k_tau);
+    const double c2 = w - c1_2 - a + rate * (c.tau1 + c.tau2);
+    w = c2 * c.e2 + a + rate * (dt - c.tau1 - c.tau2) + c1_2 * c.e1;
 }
 
 // DBEMT_CalcContStateDeriv for one element: x = [W ax, W tan, W_red ax, W_red tan].
@@ -65,6 +71,12 @@ Dbemt::Dbemt(DynamicInflow model, double tau1_const, double dt, int blades, int 
 
     span_ratio_.resize(n);
     for (std::size_t e = 0; e < n; ++e) span_ratio_[e] = rlocal_init[e] / r_tip;
+    if (constant_tau1) { // the filters' decay over a step, the same every step
+        exp_tau1_ = std::exp(-dt / tau1_const);
+        exp_tau2_.resize(n);
+        for (std::size_t e = 0; e < n; ++e)
+            exp_tau2_[e] = std::exp(-dt / (k_tau_at(span_ratio_[e]) * tau1_const));
+    }
 
     // BEMT_SetParameters: a triweight kernel of half-width 0.1 R around 0.7 R, normalized
     // on each blade, then divided by the number of blades.
@@ -110,9 +122,8 @@ double Dbemt::tau1(const DbemtDiskInput& disk) const {
 }
 
 double Dbemt::k_tau(const DbemtInput& u, std::size_t e) const {
-    const double s =
-        model_ == DynamicInflow::varying_tau1 ? u.rlocal[e] / u.disk.radius : span_ratio_[e];
-    return 0.39 - 0.26 * s * s;
+    return k_tau_at(model_ == DynamicInflow::varying_tau1 ? u.rlocal[e] / u.disk.radius
+                                                          : span_ratio_[e]);
 }
 
 void Dbemt::set_disk_input(DbemtInput& u, const double* a, double normal_speed) const {
@@ -144,15 +155,19 @@ void Dbemt::update(const DbemtInput& u_t, const DbemtInput& u_next, DbemtState& 
 }
 
 void Dbemt::update_discrete(const DbemtInput& u_t, const DbemtInput& u_next, DbemtState& x) const {
-    const double tau1 = x.tau1;
+    const bool varying = model_ == DynamicInflow::varying_tau1;
+    StepConstants c{};
+    c.tau1 = x.tau1;
+    c.e1 = varying ? std::exp(-dt_ / c.tau1) : exp_tau1_;
     for (std::size_t e = 0; e < elements(); ++e) {
-        const double k = k_tau(u_t, e);
+        c.k_tau = k_tau(u_t, e);
+        c.tau2 = c.k_tau * c.tau1;
+        c.e2 = varying ? std::exp(-dt_ / c.tau2) : exp_tau2_[e];
         const InducedVelocity q0 = u_t.quasi_steady[e], q1 = u_next.quasi_steady[e];
         DbemtElementState& s = x.element[e];
         // AeroDyn filters the tangential component as the axial one.
-        exact_step(q0.axial, (q1.axial - q0.axial) / dt_, tau1, k, dt_, s.vind_1.axial,
-                   s.vind.axial);
-        exact_step(q0.tangential, (q1.tangential - q0.tangential) / dt_, tau1, k, dt_,
+        exact_step(q0.axial, (q1.axial - q0.axial) / dt_, c, dt_, s.vind_1.axial, s.vind.axial);
+        exact_step(q0.tangential, (q1.tangential - q0.tangential) / dt_, c, dt_,
                    s.vind_1.tangential, s.vind.tangential);
     }
 }

@@ -112,6 +112,8 @@ private:
     int blades_, nodes_;
     std::vector<double> span_ratio_;  // rlocal_init / max rlocal_init
     std::vector<double> disk_weight_; // BEMT's IntegrateWeight
+    double exp_tau1_ = 0;             // DBEMT_Mod 1, 3: exp(-dt / tau1)
+    std::vector<double> exp_tau2_;    // DBEMT_Mod 1, 3: exp(-dt / tau2) per element
 };
 
 // Quasi-steady induced velocity from induction factors and the element's Vx, Vy
