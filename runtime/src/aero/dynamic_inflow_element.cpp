@@ -11,13 +11,13 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-// A tip or hub node with its loss on has a zero loss constant, so Prandtl's factor is
-// zero there (AeroDyn's FixedInductions); elsewhere it is well above this bound.
-bool fixed_inductions(const ElementInput& in, const BemOptions& opt) {
+} // namespace
+
+bool fixed_induction(const ElementInput& in, const BemOptions& opt) {
+    // A zero loss constant makes Prandtl's factor zero; at any other node it is well
+    // above this bound (0.1 or more at the NREL 5-MW's node next to the tip).
     return prandtl_loss(in, opt, pi / 2) < 1e-6;
 }
-
-} // namespace
 
 InductionFactors quasi_steady_induction(const ElementInput& in, const BemOptions& opt,
                                         const ElementSolution& solved) {
@@ -27,6 +27,13 @@ InductionFactors quasi_steady_induction(const ElementInput& in, const BemOptions
     return {std::clamp(r.a, -1.0, 1.5), std::clamp(r.ap, -1.0, 1.0)};
 }
 
+InductionFactors filtered_induction(const Dbemt& dbemt, const DbemtInput& u, const DbemtState& x,
+                                    std::size_t e, const ElementInput& in, const BemOptions& opt,
+                                    const ElementSolution& solved) {
+    if (fixed_induction(in, opt)) return quasi_steady_induction(in, opt, solved);
+    return induction_factors(dbemt.output(u, x, e), in.vx, in.vy);
+}
+
 ElementSolution element_with_induction(const ElementInput& in, const BemOptions& opt, double rho,
                                        InductionFactors f, const ElementSolution& solved) {
     ElementSolution s;
@@ -34,7 +41,7 @@ ElementSolution element_with_induction(const ElementInput& in, const BemOptions&
     s.valid = solved.valid;
     s.F = solved.F;
     double a = f.axial, ap = f.tangential;
-    if (opt.skew_redistribution && !fixed_inductions(in, opt)) {
+    if (opt.skew_redistribution && !fixed_induction(in, opt)) {
         // ApplySkewedWakeCorrection (Pitt/Peters) on the filtered induction.
         double chi = std::remainder((0.6 * a + 1.0) * in.chi0, 2.0 * pi);
         const double t = std::abs(chi) > pi / 2 ? (chi >= 0 ? 1.0 : -1.0) : std::tan(chi / 2.0);

@@ -9,10 +9,21 @@
 
 namespace yamsc::aero {
 
+// AeroDyn's FixedInductions: a tip or hub node whose loss is on (a zero loss
+// constant) keeps a = 1, a' = 0, with neither dynamic inflow nor skew correction
+// (calculate_Inductions_from_DBEMT_AllNodes, ApplySkewedWakeCorrection_AllNodes).
+bool fixed_induction(const ElementInput& in, const BemOptions& opt);
+
 // The quasi-steady a, a' of a solved element: the residual's inductions at its root,
 // limited, zero without a valid root (calculate_Inductions_from_BEMT).
 InductionFactors quasi_steady_induction(const ElementInput& in, const BemOptions& opt,
                                         const ElementSolution& solved);
+
+// The inductions element e of `solved` flies with: DBEMT's filtered induced velocity
+// as induction factors, but the quasi-steady ones at a fixed-induction node.
+InductionFactors filtered_induction(const Dbemt& dbemt, const DbemtInput& u, const DbemtState& x,
+                                    std::size_t e, const ElementInput& in, const BemOptions& opt,
+                                    const ElementSolution& solved);
 
 // The element with the inductions f (DBEMT's, or any) instead of the quasi-steady
 // ones: the skew redistribution (except at a fixed-induction tip or hub node), the
