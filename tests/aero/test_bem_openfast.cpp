@@ -1,0 +1,134 @@
+// The rigid NREL 5-MW rotor against OpenFAST v5 + AeroDyn (every ElastoDyn DOF
+// off, quasi-steady BEM; data/reference/aero/README.md): RtFldCp and RtFldCt
+// within 0.5 %, the nine output nodes' angle of attack within 0.1 deg, their Fx
+// and Fy within 1 % of the blade's largest, at azimuths over a revolution.
+#include "analysis/aerodyn_rotor.hpp"
+#include "yamsc/aero/rigid_rotor.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace yamsc;
+
+namespace {
+
+constexpr double deg = 3.14159265358979323846 / 180;
+const std::string data_dir = std::string(YAMSC_TEST_DATA_DIR) + "/reference/";
+
+using Row = std::map<std::string, double>;
+
+std::vector<Row> read_csv(const std::string& path) {
+    std::ifstream in(path);
+    REQUIRE(in);
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> names;
+    std::stringstream header(line);
+    for (std::string n; std::getline(header, n, ',');) names.push_back(n);
+    std::vector<Row> rows;
+    while (std::getline(in, line)) {
+        std::stringstream s(line);
+        Row row;
+        std::size_t i = 0;
+        for (std::string v; std::getline(s, v, ',') && i < names.size(); ++i)
+            row[names[i]] = std::stod(v);
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+const aero::RotorInput& nrel5mw() {
+    static const aero::RotorInput input = [] {
+        diag::Diagnostics diags;
+        const auto rotor = analysis::read_aerodyn_rotor(
+            data_dir + "operating/deck/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat", 3, diags);
+        REQUIRE_MESSAGE(rotor, diags.render());
+        return *rotor;
+    }();
+    return input;
+}
+
+// AeroDyn's output nodes (BlOutNd) of the reference runs.
+constexpr int output_nodes[9] = {3, 5, 7, 9, 11, 13, 15, 17, 18};
+
+struct Worst {
+    double cp = 0, ct = 0, alpha = 0, fx = 0, fy = 0; // %, %, deg, % of largest, % of largest
+};
+
+Worst compare(const std::string& name, double propagation_deg) {
+    const auto rows = read_csv(data_dir + "aero/" + name + ".csv");
+    REQUIRE(rows.size() > 80);
+    aero::RigidRotor rotor(nrel5mw(), aero::RotorGeometry{});
+    Worst w;
+    for (const std::size_t i : {0, 13, 26, 40, 53, 67, 80}) {
+        const Row& r = rows[i];
+        aero::OperatingPoint op;
+        op.azimuth = r.at("Azimuth_[deg]") * deg;
+        op.rotor_speed = r.at("RotSpeed_[rpm]") * 2 * 3.14159265358979323846 / 60;
+        op.pitch = r.at("BlPitch1_[deg]") * deg;
+        op.wind_speed = std::hypot(r.at("Wind1VelX_[m/s]"), r.at("Wind1VelY_[m/s]"));
+        op.wind_direction = propagation_deg * deg;
+        const aero::RotorResult& res = rotor.evaluate(op);
+        CAPTURE(name);
+        CAPTURE(r.at("Azimuth_[deg]"));
+        const double cp = 100 * std::abs(res.cp / r.at("RtFldCp_[-]") - 1);
+        const double ct = 100 * std::abs(res.ct / r.at("RtFldCt_[-]") - 1);
+        CHECK(cp < 0.5);
+        CHECK(ct < 0.5);
+        w.cp = std::max(w.cp, cp);
+        w.ct = std::max(w.ct, ct);
+        // Secondary channels with the same definitions: thrust, TSR, skew, disk wind.
+        CHECK(res.tsr == doctest::Approx(r.at("RtTSR_[-]")).epsilon(1e-5));
+        CHECK(res.skew / deg == doctest::Approx(r.at("RtSkew_[deg]")).epsilon(1e-5));
+        CHECK(res.v_avg_xh == doctest::Approx(r.at("RtVAvgxh_[m/s]")).epsilon(1e-5));
+        double fx_max = 0, fy_max = 0;
+        for (int k = 1; k <= 9; ++k) {
+            const std::string n = "B1N" + std::to_string(k);
+            fx_max = std::max(fx_max, std::abs(r.at(n + "Fx_[N/m]")));
+            fy_max = std::max(fy_max, std::abs(r.at(n + "Fy_[N/m]")));
+        }
+        for (int k = 1; k <= 9; ++k) {
+            const std::string n = "B1N" + std::to_string(k);
+            const aero::ElementSolution& s = res.blades[0][output_nodes[k - 1] - 1].bem;
+            CAPTURE(output_nodes[k - 1]);
+            const double alpha =
+                std::abs(std::remainder(s.alpha, 360 * deg) / deg - r.at(n + "Alpha_[deg]"));
+            const double fx = 100 * std::abs(s.fx - r.at(n + "Fx_[N/m]")) / fx_max;
+            const double fy = 100 * std::abs(s.fy - r.at(n + "Fy_[N/m]")) / fy_max;
+            CHECK(alpha < 0.1);
+            CHECK(fx < 1.0);
+            CHECK(fy < 1.0);
+            w.alpha = std::max(w.alpha, alpha);
+            w.fx = std::max(w.fx, fx);
+            w.fy = std::max(w.fy, fy);
+        }
+    }
+    MESSAGE(name << ": worst Cp " << w.cp << " %, Ct " << w.ct << " %, alpha " << w.alpha
+                 << " deg, Fx " << w.fx << " %, Fy " << w.fy << " % of the largest");
+    return w;
+}
+
+} // namespace
+
+TEST_CASE("bem: rigid rotor at 8 m/s (below rated) as OpenFAST + AeroDyn") {
+    compare("rigid_U8", 0);
+}
+
+TEST_CASE("bem: rigid rotor at 11.4 m/s (rated) as OpenFAST + AeroDyn") {
+    compare("rigid_U11.4", 0);
+}
+
+TEST_CASE("bem: rigid rotor at 16 m/s (pitched) as OpenFAST + AeroDyn") {
+    compare("rigid_U16", 0);
+}
+
+TEST_CASE("bem: rigid rotor in wind from 20 deg (skewed wake) as OpenFAST + AeroDyn") {
+    compare("rigid_U8_prop20", 20);
+}
