@@ -89,7 +89,11 @@ public:
     void initialize(const DbemtInput& u, DbemtState& x) const;
 
     // States at t + dt from states at t and inputs at t and t + dt (DBEMT_UpdateStates).
-    // Initializes x from u_t first if it is not.
+    // Initializes x from u_t first if it is not. AeroDyn forms u_t from the inflow at
+    // t + dt and the inductions at the inflow angle solved at the last step
+    // (AD_UpdateStates, BEMT_UpdateStates), so a change of the wind falls between two
+    // updates: DBEMT_Mod 1 and 2 (holding W_int) then miss the k jump of W_int that
+    // DBEMT_Mod 3 (holding W_red) makes.
     void update(const DbemtInput& u_t, const DbemtInput& u_next, DbemtState& x) const;
 
     // The filtered induced velocity of element e (DBEMT_CalcOutput).
