@@ -132,6 +132,28 @@ TEST_CASE("dbemt: the continuous form (DBEMT_Mod 3) equals the discrete one (DBE
     CHECK(coarse / fine == doctest::Approx(16).epsilon(0.25));
 }
 
+TEST_CASE("dbemt: a jump of the input between two updates") {
+    // AeroDyn's inputs make a change of the wind such a jump. DBEMT_Mod 3 holds
+    // W_red = W_int - k W_qs, so W_int jumps by k and W follows the step response;
+    // DBEMT_Mod 1 holds W_int, which starts from where it was (the first test's curve).
+    const double tau1 = 4, dt = 0.01;
+    const Dbemt d3(DynamicInflow::continuous, tau1, dt, 1, 2, two_nodes());
+    DbemtInput u0 = d3.make_input(), u1 = d3.make_input();
+    DbemtState x = d3.make_state();
+    set_all(u0, 0, 0);
+    d3.initialize(u0, x);
+    set_all(u1, 1, 1);
+    double worst = 0;
+    for (int n = 1; n <= 1000; ++n) {
+        d3.update(u1, u1, x);
+        for (std::size_t e = 0; e < 2; ++e) {
+            const double exact = step_response(n * dt, tau1, k_tau_of(e == 0 ? 0.35 : 1.0));
+            worst = std::max(worst, std::abs(x.element[e].vind.axial - exact));
+        }
+    }
+    CHECK(worst < 1e-8);
+}
+
 TEST_CASE("dbemt: derivative, packing and the steady state") {
     const Dbemt d(DynamicInflow::continuous, 2.0, 0.01, 2, 2, {10, 40, 10, 40});
     DbemtInput u = d.make_input();
