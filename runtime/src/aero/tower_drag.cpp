@@ -1,0 +1,28 @@
+// The tower's own drag (AeroDyn's ADTwr_CalcOutput, TwrAero).
+#include <cmath>
+
+#include "yamsc/aero/tower_influence.hpp"
+
+namespace yamsc::aero {
+
+Vec3 tower_drag_per_length(const TowerNode& node, double air_density, const Vec3& wind,
+                           const Vec3& velocity, const Vec3& axis) {
+    // AeroDyn takes the relative wind's components along the node's x and y
+    // axes; with an orthonormal orientation that is the part normal to z.
+    const Vec3 v{wind[0] - velocity[0], wind[1] - velocity[1], wind[2] - velocity[2]};
+    const double along = v[0] * axis[0] + v[1] * axis[1] + v[2] * axis[2];
+    const Vec3 normal{v[0] - along * axis[0], v[1] - along * axis[1], v[2] - along * axis[2]};
+    const double speed =
+        std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    const double q = 0.5 * node.cd * air_density * node.diameter * speed;
+    return {q * normal[0], q * normal[1], q * normal[2]};
+}
+
+void tower_drag(const std::vector<TowerNode>& table, const TowerState& state, double air_density,
+                Vec3* force) {
+    for (std::size_t j = 0; j < table.size(); ++j)
+        force[j] = tower_drag_per_length(table[j], air_density, state.wind[j], state.velocity[j],
+                                         state.axis[j]);
+}
+
+} // namespace yamsc::aero
