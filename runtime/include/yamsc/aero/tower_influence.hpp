@@ -107,4 +107,15 @@ Vec3 tower_drag_per_length(const TowerNode& node, double air_density, const Vec3
 void tower_drag(const std::vector<TowerNode>& table, const TowerState& state, double air_density,
                 Vec3* force);
 
+// Loads per length at the nodes of a line mesh (AeroDyn's TowerLoad: linear
+// along each element) as point loads at the same nodes, as OpenFAST's mesh
+// mapping lumps them (Lump_Line2_to_Point) before passing them to the
+// structure: per element of reference length L (from reference, undeflected)
+// and deflected span dp (from position), F1 += L/6 (2 f1 + f2),
+// F2 += L/6 (f1 + 2 f2), and the couple L/12 dp x (f1 + f2) at the first node,
+// its opposite at the second. Total force and moment about any point are
+// those of the distributed load. force and moment are overwritten.
+void lump_line_loads(const Vec3* reference, const Vec3* position, const Vec3* per_length,
+                     std::size_t count, Vec3* force, Vec3* moment);
+
 } // namespace yamsc::aero
