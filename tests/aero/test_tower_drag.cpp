@@ -1,6 +1,7 @@
 // The tower's own drag (AeroDyn's TwrAero) against its closed form and
 // against what OpenFAST's tower base sees when it is switched on (twr_U8 vs
 // flex_U8, the same flexible turbine with and without tower aerodynamics).
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -47,6 +48,33 @@ TEST_CASE("tower drag per length is 1/2 rho Cd D |V_n| V_n of the wind relative 
     tower_drag(table, state, rho, forces);
     CHECK(forces[0][0] == doctest::Approx(0.5 * rho * 6 * 64));
     CHECK(forces[1][0] == doctest::Approx(0.5 * rho * 0.8 * 5 * 100));
+}
+
+TEST_CASE("tower drag: its velocity Jacobian against central differences") {
+    const TowerNode node{40, 5, 0.9, 0.1};
+    const double lean = 0.15;
+    const Vec3 axis{0, std::sin(lean), std::cos(lean)};
+    const Vec3 wind{8, 2, 0.5}, velocity{0.3, -0.4, 0.1};
+    const std::array<double, 9> jacobian =
+        tower_drag_velocity_jacobian(node, 1.225, wind, velocity, axis);
+    const double h = 1e-6;
+    for (int j = 0; j < 3; ++j) {
+        Vec3 plus = velocity, minus = velocity;
+        plus[j] += h;
+        minus[j] -= h;
+        const Vec3 fp = tower_drag_per_length(node, 1.225, wind, plus, axis);
+        const Vec3 fm = tower_drag_per_length(node, 1.225, wind, minus, axis);
+        for (int i = 0; i < 3; ++i)
+            CHECK(jacobian[3 * i + j] == doctest::Approx((fp[i] - fm[i]) / (2 * h)).epsilon(1e-7));
+    }
+    // 1-D: d/dv of 1/2 rho Cd D (U - v)^2 is -rho Cd D U: the tower's aerodynamic damping
+    const std::array<double, 9> fore_aft =
+        tower_drag_velocity_jacobian(node, 1.225, {8, 0, 0}, {0, 0, 0}, {0, 0, 1});
+    CHECK(fore_aft[0] == doctest::Approx(-1.225 * 0.9 * 5 * 8));
+    CHECK(fore_aft[4] == doctest::Approx(-0.5 * 1.225 * 0.9 * 5 * 8)); // side-side: half
+    CHECK(fore_aft[8] == 0);
+    CHECK(tower_drag_velocity_jacobian(node, 1.225, {0, 0, 3}, {}, {0, 0, 1}) ==
+          std::array<double, 9>{});
 }
 
 TEST_CASE("tower drag: its moment about the base is what OpenFAST's tower base gains (twr_U8)") {

@@ -18,6 +18,24 @@ Vec3 tower_drag_per_length(const TowerNode& node, double air_density, const Vec3
     return {q * normal[0], q * normal[1], q * normal[2]};
 }
 
+std::array<double, 9> tower_drag_velocity_jacobian(const TowerNode& node, double air_density,
+                                                   const Vec3& wind, const Vec3& velocity,
+                                                   const Vec3& axis) {
+    const Vec3 v{wind[0] - velocity[0], wind[1] - velocity[1], wind[2] - velocity[2]};
+    const double along = v[0] * axis[0] + v[1] * axis[1] + v[2] * axis[2];
+    const Vec3 n{v[0] - along * axis[0], v[1] - along * axis[1], v[2] - along * axis[2]};
+    const double speed = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    std::array<double, 9> jacobian{};
+    if (speed == 0) return jacobian;
+    const double k = 0.5 * node.cd * air_density * node.diameter;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const double projector = (i == j ? 1.0 : 0.0) - axis[i] * axis[j];
+            jacobian[3 * i + j] = -k * (speed * projector + n[i] * n[j] / speed);
+        }
+    return jacobian;
+}
+
 void tower_drag(const std::vector<TowerNode>& table, const TowerState& state, double air_density,
                 Vec3* force) {
     for (std::size_t j = 0; j < table.size(); ++j)

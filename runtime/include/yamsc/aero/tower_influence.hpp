@@ -103,6 +103,14 @@ double disturb_winds(const TowerInfluenceModel& model, const std::vector<TowerNo
 Vec3 tower_drag_per_length(const TowerNode& node, double air_density, const Vec3& wind,
                            const Vec3& velocity, const Vec3& axis);
 
+// Its derivative with respect to the node's velocity (the tower's aerodynamic
+// damping), row-major d f_i / d velocity_j [N s/m^2]:
+// -1/2 rho Cd D (|V_n| P + V_n V_n^T / |V_n|), P = I - axis axis^T; zero where
+// V_n vanishes. With respect to the wind it is the opposite.
+std::array<double, 9> tower_drag_velocity_jacobian(const TowerNode& node, double air_density,
+                                                   const Vec3& wind, const Vec3& velocity,
+                                                   const Vec3& axis);
+
 // The drag at every node of the state, into force[0 .. table.size()).
 void tower_drag(const std::vector<TowerNode>& table, const TowerState& state, double air_density,
                 Vec3* force);
