@@ -27,13 +27,13 @@ const std::vector<double>& column(const Table& run, const std::string& name) {
 
 } // namespace
 
-Statistics statistics(const Table& run, const std::string& name, double from) {
+Statistics statistics(const Table& run, const std::string& name, double from, double to) {
     const std::vector<double>& time = run.data.front();
     const std::vector<double>& value = column(run, name);
     double sum = 0, squares = 0;
     int count = 0;
     for (std::size_t i = 0; i < time.size(); ++i)
-        if (time[i] >= from) {
+        if (time[i] >= from && time[i] < to) {
             sum += value[i];
             ++count;
         }
@@ -41,7 +41,7 @@ Statistics statistics(const Table& run, const std::string& name, double from) {
     Statistics s;
     s.mean = sum / count;
     for (std::size_t i = 0; i < time.size(); ++i)
-        if (time[i] >= from) squares += (value[i] - s.mean) * (value[i] - s.mean);
+        if (time[i] >= from && time[i] < to) squares += (value[i] - s.mean) * (value[i] - s.mean);
     s.deviation = std::sqrt(squares / count);
     return s;
 }

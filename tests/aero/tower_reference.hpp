@@ -17,8 +17,10 @@ std::vector<yamsc::aero::TowerNode> five_mw_tower_table();
 struct Statistics {
     double mean = 0, deviation = 0; // population standard deviation
 };
-// A column's statistics over the rows with time >= from. Throws on a missing column.
-Statistics statistics(const yamsc::table::Table& run, const std::string& column, double from);
+// A column's statistics over the rows with from <= time < to. Throws on a
+// missing column or an empty window.
+Statistics statistics(const yamsc::table::Table& run, const std::string& column, double from,
+                      double to = 1e300);
 
 // A column's mean per azimuth bin of blade 1 (Azimuth_[deg]; bins of 360/bins
 // degrees, bin 0 from 0), rows with time >= from.
