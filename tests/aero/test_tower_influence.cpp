@@ -38,14 +38,14 @@ const TowerInfluenceModel bak{TowerPotential::bak, TowerShadow::none};
 const TowerInfluenceModel powles{TowerPotential::none, TowerShadow::powles};
 const TowerInfluenceModel eames{TowerPotential::none, TowerShadow::eames};
 
-// NREL 5-MW's tower table (AeroDyn file of the operating deck).
+// NREL 5-MW's tower table with a Cd and TI that change along it, so that
+// their interpolation shows.
 std::vector<TowerNode> five_mw_tower() {
-    const double z[] = {0,      8.5261, 17.053, 25.579, 34.105, 42.633,
-                        51.158, 59.685, 68.211, 76.738, 85.268, 87.6};
-    const double d[] = {6,     5.787, 5.574, 5.361, 5.148, 4.935,
-                        4.722, 4.509, 4.296, 4.083, 3.87,  3.87};
-    std::vector<TowerNode> t;
-    for (int j = 0; j < 12; ++j) t.push_back({z[j], d[j], 1.0 + 0.01 * j, 0.1 + 0.02 * j});
+    std::vector<TowerNode> t = tower_reference::five_mw_tower_table();
+    for (std::size_t j = 0; j < t.size(); ++j) {
+        t[j].cd = 1.0 + 0.01 * j;
+        t[j].ti = 0.1 + 0.02 * j;
+    }
     return t;
 }
 
