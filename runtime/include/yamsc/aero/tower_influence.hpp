@@ -32,7 +32,8 @@ struct TowerState {
 
 // The undeflected state: node j at base + TwrElev(j) along z, axis z, still
 // air and no motion. AeroDyn places its tower mesh so (x and y of the
-// tower's base, z the elevation itself, not added to the base's z).
+// tower's base, z the elevation itself, not added to the base's z). The one
+// function here that allocates: call it once to size the state.
 TowerState undeflected_tower(const std::vector<TowerNode>& table, const Vec3& base);
 
 // Where a point lies with respect to the tower (AeroDyn's getLocalTowerProps).
