@@ -323,23 +323,29 @@ void run_16dof_in_wind(const std::string& name, const std::string& controller,
     const Table t = yamsc::analysis::read_table(o.output);
     const Table openfast =
         yamsc::analysis::read_table(reference_dir + "/operating/openfast_steady_8mps.csv");
-    const auto& yaw = column(t, "NacYaw");
-    const auto& rotor_torque = column(t, "aero_torque_out");
-    double worst_yaw = 0, worst_torque = 0;
-    for (double y : yaw) worst_yaw = std::max(worst_yaw, std::fabs(y));
-    for (double q : rotor_torque) worst_torque = std::max(worst_torque, std::fabs(q));
-    // The table's torque about the shaft, tilted 5 deg, has a yaw component
-    // Q sin(5 deg); the spring answers it with Q sin(5 deg) / YawSpr. A free yaw
-    // turns under it by Q sin(5 deg) t^2 / (2 J), tens of degrees in 25 s.
-    const double static_yaw = worst_torque * std::sin(5 * pi / 180) / yaw_spring * 180 / pi;
-    MESSAGE(name << ": largest |NacYaw| " << worst_yaw << " deg, the spring's static " << static_yaw
-                 << " deg");
-    CHECK(worst_yaw < 3 * static_yaw);
+    // The table's torque Q about the shaft, tilted 5 deg (ShftTilt), has the yaw
+    // component -Q sin(5 deg) on the nacelle (the generator's torque pair is internal);
+    // the spring answers it with the static yaw -Q sin(5 deg) / YawSpr. On it rings
+    // the yaw mode (2.7 Hz, 2 % damped), excited by the blades' vibrations (the table
+    // gives them no aerodynamic damping). A free yaw turns under the same moment by
+    // Q sin(5 deg) t^2 / (2 J), J ~ 2.5e7 kg m^2: about 100 deg in 25 s.
+    const double mean_yaw = mean_after(t, "NacYaw", 10);
+    const double static_yaw =
+        -mean_after(t, "aero_torque_out", 10) * std::sin(5 * pi / 180) / yaw_spring * 180 / pi;
+    double worst_yaw = 0;
+    for (double y : column(t, "NacYaw")) worst_yaw = std::max(worst_yaw, std::fabs(y));
+    MESSAGE(name << ": NacYaw, mean of 10-25 s " << mean_yaw << " deg (the spring's static "
+                 << static_yaw << " deg), largest " << worst_yaw << " deg");
+    CHECK(mean_yaw == doctest::Approx(static_yaw).epsilon(0.05));
+    CHECK(worst_yaw < 10 * std::fabs(static_yaw));
     // Tower-top fore-aft displacement near OpenFAST's mean, 0.187 m.
     const double fa = mean_after(t, "TTDspFA", 15);
     const double fa_openfast = mean_after(openfast, "TTDspFA_[m]", 15);
     MESSAGE(name << ": TTDspFA, mean of 15-25 s: " << fa << " m, OpenFAST " << fa_openfast << " m");
-    CHECK(fa == doctest::Approx(fa_openfast).epsilon(0.10));
+    // The table's thrust at 8 m/s is 4-5 % above AeroDyn's BEM (dynamic inflow and
+    // unsteady aerodynamics), and the tower bends 6-7 % more (docs/validation.md);
+    // the shipped six-DOF model's 150 s runs hold 8 % too (operating_test.cpp).
+    CHECK(fa == doctest::Approx(fa_openfast).epsilon(0.08));
     // The generator channels show the controller's torque and the deck's efficiency.
     const auto& torque = column(t, "GenTq");
     const auto& power = column(t, "GenPwr");
