@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <regex>
 
 using namespace validation;
@@ -47,18 +48,27 @@ double param(const std::string& text, const std::string& name) {
     return std::stod(m[1].str());
 }
 
-Table run_in_wind(const std::string& model, const std::string& name) {
+/// `yamsc sim MODEL --aero TABLE --wind 8 -o WORK/NAME.csv` with the options `more`
+/// sets, and the table it writes.
+Table sim_8mps(const std::string& model, const std::string& name,
+               const std::function<void(yamsc::driver::SimOptions&)>& more) {
     yamsc::driver::SimOptions o;
     o.model = model;
     o.aero = table;
     o.wind = "8";
-    o.tmax = 5;
-    o.dt = 0.02;
-    o.set = yamsc::driver::parse_assignments("VS_Rgn2K=2.31055", "--set");
     o.output = work_dir + "/" + name + ".csv";
+    more(o);
     std::ostringstream out, err;
     REQUIRE_MESSAGE(yamsc::analysis::sim(o, out, err) == 0, err.str());
     return yamsc::analysis::read_table(o.output);
+}
+
+Table run_in_wind(const std::string& model, const std::string& name) {
+    return sim_8mps(model, name, [](yamsc::driver::SimOptions& o) {
+        o.tmax = 5;
+        o.dt = 0.02;
+        o.set = yamsc::driver::parse_assignments("VS_Rgn2K=2.31055", "--set");
+    });
 }
 
 } // namespace
@@ -274,18 +284,13 @@ TEST_CASE("ServoDyn's channels with --channels openfast: GenTq, GenPwr, BlPitch1
     // The operating DOFs at a given torque and pitch: GenTq is the torque in kN m,
     // GenPwr GenTq GenSpeed GenEff (94.4 %, the deck's), BlPitch1 = BldPitch1.
     convert_full_deck(work_dir + "/full_deck_channels.mbd", "");
-    yamsc::driver::SimOptions o;
-    o.model = work_dir + "/full_deck_channels.mbd";
-    o.aero = table;
-    o.wind = "8";
-    o.tmax = 2;
-    o.dt = 0.02;
-    o.u = yamsc::driver::parse_assignments("gen_torque=21000,pitch=1.5deg", "--u");
-    o.channels = yamsc::driver::Channels::openfast;
-    o.output = work_dir + "/full_deck_channels.csv";
-    std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::analysis::sim(o, out, err) == 0, err.str());
-    const Table t = yamsc::analysis::read_table(o.output);
+    const Table t =
+        sim_8mps(work_dir + "/full_deck_channels.mbd", "full_deck_channels", [](auto& o) {
+            o.tmax = 2;
+            o.dt = 0.02;
+            o.u = yamsc::driver::parse_assignments("gen_torque=21000,pitch=1.5deg", "--u");
+            o.channels = yamsc::driver::Channels::openfast;
+        });
     const auto& torque = column(t, "GenTq_[kN-m]");
     const auto& power = column(t, "GenPwr_[kW]");
     const auto& speed = column(t, "GenSpeed_[rpm]");
@@ -308,19 +313,13 @@ namespace {
 void run_16dof_in_wind(const std::string& name, const std::string& controller,
                        const std::string& controller_input) {
     convert_full_deck(work_dir + "/full_deck_16dof.mbd", "", nullptr, {});
-    yamsc::driver::SimOptions o;
-    o.model = work_dir + "/full_deck_16dof.mbd";
-    o.aero = table;
-    o.wind = "8";
-    o.tmax = 25;
-    o.dt = 0.00625; // the deck's DT; RK4 as the header's command
-    o.dt_out = 0.025;
-    o.controller = controller;
-    o.controller_input = controller_input;
-    o.output = work_dir + "/" + name + ".csv";
-    std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::analysis::sim(o, out, err) == 0, err.str());
-    const Table t = yamsc::analysis::read_table(o.output);
+    const Table t = sim_8mps(work_dir + "/full_deck_16dof.mbd", name, [&](auto& o) {
+        o.tmax = 25;
+        o.dt = 0.00625; // the deck's DT; RK4 as the header's command
+        o.dt_out = 0.025;
+        o.controller = controller;
+        o.controller_input = controller_input;
+    });
     const Table openfast =
         yamsc::analysis::read_table(reference_dir + "/operating/openfast_steady_8mps.csv");
     // The table's torque Q about the shaft, tilted 5 deg (ShftTilt), has the yaw
