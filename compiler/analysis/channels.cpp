@@ -38,8 +38,8 @@ Table table_of(const runtime::SimulationResult& result) {
 }
 
 const std::vector<OpenFastChannel>& openfast_channels() {
-    // ElastoDyn's DOF, displacement and load channels (OpenFAST's OutListParameters),
-    // in its units.
+    // ElastoDyn's DOF, displacement and load channels and ServoDyn's generator channels
+    // (OpenFAST's OutListParameters), in their units.
     static const std::vector<OpenFastChannel> channels{
         {"PtfmSurge", "m", false},
         {"PtfmSway", "m", false},
@@ -96,6 +96,9 @@ const std::vector<OpenFastChannel>& openfast_channels() {
         {"BldPitch1", "deg", false},
         {"BldPitch2", "deg", false},
         {"BldPitch3", "deg", false},
+        {"BlPitch1", "deg", false}, // ElastoDyn's aliases of BldPitch1 ..
+        {"BlPitch2", "deg", false},
+        {"BlPitch3", "deg", false},
         {"TTDspFA", "m", false},
         {"TTDspSS", "m", false},
         {"OoPDefl1", "m", false},
@@ -122,7 +125,11 @@ const std::vector<OpenFastChannel>& openfast_channels() {
         {"LSSGagMya", "kN-m", false},
         {"LSSGagMza", "kN-m", false},
         {"RotThrust", "kN", false},
-        {"RotTorq", "kN-m", false}};
+        {"RotTorq", "kN-m", false},
+        // ServoDyn's generator channels: GenTq the generator torque, GenPwr the
+        // electrical power (GenTq GenSpeed GenEff while generating).
+        {"GenTq", "kN-m", false},
+        {"GenPwr", "kW", false}};
     return channels;
 }
 

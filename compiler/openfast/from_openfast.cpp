@@ -109,6 +109,8 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
         in.blade_tips = *tips;
     if (tower_rigid) in.tower = rigid_tower(*deck, diags);
     in.operation = read_operation(*deck, o.cp_table, diags);
+    if (auto yaw = in.dofs.find("YawDOF"); yaw != in.dofs.end() && yaw->second)
+        in.yaw_spring = read_yaw_spring(*deck, diags);
     in.output_file = fs::path(o.output).filename().string();
     if (in.operation) {
         // The run's files as the model's folder sees them; none may be the output.

@@ -256,6 +256,17 @@ private:
             param("Omega0", rpm(v("RotSpeed")), "fixed rotor speed (RotSpeed, GenDOF off) [rad/s]");
         }
         if (in_.operation) operation_parameters(*in_.operation);
+        if (in_.yaw_spring) yaw_spring_parameters(*in_.yaw_spring);
+    }
+
+    void yaw_spring_parameters(const YawSpring& y) {
+        out_ << "\n# ---- ServoDyn's nacelle-yaw spring and damper (names as in its file)\n";
+        param("YawSpr", y.stiffness,
+              "nacelle-yaw spring constant [N m/rad] (" + y.stiffness_from + ")");
+        param("YawDamp", y.damping,
+              "nacelle-yaw damping constant [N m s/rad] (" + y.damping_from + ")");
+        param_deg("YawNeut", y.neutral_deg,
+                  "neutral yaw position: the spring's moment is 0 there (" + y.neutral_from + ")");
     }
 
     static std::string rpm(double value) {
@@ -482,6 +493,11 @@ private:
             out_ << "torque on nacelle in nacelle = (0, 0, yaw_moment)\n";
             out_ << "torque on tower in nacelle = (0, 0, -yaw_moment)\n";
         }
+        if (on("YawDOF") && in_.yaw_spring)
+            out_ << "# ServoDyn's yaw moment on the yaw DOF, -YawSpr (nac_yaw - YawNeut) - YawDamp "
+                    "nac_yaw':\n# the spring and damper, and the spring's moment at zero yaw\n"
+                    "spring nac_yaw stiffness YawSpr damping YawDamp\n"
+                    "genforce nac_yaw = YawSpr * YawNeut\n";
         for (int k = 1; k <= d_.blades; ++k)
             for (const auto& mode : blade_modes)
                 if (on(mode[0]))
@@ -894,7 +910,10 @@ private:
         output("GenPwr",
                "GenEff / 100 * GBRatio * " + gen_speed + " * " + generator_torque() + " / 1000",
                "kW");
-        output("BldPitch1", "pitch * 180 / pi", "deg");
+        // Every blade turns with the collective pitch; BlPitchK is ElastoDyn's alias.
+        for (const char* name : {"BldPitch", "BlPitch"})
+            for (int k = 1; k <= d_.blades; ++k)
+                output(name + std::to_string(k), "pitch * 180 / pi", "deg");
         // DISCON records 53 and 54: the tower-top accelerations, the modes' tip
         // accelerations (each mode's shape is 1 at the top) from the solved q''.
         std::string fa, ss;

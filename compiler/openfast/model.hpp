@@ -26,6 +26,8 @@ struct OpenFastModelInput {
     std::vector<BladeTipShapes> blade_tips;
     /// A full deck's wind, rotor block and controller (paths as the model names them).
     std::optional<Operation> operation;
+    /// ServoDyn's yaw spring and damper on the yaw DOF (YawDOF on, ServoDyn on).
+    std::optional<YawSpring> yaw_spring;
     std::string output_file; ///< the model's file name, for the command in its header
 };
 

@@ -175,7 +175,6 @@ private:
         }
         const auto pc = sd->get_int("PCMode", diags_);
         const auto vs = sd->get_int("VSContrl", diags_);
-        const auto yc = sd->get_int("YCMode", diags_);
         if (vs && *vs == 1) {
             if (auto k = sd->get_double("VS_Rgn2K", diags_)) {
                 op_.region2_k = *k * (30 / M_PI) * (30 / M_PI); // N m/rpm^2 -> N m s^2
@@ -195,9 +194,6 @@ private:
             diags_.warning(Kind::NotSupported, sd->location("PCMode"),
                            "PCMode = " + std::to_string(*pc) +
                                ": only a Bladed-style controller (5) is converted");
-        if (yc && *yc != 0)
-            diags_.warning(Kind::NotSupported, sd->location("YCMode"),
-                           "YCMode = " + std::to_string(*yc) + ": yaw control is not converted");
         if ((pc && *pc == 5) || (vs && *vs == 5)) {
             const auto lib = sd->get_string("DLL_FileName", diags_);
             const auto input = sd->get_string("DLL_InFile", diags_);
@@ -217,6 +213,58 @@ private:
 };
 
 } // namespace
+
+std::optional<YawSpring> read_yaw_spring(const openfast::OpenFastDeck& deck,
+                                         diag::Diagnostics& diags) {
+    auto switch_of = [&](const std::string& name) {
+        auto it = deck.modules.find(name);
+        return it == deck.modules.end() ? std::string() : it->second.value;
+    };
+    if (!deck.fst || switch_of("CompServo") != "1") return std::nullopt;
+    // With AeroDyn on, read_operation reads the same file and reports why it cannot.
+    diag::Diagnostics quiet;
+    const bool reported = !switch_of("CompAero").empty() && switch_of("CompAero") != "0";
+    auto sd = module_file(deck, "ServoFile", reported ? quiet : diags);
+    if (!sd) return std::nullopt;
+    const auto mode = sd->get_int("YCMode", diags);
+    const auto neutral = sd->get_double("YawNeut", diags);
+    const auto stiffness = sd->get_double("YawSpr", diags);
+    const auto damping = sd->get_double("YawDamp", diags);
+    if (!mode || !neutral || !stiffness || !damping) return std::nullopt;
+    bool ok = true;
+    for (const auto& [key, value] : {std::pair{"YawSpr", *stiffness}, {"YawDamp", *damping}})
+        if (value < 0) {
+            diags.error(Kind::InvalidValue, sd->location(key),
+                        std::string(key) + " must not be negative");
+            ok = false;
+        }
+    if (*neutral <= -180 || *neutral > 180) {
+        diags.error(Kind::InvalidValue, sd->location("YawNeut"),
+                    "YawNeut must be in (-180, 180] degrees");
+        ok = false;
+    }
+    if (!ok) return std::nullopt;
+    if (*mode != 0)
+        diags.warning(Kind::NotSupported, sd->location("YCMode"),
+                      "YCMode = " + std::to_string(*mode) +
+                          ": the yaw commands are not converted; the yaw spring and damper "
+                          "(YawSpr, YawDamp) hold YawNeut, as ServoDyn's do before TYCOn and "
+                          "under a controller that commands no yaw rate");
+    if (const auto start = sd->get_double("TYawManS", diags);
+        start && (!deck.tmax || *start < *deck.tmax))
+        diags.warning(Kind::NotSupported, sd->location("TYawManS"),
+                      "TYawManS = " + mbd_number(*start) +
+                          ": the override yaw maneuver is not converted; the yaw spring and "
+                          "damper hold YawNeut");
+    YawSpring y;
+    y.stiffness = *stiffness;
+    y.damping = *damping;
+    y.neutral_deg = *neutral;
+    y.stiffness_from = file_line(*sd, "YawSpr");
+    y.damping_from = file_line(*sd, "YawDamp");
+    y.neutral_from = file_line(*sd, "YawNeut");
+    return y;
+}
 
 std::optional<Operation> read_operation(const openfast::OpenFastDeck& deck,
                                         const std::string& cp_table, diag::Diagnostics& diags) {

@@ -34,10 +34,28 @@ struct Operation {
     std::string table_from;
 };
 
+/// ServoDyn's nacelle-yaw spring and damper: ServoDyn's yaw moment on ElastoDyn's yaw
+/// DOF, YawMom = -YawSpr (yaw - YawPosCom) - YawDamp (yaw rate - YawRateCom), with
+/// YawPosCom = YawNeut and YawRateCom = 0 without active yaw control (YCMode 0, or
+/// before TYCOn). Each value keeps its "file:line".
+struct YawSpring {
+    double stiffness = 0;   ///< YawSpr [N m/rad]
+    double damping = 0;     ///< YawDamp [N m s/rad]
+    double neutral_deg = 0; ///< YawNeut [deg]
+    std::string stiffness_from, damping_from, neutral_from;
+};
+
+/// The yaw spring and damper of a deck whose `.fst` switches on ServoDyn (CompServo 1),
+/// else nullopt. Active yaw control (YCMode 3, 4, 5) and the override yaw maneuver
+/// (TYawManS within the run) are warnings at their line: the spring then holds YawNeut,
+/// as ServoDyn's does before TYCOn and under a DLL that commands no yaw rate.
+std::optional<YawSpring> read_yaw_spring(const openfast::OpenFastDeck& deck,
+                                         diag::Diagnostics& diags);
+
 /// The operation of a deck whose `.fst` switches on AeroDyn (CompAero != 0), else
 /// nullopt. `cp_table` is `from-openfast --cp-table` (empty: the controller input's
 /// PerfFileName, as ROSCO reads it). What cannot be converted (BEM, dynamic inflow,
-/// unsteady aerodynamics, other wind types, yaw control) is a warning at its line.
+/// unsteady aerodynamics, other wind types) is a warning at its line.
 std::optional<Operation> read_operation(const openfast::OpenFastDeck& deck,
                                         const std::string& cp_table, diag::Diagnostics& diags);
 
