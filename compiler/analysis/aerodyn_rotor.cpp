@@ -57,6 +57,7 @@ public:
         blades(r, num_blades);
         for (const aerodyn::TowerRow& t : p_.tower)
             r.tower.push_back({t.elevation, t.diameter, t.cd, t.ti});
+        r.output_nodes = p_.blade_out_nodes;
         if (diags_.error_count() != errors) return std::nullopt;
         return r;
     }

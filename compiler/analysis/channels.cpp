@@ -136,6 +136,8 @@ const std::vector<OpenFastChannel>& openfast_channels() {
 const OpenFastChannel* openfast_channel(std::string_view name) {
     for (const OpenFastChannel& c : openfast_channels())
         if (name == c.name) return &c;
+    for (const OpenFastChannel& c : aerodyn_channels())
+        if (name == c.name) return &c;
     return nullptr;
 }
 

@@ -45,6 +45,8 @@ struct OpenFastChannel {
 const OpenFastChannel* openfast_channel(std::string_view name);
 /// All channels yamsc knows, for documentation and messages.
 const std::vector<OpenFastChannel>& openfast_channels();
+/// Those of them AeroDyn writes (aerodyn_channels.cpp).
+const std::vector<OpenFastChannel>& aerodyn_channels();
 
 /// An output named as an OpenFAST channel: `NAME_[unit]`, its index among the
 /// outputs, and whether it is an angle OpenFAST writes in [0, 360).

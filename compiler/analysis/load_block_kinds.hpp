@@ -25,5 +25,7 @@ double parameter(const BlockContext& c, const std::string& name);
 
 std::shared_ptr<const runtime::LoadBlock> build_rotor_table(const model::LoadBlock& decl,
                                                             const BlockContext& c);
+std::shared_ptr<const runtime::LoadBlock> build_blade_elements(const model::LoadBlock& decl,
+                                                               const BlockContext& c);
 
 } // namespace yamsc::analysis

@@ -4,6 +4,7 @@
 #include "diag/errors.hpp"
 #include "model/load_kinds.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace yamsc::analysis {
@@ -26,6 +27,7 @@ struct Registration {
 
 const Registration registry[] = {
     {model::LoadKind::rotor_table, "--aero", &BlockOptions::aero, build_rotor_table},
+    {model::LoadKind::blade_elements, "--aero", &BlockOptions::aero, build_blade_elements},
 };
 
 bool supplied(const Registration& r, const BlockOptions& b) {
@@ -102,25 +104,37 @@ runtime::LoadBlocks load_blocks(const Loaded& l, const runtime::ModelView& v,
     const model::Model* m = model_of(l);
     const BlockContext context{l, v, params, b};
     runtime::LoadBlocks blocks;
+    // Several kinds may take their data from one option (--aero: a Cp/Ct/Cq
+    // table or an AeroDyn file): the model's declarations say which.
+    std::vector<std::string> options_done;
     for (const Registration& r : registry) {
-        if (!supplied(r, b)) continue;
-        const model::LoadKindInfo& kind = model::load_kind_info(r.kind);
+        if (!supplied(r, b) ||
+            std::find(options_done.begin(), options_done.end(), r.option) != options_done.end())
+            continue;
+        options_done.push_back(r.option);
         bool declared = false;
-        for (const model::LoadBlock& decl : m ? m->loads : std::vector<model::LoadBlock>{}) {
-            if (decl.kind != r.kind) continue;
-            declared = true;
-            try {
-                blocks.push_back(r.build(decl, context));
-            } catch (const std::invalid_argument& e) {
-                throw UserError(std::string(r.option) + ": " + e.what());
-            } catch (const std::runtime_error& e) {
-                throw UserError(std::string(r.option) + ": " + e.what());
+        std::string kinds, declarations;
+        for (const Registration& same : registry) {
+            if (std::string(same.option) != r.option) continue;
+            const model::LoadKindInfo& kind = model::load_kind_info(same.kind);
+            kinds += (kinds.empty() ? "`load " : " or `load ") + kind.name + "`";
+            declarations += "\n" + declaration_to_add(kind);
+            for (const model::LoadBlock& decl : m ? m->loads : std::vector<model::LoadBlock>{}) {
+                if (decl.kind != same.kind) continue;
+                declared = true;
+                try {
+                    blocks.push_back(same.build(decl, context));
+                } catch (const std::invalid_argument& e) {
+                    throw UserError(std::string(same.option) + ": " + e.what());
+                } catch (const std::runtime_error& e) {
+                    throw UserError(std::string(same.option) + ": " + e.what());
+                }
             }
         }
         if (!declared)
-            throw UserError(std::string(r.option) + ": the model declares no `load " + kind.name +
-                            "` block for it; add one that binds its roles to the model's " +
-                            "names (docs/language.md, Load blocks):\n" + declaration_to_add(kind));
+            throw UserError(std::string(r.option) + ": the model declares no " + kinds +
+                            " block for it; add one that binds its roles to the model's " +
+                            "names (docs/language.md, Load blocks):" + declarations);
     }
     return blocks;
 }

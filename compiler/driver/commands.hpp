@@ -147,11 +147,16 @@ struct BatchMergeOptions {
     std::string output; // -o; empty: summary.csv in the first folder
 };
 
+/// What `from-openfast` makes of AeroDyn (`--aero`): its blade elements on the
+/// flexible blades, or the quasi-steady rotor of a Cp/Ct/Cq table.
+enum class RotorAero { blade_elements, table };
+
 struct FromOpenFastOptions {
     std::string deck;                               // ElastoDyn main file or .fst
     std::vector<std::pair<std::string, bool>> dofs; // --dofs NAME=on|off (ElastoDyn flag names)
     std::string output;                             // -o model.mbd
     std::string cp_table; // --cp-table: the rotor block's table (default: the controller's)
+    RotorAero aero = RotorAero::blade_elements; // --aero blade-elements|table
 };
 
 struct SidOptions {

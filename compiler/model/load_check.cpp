@@ -147,14 +147,17 @@ private:
             return false;
         }
         if (!info) return true;
-        for (const std::string& o : info->outputs)
-            if (std::find(outputs_.begin(), outputs_.end(), name + "_" + o) != outputs_.end()) {
-                diags_.error(Kind::DuplicateName, decl.id.loc,
-                             "load block " + quoted(name) + " adds the output " +
-                                 quoted(name + "_" + o) +
-                                 ", which the model declares already (rename the block)");
+        for (const std::string& o : info->outputs) {
+            const std::string full = info->output_name(name, o);
+            if (std::find(outputs_.begin(), outputs_.end(), full) != outputs_.end()) {
+                diags_.error(
+                    Kind::DuplicateName, decl.id.loc,
+                    "load block " + quoted(name) + " adds the output " + quoted(full) +
+                        ", which the model declares already (" +
+                        (info->prefixed_outputs ? "rename the block" : "rename the output") + ")");
                 return false;
             }
+        }
         return true;
     }
 

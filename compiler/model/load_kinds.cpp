@@ -36,7 +36,8 @@ const std::vector<LoadKindInfo>& load_kinds() {
          },
          {"RtSpeed", "RtTSR", "RtVAvgxh", "RtSkew", "RtFldFxh", "RtFldMxh", "RtFldPwr", "RtFldCp",
           "RtFldCt", "RtFldCq"},
-         static_cast<int>(BladeElementsRole::wind)},
+         static_cast<int>(BladeElementsRole::wind),
+         false},
     };
     return kinds;
 }

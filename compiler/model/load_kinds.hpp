@@ -31,8 +31,16 @@ struct LoadKindInfo {
     LoadKind kind;
     std::string name;
     std::vector<LoadRole> roles;      // in the order of the kind's role enum
-    std::vector<std::string> outputs; // the block's outputs, NAME_<output>, after the model's
+    std::vector<std::string> outputs; // the block's outputs, after the model's
     int wind_role = -1;               // the role `--wind` drives, if any
+    /// The outputs are NAME_<output>; or, for kinds that compute OpenFAST's
+    /// channels, named as the channels (AeroDyn's RtFldCp, B1N1Alpha, ...).
+    bool prefixed_outputs = true;
+
+    /// The name block `block` gives its output `output`.
+    std::string output_name(const std::string& block, const std::string& output) const {
+        return prefixed_outputs ? block + "_" + output : output;
+    }
 };
 
 /// The roles of `load rotor_table`, in the order of its LoadKindInfo::roles.

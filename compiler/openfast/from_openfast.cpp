@@ -108,7 +108,10 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
     else if (auto tips = blade_tip_shapes(*deck, diags))
         in.blade_tips = *tips;
     if (tower_rigid) in.tower = rigid_tower(*deck, diags);
-    in.operation = read_operation(*deck, o.cp_table, diags);
+    // The blade elements need the blades as bodies: a rotor without blade DOFs is one
+    // rigid body, whose aerodynamics is the table's.
+    in.operation = read_operation(
+        *deck, o.cp_table, o.aero == driver::RotorAero::blade_elements && !blades_rigid, diags);
     if (auto yaw = in.dofs.find("YawDOF"); yaw != in.dofs.end() && yaw->second)
         in.yaw_spring = read_yaw_spring(*deck, diags);
     in.output_file = fs::path(o.output).filename().string();
@@ -117,6 +120,7 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
         Operation& op = *in.operation;
         std::vector<NamedFile> run_files;
         for (auto [path, what] : {std::pair{&op.table, "the Cp/Ct/Cq table"},
+                                  {&op.aerodyn, "the AeroDyn file"},
                                   {&op.controller, "the controller library"},
                                   {&op.controller_input, "the controller input"},
                                   {&op.wind, "the wind file"}}) {

@@ -851,10 +851,19 @@ private:
 
     /// The command that runs the model in the deck's wind under its controller.
     void operation_header(const Operation& op) {
-        out_ << "# In wind (docs/openfast.md, \"A full deck\"): AeroDyn becomes the quasi-steady\n"
-                "# rotor block of a Cp/Ct/Cq table, InflowWind the hub-height wind, ServoDyn's\n"
-                "# controller the DISCON library it names:\n";
-        std::vector<std::string> options{"--aero " + (op.table.empty() ? "TABLE" : op.table),
+        if (op.blade_elements)
+            out_ << "# In wind (docs/openfast.md, \"A full deck\"): AeroDyn becomes its blade\n"
+                    "# elements on the flexible blades (docs/aerodynamics.md), InflowWind the\n"
+                    "# hub-height wind, ServoDyn's controller the DISCON library it names:\n";
+        else
+            out_
+                << "# In wind (docs/openfast.md, \"A full deck\"): AeroDyn becomes the "
+                   "quasi-steady\n"
+                   "# rotor block of a Cp/Ct/Cq table, InflowWind the hub-height wind, ServoDyn's\n"
+                   "# controller the DISCON library it names:\n";
+        const std::string aero = op.blade_elements ? (op.aerodyn.empty() ? "AERODYN" : op.aerodyn)
+                                                   : (op.table.empty() ? "TABLE" : op.table);
+        std::vector<std::string> options{"--aero " + aero,
                                          "--wind " + (op.wind.empty() ? "SPEED" : op.wind)};
         if (!op.controller.empty()) {
             options.push_back("--controller " + op.controller);
@@ -870,7 +879,10 @@ private:
         for (const std::string& option : options) out_ << " \\\n#     " << option;
         out_ << "\n";
         std::string sources;
-        if (!op.table_from.empty()) sources += "--aero from " + op.table_from;
+        if (op.blade_elements)
+            sources += "--aero from AeroFile";
+        else if (!op.table_from.empty())
+            sources += "--aero from " + op.table_from;
         if (!op.wind_from.empty())
             sources += (sources.empty() ? "" : "; ") + std::string("--wind from ") + op.wind_from;
         if (!sources.empty()) out_ << "#   (" << sources << ")\n";
@@ -928,6 +940,18 @@ private:
     /// The rotor block of `--aero` on the channels above (docs/language.md, Load blocks).
     void rotor_block() {
         if (!in_.operation) return;
+        if (in_.operation->blade_elements) {
+            // The blades carry their deck's pitch; the controller's pitch replaces it
+            // in the aerodynamics (docs/aerodynamics.md).
+            out_ << "\n# ---- AeroDyn's blade elements (`--aero AeroDyn.dat`) on the hub and "
+                    "blades\n"
+                    "load blade_elements aero {\n"
+                    "    wind = V_wind; pitch = pitch\n"
+                    "    hub = hub";
+            for (int k = 1; k <= d_.blades; ++k) out_ << "; blade" << k << " = blade" << k;
+            out_ << "\n}\n";
+            return;
+        }
         out_ << "\n# ---- the rotor block of `--aero TABLE` on these channels\n"
                 "load rotor_table aero {\n"
                 "    wind = V_wind; pitch = pitch; thrust = thrust; rotor_torque = aero_torque\n"

@@ -70,10 +70,11 @@ public:
     OperationReader(const openfast::OpenFastDeck& deck, diag::Diagnostics& diags)
         : deck_(deck), diags_(diags) {}
 
-    std::optional<Operation> read(const std::string& cp_table) {
+    std::optional<Operation> read(const std::string& cp_table, bool blade_elements) {
         if (!deck_.fst || switch_of("CompAero") == "0" || switch_of("CompAero").empty())
             return std::nullopt;
         op_.rotor_radius = deck_["TipRad"];
+        op_.blade_elements = blade_elements;
         aerodyn();
         if (switch_of("CompInflow") == "1") inflow_wind();
         if (switch_of("CompServo") == "1") servodyn();
@@ -86,7 +87,7 @@ public:
                 op_.table_from =
                     "PerfFileName, " + fs::path(op_.controller_input).filename().string();
         }
-        if (op_.table.empty())
+        if (op_.table.empty() && !op_.blade_elements)
             diags_.warning(Kind::MissingProperty, at("CompAero"),
                            "no Cp/Ct/Cq table: give --cp-table FILE (the model's header names "
                            "TABLE in the command for its rotor block)");
@@ -105,11 +106,23 @@ private:
     }
 
     void aerodyn() {
-        diags_.warning(Kind::NotSupported, at("CompAero"),
-                       "CompAero = " + switch_of("CompAero") +
-                           ": AeroDyn's blade elements (induction, dynamic inflow, unsteady "
-                           "aerodynamics, tower influence) become the quasi-steady rotor block "
-                           "of a Cp/Ct/Cq table: thrust and torque on the rotor (`sim --aero`)");
+        if (op_.blade_elements) {
+            if (auto it = deck_.module_files.find("AeroFile"); it != deck_.module_files.end())
+                op_.aerodyn = it->second;
+            diags_.warning(Kind::NotSupported, at("CompAero"),
+                           "CompAero = " + switch_of("CompAero") +
+                               ": AeroDyn's blade elements become the `blade_elements` block "
+                               "(`sim --aero` the AeroDyn file): steady BEM on the flexible "
+                               "blades; its dynamic inflow, unsteady aerodynamics and tower "
+                               "influence are not converted yet (docs/aerodynamics.md)");
+        } else {
+            diags_.warning(Kind::NotSupported, at("CompAero"),
+                           "CompAero = " + switch_of("CompAero") +
+                               ": AeroDyn's blade elements (induction, dynamic inflow, unsteady "
+                               "aerodynamics, tower influence) become the quasi-steady rotor "
+                               "block of a Cp/Ct/Cq table: thrust and torque on the rotor (`sim "
+                               "--aero`)");
+        }
         if (deck_.fst_air_density) {
             op_.air_density = *deck_.fst_air_density;
             op_.air_density_from = deck_.fst_air_density_at;
@@ -267,8 +280,9 @@ std::optional<YawSpring> read_yaw_spring(const openfast::OpenFastDeck& deck,
 }
 
 std::optional<Operation> read_operation(const openfast::OpenFastDeck& deck,
-                                        const std::string& cp_table, diag::Diagnostics& diags) {
-    return OperationReader(deck, diags).read(cp_table);
+                                        const std::string& cp_table, bool blade_elements,
+                                        diag::Diagnostics& diags) {
+    return OperationReader(deck, diags).read(cp_table, blade_elements);
 }
 
 } // namespace yamsc::openfast

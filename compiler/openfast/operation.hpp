@@ -30,7 +30,11 @@ struct Operation {
     double region2_k = 0;
     std::string region2_k_from;
     std::string controller, controller_input; ///< resolved paths; empty without a DLL
-    std::string table;                        ///< the Cp/Ct/Cq table (resolved), or empty
+    /// AeroDyn as its blade elements (`load blade_elements`, --aero the AeroDyn
+    /// file), or the table rotor (`load rotor_table`, --aero the table).
+    bool blade_elements = false;
+    std::string aerodyn; ///< AeroFile (resolved), the blade elements' --aero
+    std::string table;   ///< the Cp/Ct/Cq table (resolved), or empty
     std::string table_from;
 };
 
@@ -57,6 +61,7 @@ std::optional<YawSpring> read_yaw_spring(const openfast::OpenFastDeck& deck,
 /// PerfFileName, as ROSCO reads it). What cannot be converted (BEM, dynamic inflow,
 /// unsteady aerodynamics, other wind types) is a warning at its line.
 std::optional<Operation> read_operation(const openfast::OpenFastDeck& deck,
-                                        const std::string& cp_table, diag::Diagnostics& diags);
+                                        const std::string& cp_table, bool blade_elements,
+                                        diag::Diagnostics& diags);
 
 } // namespace yamsc::openfast

@@ -13,29 +13,29 @@ std::size_t modes_of(const BodyFrame& f, const BodyPoint& p) {
     return std::min(f.q.size(), p.phi.size());
 }
 
-/// The node's displacement from its undeformed position, in body axes, and
-/// ∂p/∂q_k = Φ_k + Σ_j ½ (Φ¹_kj + Φ¹_jk) q_j (the derivation's node motion).
-struct Deflection {
-    Vector3d p = Vector3d::Zero();
-    std::vector<Vector3d> dp_dq;
-};
-
-Deflection deflection(const BodyFrame& f, const BodyPoint& pt) {
+/// ∂p/∂q_k of the node's position p in body axes: Φ_k + Σ_j ½ (Φ¹_kj + Φ¹_jk) q_j
+/// (the derivation's node motion; no storage, as blocks call this per node and step).
+Vector3d dp_dq(const BodyFrame& f, const BodyPoint& pt, std::size_t k) {
+    Vector3d dp = pt.phi[k];
+    if (pt.phi1.empty()) return dp;
     const std::size_t n = modes_of(f, pt);
-    Deflection d;
-    d.dp_dq.assign(n, Vector3d::Zero());
+    for (std::size_t j = 0; j < n; ++j)
+        dp += 0.5 * (pt.phi1[k * n + j] + pt.phi1[j * n + k]) * f.q[j];
+    return dp;
+}
+
+/// The node's displacement p - origin = Σ_k (Φ_k + ½ Σ_j Φ¹_kj q_j) q_k.
+Vector3d displacement(const BodyFrame& f, const BodyPoint& pt) {
+    const std::size_t n = modes_of(f, pt);
+    Vector3d p = Vector3d::Zero();
     for (std::size_t k = 0; k < n; ++k) {
-        Vector3d dp = pt.phi[k], half = Vector3d::Zero();
+        Vector3d shape = pt.phi[k];
         if (!pt.phi1.empty())
-            for (std::size_t j = 0; j < n; ++j) {
-                const Vector3d c = 0.5 * (pt.phi1[k * n + j] + pt.phi1[j * n + k]);
-                dp += c * f.q[j];
-                half += c * f.q[j];
-            }
-        d.dp_dq[k] = dp;
-        d.p += (pt.phi[k] + 0.5 * half) * f.q[k];
+            for (std::size_t j = 0; j < n; ++j)
+                shape += 0.25 * (pt.phi1[k * n + j] + pt.phi1[j * n + k]) * f.q[j];
+        p += shape * f.q[k];
     }
-    return d;
+    return p;
 }
 
 Vector3d elastic_angles(const BodyFrame& f, const BodyPoint& pt) {
@@ -77,15 +77,14 @@ BodyPoint blend(const BodyPoint& a, const BodyPoint& b, double s) {
 }
 
 PointMotion point_motion(const BodyFrame& f, const BodyPoint& pt) {
-    const Deflection d = deflection(f, pt);
     const Vector3d th = elastic_angles(f, pt);
     const Matrix3d W = angle_rates(th);
     Vector3d pd = Vector3d::Zero(), thd = Vector3d::Zero();
-    for (std::size_t k = 0; k < d.dp_dq.size(); ++k) {
-        pd += d.dp_dq[k] * f.qd[k];
+    for (std::size_t k = 0; k < modes_of(f, pt); ++k) {
+        pd += dp_dq(f, pt, k) * f.qd[k];
         thd += pt.psi[k] * f.qd[k];
     }
-    const Vector3d rho = f.R * (pt.origin + d.p);
+    const Vector3d rho = f.R * (pt.origin + displacement(f, pt));
     PointMotion m;
     m.r = f.r + rho;
     m.v = f.v + f.w.cross(rho) + f.R * pd;
@@ -96,17 +95,17 @@ PointMotion point_motion(const BodyFrame& f, const BodyPoint& pt) {
 
 void add_point_load(const BodyFrame& f, const BodyPoint& pt, const Vector3d& force,
                     const Vector3d& moment, BodyLoad& load) {
-    const Deflection d = deflection(f, pt);
+    const std::size_t n = modes_of(f, pt);
     const Matrix3d W = angle_rates(elastic_angles(f, pt));
-    const Vector3d rho = pt.origin + d.p; // body axes
+    const Vector3d rho = pt.origin + displacement(f, pt); // body axes
     const Vector3d fb = f.R.transpose() * force, mb = f.R.transpose() * moment;
     // The body frame's share: the wrench moved to the origin.
     load.force += fb;
     load.moment += rho.cross(fb) + mb;
     // Each mode's: the point's partial velocity and partial angular velocity.
-    if (load.modal.size() < d.dp_dq.size()) load.modal.resize(d.dp_dq.size(), 0.0);
-    for (std::size_t k = 0; k < d.dp_dq.size(); ++k)
-        load.modal[k] += d.dp_dq[k].dot(fb) + (W * pt.psi[k]).dot(mb);
+    if (load.modal.size() < n) load.modal.resize(n, 0.0);
+    for (std::size_t k = 0; k < n; ++k)
+        load.modal[k] += dp_dq(f, pt, k).dot(fb) + (W * pt.psi[k]).dot(mb);
 }
 
 } // namespace yamsc::runtime

@@ -1,0 +1,44 @@
+#pragma once
+// `load blade_elements`: AeroDyn's blade elements on a model's blades, as a load
+// block (yamsc/load_block.hpp). The model's mesh channels give the hub's and
+// each blade's frame and modes; each AeroDyn node moves with its blade
+// (yamsc/body_mesh.hpp: between the blade's nodes, following its deflection),
+// the rotor's BEM (bem_rotor.hpp) gives the loads per length at the AeroDyn
+// nodes, and those are carried to the blade's structural nodes as ElastoDyn
+// takes them (the load per length at each node times its element's length)
+// and set on the blade exactly through the node's partial velocities.
+#include "yamsc/aero/rotor_input.hpp"
+#include "yamsc/body_mesh.hpp"
+#include "yamsc/load_block.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace yamsc::aero {
+
+/// Where the block meets the model: indices into the view's channels.
+struct BladeElementChannels {
+    int wind = -1;  // input: hub-height wind speed along ground x [m/s]
+    int pitch = -1; // input (or -1): the blades' collective pitch [rad], about their z axes
+                    // from the pitch their frames have relative to the hub (else as they are)
+    std::vector<int> hub_outputs; // the hub's mesh outputs (18)
+    struct Blade {
+        std::vector<int> outputs; // its mesh outputs (18 + 2 modes)
+        std::vector<int> loads;   // its mesh inputs (6 + modes)
+        std::vector<runtime::BodyPoint>
+            points; // its structural nodes (body axes, z along the span)
+    };
+    std::vector<Blade> blades;
+};
+
+struct BladeElementSetup {
+    std::string output_prefix; // before each output's name (AeroDyn's: RtFldCp, B1N1Alpha, ...)
+    RotorInput rotor;
+    BladeElementChannels channels;
+    std::vector<int> output_nodes; // AeroDyn nodes (1-based) with BkNj outputs, blade 1..3
+};
+
+std::shared_ptr<const runtime::LoadBlock> blade_element_block(BladeElementSetup setup);
+
+} // namespace yamsc::aero

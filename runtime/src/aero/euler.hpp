@@ -1,0 +1,46 @@
+#pragma once
+// NWTC's Euler angles as AeroDyn uses them to read orientations (NWTC_Num.f90):
+// EulerConstruct, the change of basis (global to local) of rotations about x,
+// y, z by theta (intrinsic z-y-x), M = R(z) R(y) R(x); EulerExtract its inverse.
+#include <Eigen/Core>
+#include <cmath>
+#include <limits>
+
+namespace yamsc::aero {
+
+inline bool euler_nearly_zero(double x) {
+    return std::abs(x) <= 50.0 * std::numeric_limits<double>::epsilon();
+}
+
+/// NWTC's EulerConstruct: the change of basis (global to local) of the rotations
+/// about x, y, z by theta (intrinsic z-y-x), M = R(z) R(y) R(x).
+inline Eigen::Matrix3d euler_construct(const Eigen::Vector3d& t) {
+    const double cx = std::cos(t[0]), sx = std::sin(t[0]), cy = std::cos(t[1]), sy = std::sin(t[1]),
+                 cz = std::cos(t[2]), sz = std::sin(t[2]);
+    Eigen::Matrix3d m;
+    m << cy * cz, cx * sz + sx * sy * cz, sx * sz - cx * sy * cz, //
+        -cy * sz, cx * cz - sx * sy * sz, sx * cz + cx * sy * sz, //
+        sy, -sx * cy, cx * cy;
+    return m;
+}
+
+/// NWTC's EulerExtract, the inverse of euler_construct.
+inline Eigen::Vector3d euler_extract(const Eigen::Matrix3d& m) {
+    double cy = std::hypot(m(0, 0), m(1, 0));
+    Eigen::Vector3d t;
+    if (euler_nearly_zero(cy)) {
+        t[1] = std::atan2(m(2, 0), cy);
+        t[2] = 0;
+        t[0] = std::atan2(m(1, 2), m(1, 1));
+        return t;
+    }
+    t[2] = std::atan2(-m(1, 0), m(0, 0));
+    double cz = std::cos(t[2]), sz = std::sin(t[2]);
+    cy = euler_nearly_zero(cz) ? std::copysign(cy, -m(1, 0) / sz) : std::copysign(cy, m(0, 0) / cz);
+    t[1] = std::atan2(m(2, 0), cy);
+    const double cx = sz * m(0, 1) + cz * m(1, 1), sx = sz * m(0, 2) + cz * m(1, 2);
+    t[0] = std::atan2(sx, cx);
+    return t;
+}
+
+} // namespace yamsc::aero

@@ -1,0 +1,142 @@
+// `load blade_elements` on the NREL 5-MW structure from-openfast writes, its
+// blades undeflected: the rotor of AeroDyn's BEM through the blades' meshes,
+// against OpenFAST + AeroDyn's rigid rotor (data/reference/aero/rigid_*.csv:
+// every ElastoDyn DOF off, quasi-steady BEM) and against the rigid rotor of
+// yamsc/aero/rigid_rotor.hpp, which places the nodes from the geometry alone.
+#include "analysis/load_blocks.hpp"
+#include "analysis/loaded_model.hpp"
+#include "openfast/from_openfast.hpp"
+#include "test_files.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+const std::string data_dir = YAMSC_TEST_DATA_DIR;
+const std::string deck_dir = data_dir + "/reference/operating/deck";
+
+/// The deck copied, with AeroDyn's node outputs at the reference's nodes.
+std::string deck_copy() {
+    static const std::string dir = [] {
+        const std::string d = test_support::scratch_dir("aero", "blade_elements_deck");
+        fs::copy(deck_dir, d, fs::copy_options::recursive);
+        const std::string ad = d + "/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat";
+        std::istringstream in(test_support::read_file(ad));
+        std::string text, line;
+        while (std::getline(in, line)) {
+            if (line.find("NBlOuts") != std::string::npos)
+                line =
+                    "          9   NBlOuts             - Number of blade node outputs [0 - 9] (-)";
+            else if (line.find("BlOutNd") != std::string::npos)
+                line = "3, 5, 7, 9, 11, 13, 15, 17, 18    BlOutNd             - Blade nodes whose "
+                       "values will be output  (-)";
+            text += line + "\n";
+        }
+        test_support::write_file(ad, text);
+        return d;
+    }();
+    return dir;
+}
+
+/// The full deck's model: from-openfast declares the blade-element rotor.
+std::string model_with_blade_elements() {
+    const std::string dir = test_support::scratch_dir("aero", "blade_elements_model");
+    yamsc::driver::FromOpenFastOptions o;
+    o.deck = deck_copy() + "/NREL-5MW.fst";
+    o.output = dir + "/full.mbd";
+    std::ostringstream out, err;
+    REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
+    REQUIRE(test_support::read_file(o.output).find("load blade_elements aero {") !=
+            std::string::npos);
+    return o.output;
+}
+
+using Row = std::map<std::string, double>;
+
+std::vector<Row> read_reference(const std::string& name) {
+    std::istringstream in(test_support::read_file(data_dir + "/reference/aero/" + name));
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> header;
+    {
+        std::istringstream h(line);
+        std::string c;
+        while (std::getline(h, c, ',')) header.push_back(c.substr(0, c.find("_[")));
+    }
+    std::vector<Row> rows;
+    while (std::getline(in, line)) {
+        std::istringstream l(line);
+        std::string c;
+        Row r;
+        for (std::size_t i = 0; std::getline(l, c, ','); ++i) r[header.at(i)] = std::stod(c);
+        rows.push_back(std::move(r));
+    }
+    return rows;
+}
+
+int index_of(const std::vector<std::string>& names, const std::string& name) {
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name) return static_cast<int>(i);
+    FAIL("no channel " << name);
+    return -1;
+}
+
+} // namespace
+
+TEST_CASE("the blade-element rotor on undeflected blades matches OpenFAST's rigid rotor") {
+    const std::string path = model_with_blade_elements();
+    std::ostringstream err;
+    auto l = yamsc::analysis::load(path, {}, "", false, err, {}, yamsc::codegen::abi_routines());
+    REQUIRE_MESSAGE(l, err.str());
+    yamsc::analysis::BlockOptions blocks;
+    blocks.aero = deck_copy() + "/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat";
+    const yamsc::runtime::ModelView v = yamsc::analysis::with_load_blocks(*l, blocks);
+
+    struct Case {
+        const char* file;
+        double wind;
+    };
+    for (const Case& c :
+         {Case{"rigid_U8.csv", 8.0}, Case{"rigid_U11.4.csv", 11.4}, Case{"rigid_U16.csv", 16.0}}) {
+        CAPTURE(c.file);
+        const std::vector<Row> rows = read_reference(c.file);
+        for (std::size_t r = 0; r < rows.size(); r += 20) {
+            const Row& ref = rows[r];
+            CAPTURE(ref.at("Time"));
+            std::vector<double> q(static_cast<std::size_t>(v.nq), 0.0),
+                qd = q, u(static_cast<std::size_t>(v.nu), 0.0), y(static_cast<std::size_t>(v.ny));
+            q[static_cast<std::size_t>(index_of(v.dof_names, "psi"))] =
+                ref.at("Azimuth") * M_PI / 180;
+            qd[static_cast<std::size_t>(index_of(v.dof_names, "psi"))] =
+                ref.at("RotSpeed") * M_PI / 30;
+            u[static_cast<std::size_t>(index_of(v.input_names, "V_wind"))] = c.wind;
+            u[static_cast<std::size_t>(index_of(v.input_names, "pitch"))] =
+                ref.at("BlPitch1") * M_PI / 180;
+            v.outputs(0.0, q.data(), qd.data(), u.data(), y.data());
+            auto out = [&](const std::string& n) {
+                return y[static_cast<std::size_t>(index_of(v.output_names, n))];
+            };
+            CHECK(out("RtFldCp") == doctest::Approx(ref.at("RtFldCp")).epsilon(0.005));
+            CHECK(out("RtFldCt") == doctest::Approx(ref.at("RtFldCt")).epsilon(0.005));
+            CHECK(out("RtSkew") == doctest::Approx(ref.at("RtSkew")).epsilon(1e-3));
+            double fmax = 0;
+            for (int j = 1; j <= 9; ++j)
+                for (const char* f : {"Fx", "Fy"})
+                    fmax = std::max(fmax, std::abs(ref.at("B1N" + std::to_string(j) + f)));
+            for (int j = 1; j <= 9; ++j) {
+                const std::string n = "B1N" + std::to_string(j);
+                CAPTURE(n);
+                CHECK(std::abs(out(n + "Alpha") - ref.at(n + "Alpha")) < 0.1);
+                CHECK(std::abs(out(n + "Fx") - ref.at(n + "Fx")) < 0.01 * fmax);
+                CHECK(std::abs(out(n + "Fy") - ref.at(n + "Fy")) < 0.01 * fmax);
+            }
+        }
+    }
+}
