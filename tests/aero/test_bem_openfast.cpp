@@ -3,6 +3,8 @@
 // within 0.5 %, the nine output nodes' angle of attack within 0.1 deg, their Fx
 // and Fy within 1 % of the blade's largest, at azimuths over a revolution.
 #include "analysis/aerodyn_rotor.hpp"
+#include "analysis/commands.hpp"
+#include "driver/commands.hpp"
 #include "yamsc/aero/rigid_rotor.hpp"
 #include "yamsc/aero/rotor_table.hpp"
 #include "yamsc/performance_table.hpp"
@@ -11,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -164,5 +167,35 @@ TEST_CASE("bem table: the deck's rotor against ROSCO's Cp_Ct_Cq.NREL5MW.txt") {
             CHECK(std::abs(t.cp[at] - cp.value) < 0.05 * cp_max);
             CHECK(std::abs(t.ct[at] - ct.value) < 0.05 * ct_max);
         }
+    }
+}
+
+TEST_CASE("bem table: rotor-table from the deck writes the rigid rotor's table") {
+    const std::filesystem::path dir = std::filesystem::path(YAMSC_TEST_BINARY_DIR) / "bem_table";
+    std::filesystem::create_directories(dir);
+    driver::RotorTableOptions o;
+    o.table = data_dir + "operating/deck/NREL-5MW.fst";
+    o.output = (dir / "Cp_Ct_Cq.txt").string();
+    o.tsr = {6, 7.5, 9};
+    o.pitch_deg = {0, 2};
+    o.azimuths = 3;
+    std::ostringstream out, err;
+    REQUIRE(analysis::rotor_table(o, out, err) == 0);
+    const runtime::PerformanceTable written = runtime::read_performance_table(o.output);
+
+    aero::TableRequest req;
+    req.tsr = o.tsr;
+    req.pitch_deg = o.pitch_deg;
+    req.wind_speed = 11.4;
+    req.rotor_radius = 63; // TipRad
+    req.azimuths = 3;
+    const runtime::PerformanceTable t =
+        aero::rotor_performance_table(nrel5mw(), aero::RotorGeometry{}, req);
+    REQUIRE(written.tsr == t.tsr);
+    REQUIRE(written.pitch_deg == t.pitch_deg);
+    for (std::size_t i = 0; i < t.cp.size(); ++i) {
+        CHECK(std::abs(written.cp[i] - t.cp[i]) < 1e-6);
+        CHECK(std::abs(written.ct[i] - t.ct[i]) < 1e-6);
+        CHECK(std::abs(written.cq[i] - t.cq[i]) < 1e-6);
     }
 }
