@@ -2,7 +2,6 @@
 
 #include "aerodyn/lines.hpp"
 
-#include <cctype>
 #include <cmath>
 #include <string>
 
@@ -40,15 +39,6 @@ const Column columns[] = {
 };
 constexpr int column_count = sizeof columns / sizeof columns[0];
 
-bool same(const std::string& a, const char* b) {
-    std::size_t i = 0;
-    for (; i < a.size() && b[i]; ++i)
-        if (std::tolower(static_cast<unsigned char>(a[i])) !=
-            std::tolower(static_cast<unsigned char>(b[i])))
-            return false;
-    return i == a.size() && !b[i];
-}
-
 } // namespace
 
 std::optional<BladeFile> read_blade_file(const std::shared_ptr<const diag::SourceFile>& file,
@@ -66,7 +56,7 @@ std::optional<BladeFile> read_blade_file(const std::shared_ptr<const diag::Sourc
     for (int k = 0; k < column_count; ++k) {
         index[k] = -1;
         for (std::size_t j = 0; j < header->tokens.size(); ++j)
-            if (same(header->tokens[j].text, columns[k].name)) {
+            if (elastodyn::same_key(header->tokens[j].text, columns[k].name)) {
                 index[k] = static_cast<int>(j);
                 break;
             }

@@ -14,15 +14,6 @@ using elastodyn::Token;
 
 namespace {
 
-bool same(std::string_view a, std::string_view b) {
-    if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        if (std::tolower(static_cast<unsigned char>(a[i])) !=
-            std::tolower(static_cast<unsigned char>(b[i])))
-            return false;
-    return true;
-}
-
 bool is_word(const Token& t) {
     return !t.quoted && !t.text.empty() && std::isalpha(static_cast<unsigned char>(t.text[0]));
 }
@@ -77,6 +68,13 @@ diag::Location Line::at(int token) const {
     return {file, number, tokens[static_cast<std::size_t>(token)].col};
 }
 
+IncludeReader includes_refused() {
+    return [](const std::string&, const diag::Location& at, diag::Diagnostics& diags) {
+        diags.error(Kind::Io, at, "this file may not include files ('@')");
+        return std::shared_ptr<const diag::SourceFile>();
+    };
+}
+
 IncludeReader includes_from_disk() {
     return [](const std::string& path, const diag::Location& at, diag::Diagnostics& diags) {
         return diag::read_text_file(path, diags, at);
@@ -96,7 +94,7 @@ diag::Location Entry::at() const {
 
 diag::Location Entry::key_at() const {
     for (const Token& t : line->tokens)
-        if (same(t.text, key)) return {line->file, line->number, t.col};
+        if (elastodyn::same_key(t.text, key)) return {line->file, line->number, t.col};
     return line->at();
 }
 
@@ -132,14 +130,14 @@ std::optional<Entry> Cursor::take(std::string_view key) {
     const std::vector<Token>& t = l->tokens;
     Entry e;
     e.line = l;
-    if (is_word(t[0]) && same(t[0].text, key) && t.size() >= 2) {
+    if (is_word(t[0]) && elastodyn::same_key(t[0].text, key) && t.size() >= 2) {
         // "Key  value": OpenFAST accepts the name first too.
         e.key = t[0].text;
         e.values = {t[1]};
     } else {
         std::size_t k = 1;
         while (k < t.size() && !is_word(t[k])) ++k;
-        if (k >= t.size() || !same(t[k].text, key)) return std::nullopt;
+        if (k >= t.size() || !elastodyn::same_key(t[k].text, key)) return std::nullopt;
         e.key = t[k].text;
         e.values.assign(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(k));
     }
@@ -177,7 +175,7 @@ const Line* Cursor::next(const std::string& what) {
 }
 
 bool is_default(std::string_view text) {
-    return same(text, "default");
+    return elastodyn::same_key(text, "default");
 }
 
 std::optional<double> Cursor::number(const Entry& e) {

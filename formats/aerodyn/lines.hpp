@@ -40,6 +40,8 @@ using IncludeReader = std::function<std::shared_ptr<const diag::SourceFile>(
 
 /// Reads included files from the disk (diag::read_text_file).
 IncludeReader includes_from_disk();
+/// Refuses every include, with an error at the '@' line (text not from a file).
+IncludeReader includes_refused();
 
 /// The logical lines of `file`: comments and blank lines removed; '@' lines replaced
 /// by the lines of the files they name when `includes` is set, kept as they are

@@ -1,6 +1,7 @@
 #include "aerodyn/primary_file.hpp"
 
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 
 namespace yamsc::aerodyn {
@@ -10,7 +11,7 @@ using diag::Kind;
 
 diag::Location PrimaryFile::location(const std::string& key) const {
     for (const auto& [k, at] : where)
-        if (k == key) return at;
+        if (elastodyn::same_key(k, key)) return at;
     return {file, 0, 0};
 }
 
@@ -71,6 +72,22 @@ private:
         if (e) v = c_.number_or_default(*e, bad);
     }
 
+    /// An integer switch that older files give under `older` just before: the older
+    /// value (mapped later, in legacy()) and the newer one read; both is an error.
+    /// Returns whether the newer key is present.
+    bool switch_pair(const char* older, const char* newer, std::optional<int>& old_value,
+                     int& value) {
+        if (auto e = maybe(older)) old_value = c_.integer(*e);
+        auto e = maybe(newer);
+        if (!e) return false;
+        set(e, value);
+        if (old_value)
+            d_.error(Kind::InvalidValue, e->at(),
+                     std::string("the file has both ") + newer + " and the older " + older +
+                         ": keep " + newer);
+        return true;
+    }
+
     void unsupported(const std::string& key, const std::string& message) {
         d_.warning(Kind::NotSupported, out_.location(key), message);
     }
@@ -80,13 +97,7 @@ private:
         c_.skip_header(2); // the banner and the title
         need("Echo");
         set_or_default(need("DTAero"), out_.dt_aero);
-        if (auto e = maybe("WakeMod")) legacy_wake_ = c_.integer(*e);
-        if (auto e = maybe("Wake_Mod")) {
-            set(e, out_.wake_mod);
-            if (legacy_wake_)
-                d_.error(Kind::InvalidValue, e->at(),
-                         "the file has both Wake_Mod and the older WakeMod: keep Wake_Mod");
-        } // neither: AeroDyn takes Wake_Mod = 1
+        switch_pair("WakeMod", "Wake_Mod", legacy_wake_, out_.wake_mod); // neither: 1
         if (auto e = maybe("AFAeroMod")) legacy_afaero_ = c_.integer(*e);
         set(need("TwrPotent"), out_.twr_potent);
         if (auto e = need("TwrShadow")) {
@@ -115,13 +126,7 @@ private:
 
     void bem() {
         set(maybe("BEM_Mod"), out_.bem_mod);
-        if (auto e = maybe("SkewMod")) legacy_skew_ = c_.integer(*e);
-        if (auto e = maybe("Skew_Mod")) {
-            set(e, out_.skew_mod);
-            if (legacy_skew_)
-                d_.error(Kind::InvalidValue, e->at(),
-                         "the file has both Skew_Mod and the older SkewMod: keep Skew_Mod");
-        }
+        switch_pair("SkewMod", "Skew_Mod", legacy_skew_, out_.skew_mod); // neither: 1
         set(maybe("SkewMomCorr"), out_.skew_mom_corr);
         if (auto e = maybe("SkewRedistr_Mod"))
             if (!is_default(e->value())) set(e, out_.skew_redistr_mod);
@@ -150,16 +155,11 @@ private:
         auto aoa34 = maybe("AoA34");
         set(aoa34, out_.aoa34);
         aoa34_missing_ = !aoa34;
-        if (auto e = maybe("UAMod")) legacy_ua_ = c_.integer(*e);
-        if (auto e = maybe("UA_Mod")) {
-            set(e, out_.ua_mod);
+        if (!switch_pair("UAMod", "UA_Mod", legacy_ua_, out_.ua_mod)) {
             if (legacy_ua_)
-                d_.error(Kind::InvalidValue, e->at(),
-                         "the file has both UA_Mod and the older UAMod: keep UA_Mod");
-        } else if (legacy_ua_) {
-            out_.ua_mod = *legacy_ua_;
-        } else {
-            set(need("UA_Mod"), out_.ua_mod);
+                out_.ua_mod = *legacy_ua_;
+            else
+                set(need("UA_Mod"), out_.ua_mod);
         }
         set(need("FLookup"), out_.flookup);
         set(maybe("IntegrationMethod"), out_.integration_method);
@@ -233,7 +233,7 @@ private:
         for (int k = 0; k < 7; ++k) {
             index[k] = -1;
             for (std::size_t j = 0; j < header->tokens.size(); ++j)
-                if (lower(header->tokens[j].text) == lower(names[k])) {
+                if (elastodyn::same_key(header->tokens[j].text, names[k])) {
                     index[k] = static_cast<int>(j);
                     break;
                 }
@@ -313,7 +313,7 @@ private:
         for (int k = 0; k < *n; ++k) {
             const auto& token = list->values[static_cast<std::size_t>(k)];
             auto v = elastodyn::parse_number(token.text);
-            if (!v || *v < 1 || *v != static_cast<int>(*v)) {
+            if (!v || *v < 1 || *v > max_count || *v != std::floor(*v)) {
                 d_.error(Kind::InvalidValue, {list->line->file, list->line->number, token.col},
                          std::string(list_key) + " must list node numbers from 1");
                 return {};

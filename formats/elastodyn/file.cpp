@@ -6,8 +6,6 @@
 
 namespace yamsc::elastodyn {
 
-namespace {
-
 bool same_key(std::string_view a, std::string_view b) {
     if (a.size() != b.size()) return false;
     for (std::size_t i = 0; i < a.size(); ++i)
@@ -16,6 +14,8 @@ bool same_key(std::string_view a, std::string_view b) {
             return false;
     return true;
 }
+
+namespace {
 
 bool is_separator(const std::string& token) {
     return token.size() >= 3 &&

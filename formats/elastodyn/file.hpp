@@ -67,6 +67,9 @@ struct Token {
 /// The tokens of one line.
 std::vector<Token> tokenize(std::string_view line);
 
+/// Whether two keys are the same, ignoring case (as OpenFAST compares them).
+bool same_key(std::string_view a, std::string_view b);
+
 /// Parses a whole token as a number (Fortran 'D' exponents accepted).
 std::optional<double> parse_number(std::string_view token);
 

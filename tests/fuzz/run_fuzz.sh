@@ -43,6 +43,15 @@ case $target in
   fuzz_wind)
     seeds=("$here"/seeds/wind/*)
     dict= ;;
+  fuzz_aerodyn_primary)
+    seeds=("$root"/tests/data/reference/operating/deck/*AeroDyn15.dat)
+    dict= ;;
+  fuzz_aerodyn_blade)
+    seeds=("$root"/tests/data/reference/operating/deck/*AeroDyn_blade.dat)
+    dict= ;;
+  fuzz_aerodyn_airfoil)
+    seeds=("$root"/tests/data/reference/operating/deck/Airfoils/*.dat "$here"/seeds/aerodyn_airfoil/*)
+    dict= ;;
   fuzz_performance_table)
     seeds=("$root"/models/data/Cp_Ct_Cq.*.txt)
     dict= ;;
