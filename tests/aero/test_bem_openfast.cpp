@@ -67,7 +67,8 @@ struct Worst {
     double cp = 0, ct = 0, alpha = 0, fx = 0, fy = 0; // %, %, deg, % of largest, % of largest
 };
 
-Worst compare(const std::string& name, double propagation_deg) {
+// warm: each row starts from the previous row's phi, as AeroDyn's constraint state.
+Worst compare(const std::string& name, double propagation_deg, bool warm = false) {
     const auto rows = read_csv(data_dir + "aero/" + name + ".csv");
     REQUIRE(rows.size() > 80);
     aero::RigidRotor rotor(nrel5mw(), aero::RotorGeometry{});
@@ -80,7 +81,7 @@ Worst compare(const std::string& name, double propagation_deg) {
         op.pitch = r.at("BlPitch1_[deg]") * deg;
         op.wind_speed = std::hypot(r.at("Wind1VelX_[m/s]"), r.at("Wind1VelY_[m/s]"));
         op.wind_direction = propagation_deg * deg;
-        const aero::RotorResult& res = rotor.evaluate(op);
+        const aero::RotorResult& res = rotor.evaluate(op, warm);
         CAPTURE(name);
         CAPTURE(r.at("Azimuth_[deg]"));
         const double cp = 100 * std::abs(res.cp / r.at("RtFldCp_[-]") - 1);
@@ -124,6 +125,10 @@ Worst compare(const std::string& name, double propagation_deg) {
 
 TEST_CASE("bem: rigid rotor at 8 m/s (below rated) as OpenFAST + AeroDyn") {
     compare("rigid_U8", 0);
+}
+
+TEST_CASE("bem: rigid rotor at 8 m/s from the previous azimuth's inflow angles") {
+    compare("rigid_U8", 0, true);
 }
 
 TEST_CASE("bem: rigid rotor at 11.4 m/s (rated) as OpenFAST + AeroDyn") {
