@@ -64,8 +64,11 @@ public:
 
 private:
     void switches(aero::RotorInput& r, const AeroDynDefaults& defaults) {
-        r.wake = as<aero::WakeModel>(p_.wake_mod);
-        r.bem_mod = p_.bem_mod;
+        // What the reader warns of as not converted becomes what yamsc computes
+        // instead: the BEM wake for the free vortex wake, the legacy BEM projection,
+        // quasi-steady airfoils for the unsteady models other than 3 and 6.
+        r.wake = p_.wake_mod == 3 ? aero::WakeModel::bem : as<aero::WakeModel>(p_.wake_mod);
+        r.bem_mod = 1;
         r.skew = as<aero::SkewModel>(p_.skew_mod);
         r.skew_momentum_correction = p_.skew_mom_corr;
         r.skew_redistribution = as<aero::SkewRedistribution>(p_.skew_redistr_mod);
@@ -79,11 +82,12 @@ private:
         r.max_iterations = p_.max_iter;
         // DBEMT_Mod acts with the BEM wake (Wake_Mod 1, or the older WakeMod 2);
         // -1 is the frozen wake of linearization, not a dynamic model.
-        r.dynamic_inflow = p_.wake_mod == 1 && p_.dbemt_mod > 0
+        r.dynamic_inflow = r.wake == aero::WakeModel::bem && p_.dbemt_mod > 0
                                ? as<aero::DynamicInflow>(p_.dbemt_mod)
                                : aero::DynamicInflow::none;
         r.tau1_const = p_.tau1_const;
-        r.unsteady = as<aero::UnsteadyModel>(p_.ua_mod);
+        r.unsteady = p_.ua_mod == 3 || p_.ua_mod == 6 ? as<aero::UnsteadyModel>(p_.ua_mod)
+                                                      : aero::UnsteadyModel::none;
         r.f_lookup = p_.flookup;
         r.aoa_34 = p_.aoa34;
         r.ua_start_radius = p_.ua_start_rad;
@@ -161,14 +165,15 @@ private:
             out.push_back(n);
         }
         // ReadBladeInputs: without prebend the curve angle is zero; AeroDyn computes it
-        // when the column is absent or for the polar BEM projection (BEM_Mod 2).
+        // when the column is absent (and for the polar projection, BEM_Mod 2, which
+        // yamsc does not convert: the legacy projection's rule applies).
         if (!curved)
             for (aero::BladeNode& n : out) n.curve_angle = 0;
-        if (!file.has_curve_angle || p_.bem_mod == 2) {
+        if (!file.has_curve_angle) {
             if (out.size() < 3)
                 diags_.error(Kind::InvalidValue, file.nodes.front().at,
-                             "computing BlCrvAng (absent, or BEM_Mod = 2) needs 3 blade nodes "
-                             "or more");
+                             "without a BlCrvAng column, AeroDyn computes it from 3 blade "
+                             "nodes or more");
             else
                 cant_angles(out);
         }

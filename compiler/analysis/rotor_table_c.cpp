@@ -5,6 +5,7 @@
 // numbers as the runtime's interpolate() (runtime/src/performance_table.cpp),
 // checked by tests/embedded.
 #include "analysis/commands.hpp"
+#include "analysis/rotor_table_bem.hpp"
 #include "driver/outputs.hpp"
 
 #include "diag/errors.hpp"
@@ -105,7 +106,8 @@ double PFX_coefficient(int which, double tsr, double pitch_deg, double* d_tsr, d
     return text;
 }
 
-int rotor_table(const RotorTableOptions& o, std::ostream& out, std::ostream&) {
+int rotor_table(const RotorTableOptions& o, std::ostream& out, std::ostream& err) {
+    if (is_openfast_deck(o.table)) return rotor_table_from_deck(o, out, err);
     if (!identifier(o.prefix)) throw diag::UsageError("--prefix must be a C identifier");
     check_outputs({{"the table", o.table}}, {{"-o", o.output}});
     runtime::PerformanceTable t;

@@ -168,9 +168,13 @@ struct SidOptions {
 };
 
 struct RotorTableOptions {
-    std::string table;                  // a Cp/Ct/Cq table in ROSCO's format
-    std::string output;                 // -o rotor_table.c
+    std::string table;                  // a Cp/Ct/Cq table in ROSCO's format, or a .fst deck
+    std::string output;                 // -o rotor_table.c (a table: -o Cp_Ct_Cq.txt from a deck)
     std::string prefix = "rotor_table"; // --prefix: of every name in the file
+    // From a deck: the grids, the wind speed, the azimuths averaged.
+    std::vector<double> tsr, pitch_deg; // --tsr, --pitch
+    double wind = 11.4;                 // --wind [m/s]
+    int azimuths = 6;                   // --azimuths per blade passage
 };
 
 int compile(const CompileOptions& o, std::ostream& out, std::ostream& err);

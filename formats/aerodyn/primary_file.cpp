@@ -11,7 +11,7 @@ using diag::Kind;
 
 diag::Location PrimaryFile::location(const std::string& key) const {
     for (const auto& [k, at] : where)
-        if (k == key) return at;
+        if (elastodyn::same_key(k, key)) return at;
     return {file, 0, 0};
 }
 

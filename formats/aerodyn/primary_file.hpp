@@ -71,7 +71,8 @@ struct PrimaryFile {
     std::vector<int> blade_out_nodes, tower_out_nodes; // BlOutNd, TwOutNd (NBlOuts, NTwOuts)
     std::vector<std::string> out_list;                 // OutList, as written
 
-    /// Where each entry read is, by its key as written ("Wake_Mod" -> file:line:col).
+    /// Where each entry read is, by its key as written ("Wake_Mod" -> file:line:col);
+    /// location() looks a key up ignoring case (the file without a line if absent).
     std::vector<std::pair<std::string, diag::Location>> where;
     diag::Location location(const std::string& key) const;
 };
