@@ -872,6 +872,8 @@ private:
         }
         if (d_.tmax && d_.dt)
             options.push_back("--tmax " + mbd_number(*d_.tmax) + " --dt " + mbd_number(*d_.dt));
+        // ElastoDyn's own integrator, where the deck runs it (Method 3).
+        if (op.blade_elements && d_.method == 3) options.push_back("--method abm4");
         if (v("BlPitch1") != 0)
             options.push_back("--u pitch=" + mbd_number(v("BlPitch1") * std::acos(-1.0) / 180));
         // One option a line, as a shell command continued with backslashes.

@@ -235,6 +235,9 @@ private:
                 continue;
             }
             if (it->second == Use::ignored) ignore(f, e.key, e.line);
+            if (key == canonical("Method"))
+                if (const auto m = elastodyn::parse_number(e.value))
+                    deck_.method = static_cast<int>(*m);
             if (it->second == Use::off_by_default) {
                 const std::string value = lower(e.value);
                 const auto number = elastodyn::parse_number(e.value);

@@ -41,6 +41,7 @@ struct OpenFastDeck {
     std::string tower_file;                ///< paths as resolved from the ElastoDyn file
     std::vector<std::string> blade_files;  ///< one per blade
     std::optional<double> tmax, dt;        ///< the `.fst` run, for the model's comment
+    std::optional<int> method;             ///< ElastoDyn's integrator (1 RK4, 2 AB4, 3 ABM4)
     std::optional<double> fst_gravity;     ///< newer decks give gravity in the `.fst`
     std::optional<double> fst_air_density; ///< likewise the air density (AirDens)
     std::string fst_air_density_at;        ///< "file:line" of it

@@ -11,10 +11,31 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "yamsc/aero/rigid_rotor.hpp"
+#include "yamsc/aero/bem.hpp"
 #include "yamsc/aero/rotor_input.hpp"
 
 namespace yamsc::aero {
+
+struct NodeResult {
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();
+    // AeroDyn's element frame (orientationAnnulus for BEM_Mod 1): x along the
+    // coned rotor axis (downwind), y opposite to the motion, z along the blade.
+    Eigen::Vector3d x = Eigen::Vector3d::Zero(), y = Eigen::Vector3d::Zero(),
+                    z = Eigen::Vector3d::Zero();
+    double r_local = 0; // distance from the rotor axis [m]
+    double vx = 0, vy = 0;
+    ElementInput input;
+    ElementSolution bem;
+};
+
+struct RotorResult {
+    std::vector<std::vector<NodeResult>> blades; // [blade][node], AeroDyn's node order
+    double fxh = 0, mxh = 0, power = 0;          // RtFldFxh [N], RtFldMxh [N m], RtFldPwr [W]
+    double cp = 0, ct = 0, cq = 0, tsr = 0;      // RtFldCp, RtFldCt, RtFldCq, RtTSR
+    double skew = 0;                             // RtSkew [rad]
+    double v_avg_xh = 0;                         // RtVAvgxh [m/s]
+    double r_max = 0;                            // largest local radius [m]
+};
 
 /// Ground axes throughout; orientations as rotation matrices whose columns are
 /// the frame's axes (the transposes of AeroDyn's orientation matrices).

@@ -11,7 +11,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "yamsc/aero/bem.hpp"
+#include "yamsc/aero/bem_rotor.hpp"
 #include "yamsc/aero/rotor_input.hpp"
 
 namespace yamsc::aero {
@@ -36,27 +36,6 @@ struct OperatingPoint {
     double wind_direction = 0;
 };
 
-struct NodeResult {
-    Eigen::Vector3d position = Eigen::Vector3d::Zero();
-    // AeroDyn's element frame (orientationAnnulus for BEM_Mod 1): x along the
-    // coned rotor axis (downwind), y opposite to the motion, z along the blade.
-    Eigen::Vector3d x = Eigen::Vector3d::Zero(), y = Eigen::Vector3d::Zero(),
-                    z = Eigen::Vector3d::Zero();
-    double r_local = 0; // distance from the rotor axis [m]
-    double vx = 0, vy = 0;
-    ElementInput input;
-    ElementSolution bem;
-};
-
-struct RotorResult {
-    std::vector<std::vector<NodeResult>> blades; // [blade][node], AeroDyn's node order
-    double fxh = 0, mxh = 0, power = 0;          // RtFldFxh [N], RtFldMxh [N m], RtFldPwr [W]
-    double cp = 0, ct = 0, cq = 0, tsr = 0;      // RtFldCp, RtFldCt, RtFldCq, RtTSR
-    double skew = 0;                             // RtSkew [rad]
-    double v_avg_xh = 0;                         // RtVAvgxh [m/s]
-    double r_max = 0;                            // largest local radius [m]
-};
-
 class RigidRotor {
 public:
     RigidRotor(const RotorInput& input, const RotorGeometry& geometry);
@@ -65,15 +44,13 @@ public:
     // AeroDyn's constraint state (the default solve starts from phi = 0, as
     // AeroDyn's first step). The result's storage is reused.
     const RotorResult& evaluate(const OperatingPoint& op, bool warm_start = false);
-    const RotorResult& result() const { return result_; }
+    const RotorResult& result() const { return rotor_.result(); }
 
 private:
     const RotorInput& input_;
     RotorGeometry geometry_;
-    BemOptions options_;
-    std::vector<std::vector<double>> z_local_; // AeroDyn's zLocal per blade and node
-    RotorResult result_;
-    bool solved_ = false;
+    BemRotor rotor_;     // the BEM on the motion below
+    RotorMotion motion_; // the rigid rotor's, placed from the geometry
 };
 
 } // namespace yamsc::aero

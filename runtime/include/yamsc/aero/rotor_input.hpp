@@ -76,7 +76,8 @@ struct RotorInput {
     std::vector<Airfoil> airfoils;              // AFNames, in order
     std::vector<std::vector<BladeNode>> blades; // ADBlFile(k), one per blade
     std::vector<TowerNode> tower;
-    std::vector<int> output_nodes; // BlOutNd: the blade nodes (1-based) with outputs, NBlOuts of them
+    std::vector<int>
+        output_nodes; // BlOutNd: the blade nodes (1-based) with outputs, NBlOuts of them
 };
 
 } // namespace yamsc::aero
