@@ -159,6 +159,10 @@ TEST_CASE("no DOF: the C++, C and LaTeX targets, the code built with the strict 
     REQUIRE(exit_status(yamsc + " " + model + " -o " + dir + "/arm.c --header " + dir + "/arm.h") ==
             0);
     REQUIRE(exit_status(yamsc + " " + model + " -o " + dir + "/arm.tex") == 0);
+    // No Jacobian to form column by column: a usage error.
+    CHECK(exit_status(yamsc + " " + model + " -o " + dir + "/tangent.cpp --jacobians tangent 2> " +
+                      dir + "/tangent.err") == 2);
+    CHECK(read_file(dir + "/tangent.err").find("a model without DOFs") != std::string::npos);
     CHECK(read_file(dir + "/arm.tex").find("\\begin{document}") != std::string::npos);
     CHECK(exit_status(std::string(YAMSC_CXX_COMPILER) +
                       " -std=c++17 -pedantic -Wall -Wextra -Werror -Wshadow -O1 -c " + dir +
