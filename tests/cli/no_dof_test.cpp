@@ -182,10 +182,46 @@ double param(const std::string& text, const std::string& name) {
     return std::stod(text.substr(at + key.size()));
 }
 
+/// Simulates a model written by from-openfast with every DOF off for 3 s and checks
+/// the rotor's azimuth and speed as ElastoDyn's with GenDOF off (the azimuth advances
+/// at RotSpeed from Azimuth) and blade 1's root moments against Newton over the rigid
+/// blade: its weight and the centripetal acceleration of its coned points.
+void check_rigid_rotor(const std::string& model, double azimuth_deg, double rpm) {
+    const std::string text = read_file(model);
+    CHECK(text.find("\ndof ") == std::string::npos);
+    const std::string csv_path = model + ".csv";
+    REQUIRE(exit_status(yamsc + " sim " + model + " --tmax 3 --dt 0.05 --dt-out 0.25 -o " +
+                        csv_path + " > /dev/null 2>&1") == 0);
+    const Csv csv = read_csv(csv_path);
+    REQUIRE(csv.rows.size() == 13);
+    const double pi = 3.14159265358979323846, omega = rpm * pi / 30;
+    // The blade's first and second moments about its root, the cone, the shaft tilt.
+    const double mb = param(text, "BldMass1"), cb = param(text, "BldCM1");
+    const double s1 = mb * cb, s2 = param(text, "BldIner1") + mb * cb * cb;
+    const double h = param(text, "HubRad"), beta = param(text, "PreCone1") * pi / 180;
+    const double tilt = -param(text, "ShftTilt") * pi / 180, g = param(text, "Gravity");
+    for (std::size_t k = 0; k < csv.rows.size(); ++k) {
+        const double t = csv.at(k, "time");
+        CAPTURE(t);
+        const double psi = azimuth_deg * pi / 180 + omega * t;
+        // The CSV's numbers have 10 significant digits.
+        CHECK(csv.at(k, "Azimuth") == doctest::Approx(psi * 180 / pi).epsilon(1e-9));
+        CHECK(csv.at(k, "RotSpeed") == doctest::Approx(rpm).epsilon(1e-9));
+        // Gravity in the coned blade axes (x out of plane, z along the blade); the
+        // blade's points accelerate by -omega^2 (h + s) sin(beta) cos(beta) along x.
+        const double gx =
+            g * (std::sin(tilt) * std::cos(beta) + std::cos(tilt) * std::cos(psi) * std::sin(beta));
+        const double gy = -g * std::cos(tilt) * std::sin(psi);
+        const double my = s1 * gx - omega * omega * std::sin(beta) * std::cos(beta) * (h * s1 + s2);
+        CHECK(csv.at(k, "RootMyc1") == doctest::Approx(my / 1000).epsilon(1e-9));
+        CHECK(csv.at(k, "RootMxc1") == doctest::Approx(-s1 * gy / 1000).epsilon(1e-9));
+    }
+}
+
 } // namespace
 
-TEST_CASE("an OpenFAST deck with every ElastoDyn DOF off: the rotor turns at RotSpeed, "
-          "the blade root carries its weight and its spin") {
+TEST_CASE("an OpenFAST deck with every ElastoDyn DOF off (--dofs): the rotor turns at "
+          "RotSpeed, the blade root carries its weight and its spin") {
     const std::string dir = scratch_dir("cli", "no_dof_deck");
     const std::string deck = std::string(YAMSC_TEST_DATA_DIR) + "/reference/operating/deck";
     const std::string model = dir + "/rigid.mbd";
@@ -195,34 +231,40 @@ TEST_CASE("an OpenFAST deck with every ElastoDyn DOF off: the rotor turns at Rot
         off += (off.empty() ? "" : ",") + std::string(flag) + "=off";
     REQUIRE(exit_status(yamsc + " from-openfast " + deck + "/NREL-5MW.fst --dofs " + off + " -o " +
                         model + " > /dev/null 2>&1") == 0);
-    const std::string text = read_file(model);
-    CHECK(text.find("\ndof ") == std::string::npos);
-    const std::string csv_path = dir + "/rigid.csv";
-    REQUIRE(exit_status(yamsc + " sim " + model + " --tmax 3 --dt 0.05 --dt-out 0.25 -o " +
-                        csv_path + " > /dev/null 2>&1") == 0);
-    const Csv csv = read_csv(csv_path);
-    REQUIRE(csv.rows.size() == 13);
-    const double pi = 3.14159265358979323846, rpm = 8.9836; // the deck's RotSpeed
-    const double omega = rpm * pi / 30;
-    // The blade's first and second moments about its root, the cone, the shaft tilt.
-    const double mb = param(text, "BldMass1"), cb = param(text, "BldCM1");
-    const double s1 = mb * cb, s2 = param(text, "BldIner1") + mb * cb * cb;
-    const double h = param(text, "HubRad"), beta = param(text, "PreCone1") * pi / 180;
-    const double tilt = -param(text, "ShftTilt") * pi / 180, g = param(text, "Gravity");
-    for (std::size_t k = 0; k < csv.rows.size(); ++k) {
-        const double t = csv.at(k, "time");
-        CAPTURE(t);
-        // ElastoDyn with GenDOF off: the azimuth advances at RotSpeed from Azimuth = 0.
-        const double psi = omega * t;
-        CHECK(csv.at(k, "Azimuth") == doctest::Approx(psi * 180 / pi).epsilon(1e-12));
-        CHECK(csv.at(k, "RotSpeed") == doctest::Approx(rpm).epsilon(1e-14));
-        // Gravity in the coned blade axes (x out of plane, z along the blade) and the
-        // centripetal acceleration of the coned blade's points, Newton over the blade.
-        const double gx =
-            g * (std::sin(tilt) * std::cos(beta) + std::cos(tilt) * std::cos(psi) * std::sin(beta));
-        const double gy = -g * std::cos(tilt) * std::sin(psi);
-        const double my = s1 * gx - omega * omega * std::sin(beta) * std::cos(beta) * (h * s1 + s2);
-        CHECK(csv.at(k, "RootMyc1") == doctest::Approx(my / 1000).epsilon(1e-9));
-        CHECK(csv.at(k, "RootMxc1") == doctest::Approx(-s1 * gy / 1000).epsilon(1e-9));
+    check_rigid_rotor(model, 0, 8.9836); // the deck's Azimuth and RotSpeed
+    // No pitch here: the blade and its cone axes are one.
+    CHECK(read_file(model).find("joint rotor -> blade1 { rotate y PreCone1; at (0, 0, HubRad) }") !=
+          std::string::npos);
+}
+
+TEST_CASE("an ElastoDyn file with every DOF False, pitched, at another azimuth") {
+    const std::string dir = scratch_dir("cli", "no_dof_elastodyn");
+    const std::string deck = std::string(YAMSC_TEST_DATA_DIR) + "/reference/operating/deck/";
+    for (const char* f :
+         {"NRELOffshrBsline5MW_Blade.dat", "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat"})
+        write_file(dir + "/" + f, read_file(deck + f));
+    // Every flag False, BlPitch 10 deg, Azimuth 30 deg, RotSpeed 12.1 rpm.
+    std::istringstream in(read_file(deck + "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"));
+    std::string text, line;
+    while (std::getline(in, line)) {
+        std::istringstream words(line);
+        std::string value, key;
+        words >> value >> key;
+        if (value == "True" && key.find("DOF") != std::string::npos) line = "False " + key;
+        if (key.rfind("BlPitch(", 0) == 0) line = "10 " + key;
+        if (key == "Azimuth") line = "30 Azimuth";
+        if (key == "RotSpeed") line = "12.1 RotSpeed";
+        text += line + "\n";
     }
+    const std::string elastodyn = dir + "/ElastoDyn.dat", model = dir + "/pitched.mbd";
+    write_file(elastodyn, text);
+    REQUIRE(exit_status(yamsc + " from-openfast " + elastodyn + " -o " + model +
+                        " > /dev/null 2>&1") == 0);
+    // The pitch turns the blade about its own axis, on which its mass lies: the root
+    // moments in the cone axes do not change.
+    check_rigid_rotor(model, 30, 12.1);
+    const std::string written = read_file(model);
+    CHECK(param(written, "BlPitch1") == 10);
+    CHECK(written.find("joint rotor -> blade1 { rotate y PreCone1; at (0, 0, HubRad); rotate z "
+                       "-BlPitch1 }") != std::string::npos);
 }
