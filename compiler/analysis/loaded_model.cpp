@@ -2,6 +2,7 @@
 
 #include "analysis/external_library.hpp"
 #include "analysis/jit.hpp"
+#include "diag/diagnostics.hpp"
 #include "driver/bindings.hpp"
 #include "driver/sid_values.hpp"
 #include "model/expr_check.hpp"
@@ -144,6 +145,20 @@ codegen::RoutineSet linear_model_routines() {
     using codegen::RoutineId;
     return {RoutineId::rhs, RoutineId::rhs_jacobian, RoutineId::mass_matrix, RoutineId::forcing,
             RoutineId::jacobians};
+}
+
+bool refuse_without_dofs(const Loaded& l, const std::string& command, const std::string& verb,
+                         std::ostream& err) {
+    if (l.view.nq > 0) return false;
+    const std::string message = "`yamsc " + command +
+                                "`: the model has no DOF (its motion is all prescribed), there "
+                                "is nothing to " +
+                                verb + " (`yamsc sim` and `yamsc eval` evaluate its outputs)";
+    if (!l.front.ast || !l.front.ast->model) throw UserError(message);
+    diag::Diagnostics diags;
+    diags.error(diag::Kind::DofUsage, l.front.ast->model->loc, message);
+    err << diags.render();
+    return true;
 }
 
 std::vector<double> inputs_of(const runtime::ModelView& v, const std::vector<Assignment>& u) {

@@ -60,6 +60,12 @@ Loaded load_library(const std::string& path, const std::vector<driver::Assignmen
 /// The routines `lin` and `trim` call: the second-order model and A.
 codegen::RoutineSet linear_model_routines();
 
+/// For `lin` and `trim`, which have nothing to do on a model without DOFs (its
+/// motion all prescribed): true and the error, located at its `model` statement,
+/// printed to `err`; false when the model has DOFs.
+bool refuse_without_dofs(const Loaded& l, const std::string& command, const std::string& verb,
+                         std::ostream& err);
+
 /// Constant inputs from --u (0 where not given).
 std::vector<double> inputs_of(const runtime::ModelView& v,
                               const std::vector<driver::Assignment>& u);

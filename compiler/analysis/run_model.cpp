@@ -197,7 +197,7 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     if (lin_files) routines.insert(codegen::RoutineId::outputs);
     add_block_routines(block_options(o), false, routines);
     auto loaded = load(o.model, o.set, o.sid, false, err, outputs, routines, o.external);
-    if (!loaded) return 1;
+    if (!loaded || refuse_without_dofs(*loaded, "lin", "linearize", err)) return 1;
     if (o.sweep) return campbell(*loaded, o, out);
     const runtime::ModelView v = with_load_blocks(*loaded, block_options(o));
     const int nq = v.nq, nu = v.nu;

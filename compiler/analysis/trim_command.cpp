@@ -20,7 +20,7 @@ int trim(const TrimOptions& o, std::ostream& out, std::ostream& err) {
     codegen::RoutineSet routines = linear_model_routines();
     add_block_routines(block_options(o), false, routines);
     auto loaded = load(o.model, o.set, o.sid, false, err, {}, routines, o.external);
-    if (!loaded) return 1;
+    if (!loaded || refuse_without_dofs(*loaded, "trim", "trim", err)) return 1;
     const runtime::ModelView v = with_load_blocks(*loaded, block_options(o));
     std::vector<double> q, qd, u0;
     operating_point(*loaded, loaded->params, o.at, o.u, q, qd, u0);

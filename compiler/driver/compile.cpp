@@ -134,6 +134,9 @@ int compile(const CompileOptions& o, std::ostream& out, std::ostream& err) {
         });
     err << diags.render();
     if (diags.has_errors()) return 1;
+    if (o.jacobians == Derivatives::tangent && fe.model && fe.model->dofs.empty())
+        throw UsageError("--jacobians tangent does not apply to a model without DOFs: it has no "
+                         "Jacobian to form");
     if (o.jacobians == Derivatives::tangent && fe.system && !fe.system->tangent_form)
         throw UsageError("--jacobians tangent does not apply to a model with `approx` or with "
                          "outputs that read accelerations (reaction loads, q''): both work on M "

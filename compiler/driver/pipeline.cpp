@@ -181,7 +181,9 @@ bool uses_tangent_form(const model::Model& m, Until until, Derivatives derivativ
         throw diag::UsageError("--jacobians tangent: the model declares external functions, "
                                "whose chain rule needs the unrolled Jacobians (use auto or "
                                "unrolled)");
-    return until == Until::jacobians && m.approximations.empty() && !accelerations && !externals &&
+    // Without DOFs there are no Jacobians to form column by column.
+    return until == Until::jacobians && !m.dofs.empty() && m.approximations.empty() &&
+           !accelerations && !externals &&
            (derivatives == Derivatives::tangent ||
             (derivatives == Derivatives::automatic && m.dofs.size() >= tangent_form_min_dofs));
 }

@@ -113,9 +113,6 @@ private:
         for (const auto& b : file_.flexible_bodies) declare(b.name, NameKind::body, body++, b.loc);
         int point = 0;
         for (const auto& p : file_.points) declare(p.id.name, NameKind::point, point++, p.id.loc);
-        if (file_.dofs.empty() && file_.model)
-            diags_.error(Kind::DofUsage, file_.model->loc,
-                         "the model declares no DOF (add `dof NAME` and use it in a joint)");
     }
 
     void check_params() {

@@ -12,6 +12,7 @@
 
 #include <yamsc/atomic_file.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <ostream>
@@ -103,9 +104,18 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
     for (const std::string& b : deck->blade_files) in.blade_paths.push_back(path_from(folder, b));
     const bool blades_rigid = !openfast::flexible_blades(in.dofs);
     const bool tower_rigid = !openfast::flexible_tower(in.dofs);
-    if (blades_rigid)
+    // Every DOF off (the motion all prescribed): a body per blade, whose root loads are
+    // reactions. With DOFs the rigid rotor stays one lumped body: four bodies on constant
+    // joints double the generated code, as the derivation sums each body's terms.
+    const bool prescribed = std::none_of(in.dofs.begin(), in.dofs.end(), [](const auto& flag) {
+        return flag.second && flag.first != "TeetDOF";
+    });
+    if (blades_rigid && prescribed) {
+        for (int k = 1; k <= deck->blades; ++k)
+            if (auto blade = rigid_blade(*deck, k, diags)) in.blades.push_back(*blade);
+    } else if (blades_rigid) {
         in.rotor = rigid_rotor(*deck, diags);
-    else if (auto tips = blade_tip_shapes(*deck, diags))
+    } else if (auto tips = blade_tip_shapes(*deck, diags))
         in.blade_tips = *tips;
     if (tower_rigid) in.tower = rigid_tower(*deck, diags);
     // The blade elements need the blades as bodies: a rotor without blade DOFs is one

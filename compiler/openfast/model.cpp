@@ -92,6 +92,8 @@ private:
     }
     bool flexible_tower() const { return openfast::flexible_tower(in_.dofs); }
     bool flexible_blades() const { return openfast::flexible_blades(in_.dofs); }
+    /// A body per blade (flexible, or rigid when every DOF is off): blade root loads.
+    bool blade_bodies() const { return flexible_blades() || !in_.blades.empty(); }
     double v(const std::string& key) const { return d_[key]; }
     /// The rotating body the generator torque acts on and the rotor hangs from.
     std::string shaft_body() const {
@@ -207,21 +209,22 @@ private:
             for (const char* k : {"PtfmXYIner", "PtfmYZIner", "PtfmXZIner"})
                 if (v(k) != 0) param(k, v(k), "platform product of inertia (-integral) [kg m^2]");
         }
-        if (flexible_blades()) {
+        if (blade_bodies()) {
             param("HubMass", v("HubMass"), "hub mass [kg]");
             param("HubIner", v("HubIner"), "hub inertia about the shaft [kg m^2]");
             param("HubCM", v("HubCM"), "hub centre of mass from the apex, downwind [m]");
             param("HubRad", v("HubRad"), "blade root from the apex [m]");
-            param("TipRad", v("TipRad"), "blade tip from the apex [m]");
+            if (flexible_blades()) param("TipRad", v("TipRad"), "blade tip from the apex [m]");
             for (int k = 1; k <= d_.blades; ++k) {
                 const std::string n = std::to_string(k);
                 param_deg("PreCone" + n, v("PreCone" + n), "cone of blade " + n + "; > 0 downwind");
                 if (v("BlPitch" + n) != 0)
                     param_deg("BlPitch" + n, v("BlPitch" + n), "pitch of blade " + n);
-                if (v("TipMass" + n) != 0)
+                if (flexible_blades() && v("TipMass" + n) != 0)
                     param("TipMass" + n, v("TipMass" + n),
                           "tip-brake mass of blade " + n + " [kg]");
             }
+            if (!flexible_blades()) rigid_blade_parameters();
         } else if (in_.rotor) {
             const RigidProperties& r = *in_.rotor;
             out_ << "# The rigid rotor: hub (HubMass at HubCM, HubIner) and " << d_.blades
@@ -314,6 +317,21 @@ private:
     }
     static std::string blade_dof(int k, const std::string& mode, const std::string& prefix = "q_") {
         return prefix + "b" + std::to_string(k) + "_" + mode;
+    }
+
+    /// Every DOF off: each blade one rigid body, lumped on BldNodes elements as ElastoDyn
+    /// lumps it, so that its root loads are the reactions of its joint.
+    void rigid_blade_parameters() {
+        out_ << "# The rigid blades, each lumped on BldNodes = " << d_.blade_nodes
+             << " elements as ElastoDyn does (AdjBlMs\n# included) with its tip mass, in its "
+                "own frame (root at the origin, along z).\n";
+        for (std::size_t i = 0; i < in_.blades.size(); ++i) {
+            const RigidProperties& b = in_.blades[i];
+            const std::string n = std::to_string(i + 1);
+            param("BldMass" + n, b.mass, "blade " + n + " with its tip mass [kg]");
+            param("BldCM" + n, b.cm[2], "its centre of mass from the root [m]");
+            param("BldIner" + n, b.inertia[0], "its inertia about the CM, flap and edge [kg m^2]");
+        }
     }
 
     void dofs() {
@@ -431,9 +449,9 @@ private:
             rotor_parent = "gen_shaft";
             rotor_steps = "rotate x drtr";
         }
-        if (flexible_blades()) {
-            out_
-                << "rigid hub { mass = HubMass; com = (HubCM, 0, 0); inertia = (HubIner, 0, 0) }\n";
+        if (blade_bodies()) {
+            out_ << "rigid " << rotor_name
+                 << " { mass = HubMass; com = (HubCM, 0, 0); inertia = (HubIner, 0, 0) }\n";
         } else {
             const RigidProperties& r = *in_.rotor;
             const bool offset = r.cm[1] != 0 || r.cm[2] != 0;
@@ -444,28 +462,36 @@ private:
         }
         out_ << "joint " << rotor_parent << " -> " << rotor_name << " { " << rotor_steps << " }\n";
         if (on("DrTrDOF")) out_ << "spring drtr stiffness DTTorSpr damping DTTorDmp\n";
-        if (!flexible_blades()) return;
+        if (!blade_bodies()) return;
         for (int k = 1; k <= d_.blades; ++k) {
             const std::string n = std::to_string(k);
-            std::string modes;
-            for (const auto& mode : blade_modes)
-                if (on(mode[0]))
-                    modes += (modes.empty() ? "" : ", ") + std::string(mode[1]) + " -> " +
-                             blade_dof(k, mode[1]);
-            out_ << "flexible blade" << n << " {\n    beam "
-                 << mbd_string(in_.blade_paths[static_cast<std::size_t>(k - 1)])
-                 << " elastodyn_blade {\n        length = TipRad - HubRad\n        modes = ("
-                 << modes << ")\n        elements = " << d_.blade_nodes << "\n    }\n}\n";
+            if (flexible_blades())
+                flexible_blade(k);
+            else
+                out_ << "rigid blade" << n << " { mass = BldMass" << n << "; com = (0, 0, BldCM"
+                     << n << "); inertia = (BldIner" << n << ", BldIner" << n << ", 0) }\n";
             std::string steps;
             if (k > 1) steps = "rotate x " + mbd_number(360.0 * (k - 1) / d_.blades) + " deg; ";
             steps += "rotate y PreCone" + n + "; at (0, 0, HubRad)";
             // ElastoDyn pitches a blade about its -z axis (towards feather).
             if (v("BlPitch" + n) != 0) steps += "; rotate z -BlPitch" + n;
-            out_ << "joint hub -> blade" << n << " { " << steps << " }\n";
-            if (v("TipMass" + n) != 0)
+            out_ << "joint " << rotor_name << " -> blade" << n << " { " << steps << " }\n";
+            if (flexible_blades() && v("TipMass" + n) != 0)
                 out_ << "rigid tip_mass" << n << " { mass = TipMass" << n << " }\njoint blade" << n
                      << ".tip -> tip_mass" << n << "\n";
         }
+    }
+
+    void flexible_blade(int k) {
+        std::string modes;
+        for (const auto& mode : blade_modes)
+            if (on(mode[0]))
+                modes += (modes.empty() ? "" : ", ") + std::string(mode[1]) + " -> " +
+                         blade_dof(k, mode[1]);
+        out_ << "flexible blade" << k << " {\n    beam "
+             << mbd_string(in_.blade_paths[static_cast<std::size_t>(k - 1)])
+             << " elastodyn_blade {\n        length = TipRad - HubRad\n        modes = (" << modes
+             << ")\n        elements = " << d_.blade_nodes << "\n    }\n}\n";
     }
 
     void loads() {
@@ -672,10 +698,15 @@ private:
             output("RotSpeed", speed + " * 30 / pi", "rpm");
             output("GenSpeed", "GBRatio * psi' * 30 / pi", "rpm");
         } else {
+            // ElastoDyn keeps the generator's speed at RotSpeed and advances its azimuth at it.
             output("Azimuth",
                    "(psi0 + Omega0 * t" + std::string(on("DrTrDOF") ? " + drtr" : "") +
                        ") * 180 / pi" + offset,
                    "deg");
+            output("RotSpeed",
+                   std::string(on("DrTrDOF") ? "(Omega0 + drtr')" : "Omega0") + " * 30 / pi",
+                   "rpm");
+            output("GenSpeed", "GBRatio * Omega0 * 30 / pi", "rpm");
         }
         if (on("DrTrDOF")) output("Q_DrTr", "drtr", "rad");
         for (int k = 1; k <= d_.blades; ++k)
@@ -799,7 +830,7 @@ private:
             }
         }
         // Blade 1 root (point S(0)): b = the blade's pitched axes, c = before the pitch.
-        if (flexible_blades()) {
+        if (blade_bodies()) {
             const std::string m = "reaction_moment(blade1)";
             if (v("BlPitch1") != 0) {
                 output("RootMxc1",

@@ -19,7 +19,8 @@ struct OpenFastModelInput {
     std::string source;               ///< how the deck was given, for the header comment
     std::string tower_path;           ///< the tower file as the model names it
     std::vector<std::string> blade_paths;
-    std::optional<RigidProperties> rotor; ///< when the blades are rigid
+    std::optional<RigidProperties> rotor; ///< the blades rigid, some DOF on: one lumped rotor
+    std::vector<RigidProperties> blades;  ///< every DOF off: each blade (rigid_blade())
     std::optional<RigidProperties> tower; ///< when the tower is rigid
     /// Tip values of the blades' twisted shapes (flexible blades): ElastoDyn's mapping
     /// of OoPDefl and IPDefl onto the blade DOFs.

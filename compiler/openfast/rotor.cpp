@@ -105,23 +105,38 @@ struct Accumulator {
     }
 };
 
-} // namespace
-
-std::optional<RigidProperties> rigid_rotor(const openfast::OpenFastDeck& deck,
-                                           diag::Diagnostics& diags) {
-    Accumulator rotor;
-    rotor.add(deck["HubMass"], {deck["HubCM"], 0, 0});
-    rotor.inertia[0] += deck["HubIner"]; // about the shaft; ElastoDyn's hub has no other inertia
+/// Blade k's (0-based) elements, from its root along the blade; nullopt after errors.
+std::optional<Elements> blade_elements(const openfast::OpenFastDeck& deck, int k,
+                                       diag::Diagnostics& diags) {
     const double length = deck["TipRad"] - deck["HubRad"];
     if (!(length > 0)) {
         diags.error(diag::Kind::InvalidValue, {deck.ed, 0, 0},
                     "TipRad must be larger than HubRad (the blade length is their difference)");
         return std::nullopt;
     }
+    return lumped_elements(deck.blade_files[static_cast<std::size_t>(k)], "NBlInpSt", "BlFract",
+                           "BMassDen", "AdjBlMs", length, deck.blade_nodes, diags);
+}
+
+} // namespace
+
+std::optional<RigidProperties> rigid_blade(const openfast::OpenFastDeck& deck, int k,
+                                           diag::Diagnostics& diags) {
+    auto elements = blade_elements(deck, k - 1, diags);
+    if (!elements) return std::nullopt;
+    Accumulator blade;
+    for (const auto& [s, m] : *elements) blade.add(m, {0, 0, s});
+    blade.add(deck["TipMass" + std::to_string(k)], {0, 0, deck["TipRad"] - deck["HubRad"]});
+    return blade.about_cm();
+}
+
+std::optional<RigidProperties> rigid_rotor(const openfast::OpenFastDeck& deck,
+                                           diag::Diagnostics& diags) {
+    Accumulator rotor;
+    rotor.add(deck["HubMass"], {deck["HubCM"], 0, 0});
+    rotor.inertia[0] += deck["HubIner"]; // about the shaft; ElastoDyn's hub has no other inertia
     for (int k = 0; k < deck.blades; ++k) {
-        auto elements =
-            lumped_elements(deck.blade_files[static_cast<std::size_t>(k)], "NBlInpSt", "BlFract",
-                            "BMassDen", "AdjBlMs", length, deck.blade_nodes, diags);
+        auto elements = blade_elements(deck, k, diags);
         if (!elements) return std::nullopt;
         const std::string n = std::to_string(k + 1);
         const double cone = deck["PreCone" + n] * pi / 180;

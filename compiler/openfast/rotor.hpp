@@ -23,6 +23,11 @@ struct RigidProperties {
 std::optional<RigidProperties> rigid_rotor(const openfast::OpenFastDeck& deck,
                                            diag::Diagnostics& diags);
 
+/// Blade k (1-based) with its tip mass, in its own frame: origin at the root, z along the
+/// blade (its points are on the axis: no inertia about it). nullopt after reporting errors.
+std::optional<RigidProperties> rigid_blade(const openfast::OpenFastDeck& deck, int k,
+                                           diag::Diagnostics& diags);
+
 /// The tower as a rigid body in its base frame (z up), `length` = TowerHt - TowerBsHt.
 std::optional<RigidProperties> rigid_tower(const openfast::OpenFastDeck& deck,
                                            diag::Diagnostics& diags);

@@ -21,6 +21,9 @@ SecondOrderModel second_order_model(const ModelView& v, const std::vector<double
     if (static_cast<int>(q.size()) != nq || static_cast<int>(qd.size()) != nq ||
         static_cast<int>(u.size()) != nu)
         throw std::invalid_argument("second_order_model: the point has the wrong size");
+    if (nq == 0)
+        throw std::invalid_argument("second_order_model: the model has no DOF (its motion is "
+                                    "all prescribed): there is nothing to linearize");
     if (!v.mass_matrix || !v.forcing || !v.jacobians)
         throw std::invalid_argument("second_order_model: the model was compiled without its "
                                     "mass_matrix, forcing or jacobians routine");

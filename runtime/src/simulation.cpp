@@ -135,7 +135,10 @@ SimulationResult simulate(const ModelView& view, const SimulationOptions& option
         return record(t, x, &derivative);
     };
 
-    if (options.method == Method::rk4) {
+    // Without a state (a model whose motion is all prescribed, no block states)
+    // there is nothing to integrate: every method evaluates the outputs on the
+    // grid of dt, which the fixed-step loop walks (CVODE takes no empty system).
+    if (options.method == Method::rk4 || result.nx == 0) {
         detail::simulate_rk4_observing(view, options.x0, inputs, options.t_end, options.dt,
                                        fixed_step_record, options.t_start);
     } else if (options.method == Method::abm4) {

@@ -108,6 +108,9 @@ TrimResult trim(const ModelView& view, const std::vector<double>& q0,
     if (q0.size() != nq || qd0.size() != nq || held.size() != nq ||
         u0.size() != static_cast<std::size_t>(view.nu))
         throw std::invalid_argument("trim: the point has the wrong size");
+    if (nq == 0)
+        throw std::invalid_argument(
+            "trim: the model has no DOF (its motion is all prescribed): there is nothing to trim");
     if (!view.forcing || !view.jacobians)
         throw std::invalid_argument(
             "trim: the model was compiled without its forcing or jacobians routine");
