@@ -27,7 +27,7 @@ const std::vector<LoadKindInfo>& load_kinds() {
          {
              {"wind", T::input_read, true, "the hub-height wind speed [m/s]"},
              {"pitch", T::input_read, false,
-              "the collective blade pitch added to the blades' own [rad]"},
+              "the blades' collective pitch, replacing their frames' [rad]"},
              {"hub", T::body, true, "the hub: its x axis is the rotor's axis"},
              {"blade1", T::body, true, "blade 1 (a flexible body: its nodes follow it)"},
              {"blade2", T::body, false, "blade 2"},

@@ -118,10 +118,12 @@ int from_openfast(const FromOpenFastOptions& o, std::ostream& out, std::ostream&
     } else if (auto tips = blade_tip_shapes(*deck, diags))
         in.blade_tips = *tips;
     if (tower_rigid) in.tower = rigid_tower(*deck, diags);
-    // The blade elements need the blades as bodies: a rotor without blade DOFs is one
-    // rigid body, whose aerodynamics is the table's.
-    in.operation = read_operation(
-        *deck, o.cp_table, o.aero == driver::RotorAero::blade_elements && !blades_rigid, diags);
+    // The blade elements need the blades as bodies: a rotor without blade DOFs but with
+    // other DOFs is one rigid body, whose aerodynamics is the table's.
+    in.operation = read_operation(*deck, o.cp_table,
+                                  o.aero == driver::RotorAero::blade_elements &&
+                                      (!blades_rigid || !in.blades.empty()),
+                                  diags);
     if (auto yaw = in.dofs.find("YawDOF"); yaw != in.dofs.end() && yaw->second)
         in.yaw_spring = read_yaw_spring(*deck, diags);
     in.output_file = fs::path(o.output).filename().string();

@@ -980,7 +980,7 @@ private:
                     "blades\n"
                     "load blade_elements aero {\n"
                     "    wind = V_wind; pitch = pitch\n"
-                    "    hub = hub";
+                    "    hub = " << (flexible_blades() ? "hub" : "rotor");
             for (int k = 1; k <= d_.blades; ++k) out_ << "; blade" << k << " = blade" << k;
             out_ << "\n}\n";
             return;

@@ -164,7 +164,7 @@ def test_rotor_block_equals_sim_aero(models, cli, tmp_path):
 
 
 def test_rotor_block_needs_the_declaration(models, tmp_path):
-    with pytest.raises(yamsc.Error, match="declares no `load rotor_table` block"):
+    with pytest.raises(yamsc.Error, match="declares no `load rotor_table` or `load blade_elements` block"):
         yamsc.load(models / "double_pendulum.mbd",
                    aero=models / "data" / "Cp_Ct_Cq.NREL5MW.txt")
 

@@ -244,9 +244,9 @@ def load(path, sid=None, set=None, routines=None, external=None, aero=None):
     compile (default: all of ROUTINES; fewer compile faster for large models);
     external: the model's external functions, a shared library or a C/C++
     source (as --external; one implementation per function name and process);
-    aero: a Cp/Ct/Cq table for the model's `load rotor_table` block, closed
-    around the model as `yamsc sim --aero` closes it (its outputs follow the
-    model's). Raises yamsc.Error with the located diagnostics when the model has errors.
+    aero: a Cp/Ct/Cq table for the model's `load rotor_table` block, or an
+    AeroDyn file for its `load blade_elements`, closed around the model as
+    `yamsc sim --aero` closes it (its outputs follow the model's). Raises yamsc.Error with the located diagnostics when the model has errors.
     """
     return Model(_yamsc.load(str(path), _sid_spec(sid), _assignments(set, "set"),
                              list(routines or ()), str(external or ""), str(aero or "")))

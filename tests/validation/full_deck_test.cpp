@@ -35,6 +35,7 @@ convert_full_deck(const std::string& output, const std::string& cp_table,
     o.output = output;
     o.dofs = dofs;
     o.cp_table = cp_table;
+    o.aero = yamsc::driver::RotorAero::table; // these tests are the table rotor's
     std::ostringstream out, err;
     REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
     if (log) *log = out.str() + err.str();

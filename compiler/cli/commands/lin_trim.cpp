@@ -80,7 +80,8 @@ const char* point_help =
   --set name=v,..     parameter values (accept `deg`: --set theta=5deg)
   --sid body=file.sid the shape integrals of a flexible body with `symbolic modes`
   --external LIB      the model's external functions: lib.so, or file.c|file.cpp compiled
-  --aero TABLE        the quasi-steady rotor block from a Cp/Ct/Cq table (ROSCO's format)
+  --aero FILE         the rotor's data: a Cp/Ct/Cq table (ROSCO's format) for the
+                      model's `load rotor_table`, an AeroDyn file for `load blade_elements`
   --wind V            the wind at the point (the input a load block declares as its
                       wind; a --wind SPEC's value at t = 0)
   --json              JSON on stdout

@@ -89,7 +89,8 @@ Command sim_command() {
   --plot-channels a,b the channels to plot (default: those compared, or all)
   --linear            integrate the linear model about the operating point
   --at name=v,..      the operating point of --linear
-  --aero TABLE        the quasi-steady rotor block from a Cp/Ct/Cq table (ROSCO's format)
+  --aero FILE         the rotor's data: a Cp/Ct/Cq table (ROSCO's format) for the
+                      model's `load rotor_table`, an AeroDyn file for `load blade_elements`
   --wind SPEC         the wind input a load block declares: a speed, step:V0:V1:t=T,
                       or a CSV of time and speed
   --controller LIB    a DISCON controller library called at every step (RK4, ABM4)

@@ -35,30 +35,24 @@ std::pair<std::size_t, double> bracket(const std::vector<double>& x, double v) {
     return {i, (v - x[i]) / (x[i + 1] - x[i])};
 }
 
-/// The structural nodes of a blade as ElastoDyn loads them: those strictly
-/// inside the span, each carrying the load per length over its element (from
-/// the midpoints to its neighbours; the end elements reach the root and the
-/// tip). With ElastoDyn's discretization (`elements = N`, nodes at the element
-/// centres) each length is the element's, span / N.
+/// The structural nodes of a blade that take loads: those strictly inside its
+/// span (ElastoDyn's element centres with `elements = N`; it ignores loads at
+/// the root and tip nodes of its mesh), in span order.
 struct LoadedNode {
     std::size_t point;
-    double span, length;
+    double span;
 };
 
 std::vector<LoadedNode> loaded_nodes(const std::vector<runtime::BodyPoint>& points) {
-    std::vector<double> z;
-    for (const auto& p : points) z.push_back(p.origin.z());
-    const double tip = *std::max_element(z.begin(), z.end());
+    double tip = 0;
+    for (const auto& p : points) tip = std::max(tip, p.origin.z());
     std::vector<LoadedNode> nodes;
-    for (std::size_t i = 0; i < points.size(); ++i)
-        if (z[i] > 1e-9 * tip && z[i] < tip * (1 - 1e-9)) nodes.push_back({i, z[i], 0.0});
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const double z = points[i].origin.z();
+        if (z > 1e-9 * tip && z < tip * (1 - 1e-9)) nodes.push_back({i, z});
+    }
     std::sort(nodes.begin(), nodes.end(),
               [](const LoadedNode& a, const LoadedNode& b) { return a.span < b.span; });
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-        const double lo = i == 0 ? 0.0 : 0.5 * (nodes[i - 1].span + nodes[i].span);
-        const double hi = i + 1 == nodes.size() ? tip : 0.5 * (nodes[i].span + nodes[i + 1].span);
-        nodes[i].length = hi - lo;
-    }
     return nodes;
 }
 
@@ -70,14 +64,24 @@ struct BladeMap {
     std::vector<Matrix3d> node_in_root;          // curve and twist
     std::vector<double> aero_span;
     std::vector<LoadedNode> loaded;
+    bool rigid = false;               // a rigid blade body: its loads lumped at the AeroDyn nodes
+    std::vector<std::size_t> nearest; // per AeroDyn node: the structural node its load goes to
     std::size_t modes = 0;
 };
 
-BladeMap map_blade(const std::vector<BladeNode>& nodes, const BladeElementChannels::Blade& ch) {
-    if (ch.points.size() < 2)
-        throw std::invalid_argument("blade elements: a blade needs a flexible body with nodes "
-                                    "along its span (a beam)");
+/// A rigid blade's points: the AeroDyn nodes themselves, along its z axis.
+std::vector<runtime::BodyPoint> rigid_points(const std::vector<BladeNode>& nodes) {
+    std::vector<runtime::BodyPoint> points(nodes.size());
+    for (std::size_t j = 0; j < nodes.size(); ++j) points[j].origin = Vector3d(0, 0, nodes[j].span);
+    return points;
+}
+
+BladeMap map_blade(const std::vector<BladeNode>& nodes, BladeElementChannels::Blade& ch) {
     BladeMap m;
+    if (ch.points.size() < 2) { // a rigid blade body
+        ch.points = rigid_points(nodes);
+        m.rigid = true;
+    }
     std::vector<runtime::BodyPoint> sorted = ch.points;
     std::sort(sorted.begin(), sorted.end(),
               [](const runtime::BodyPoint& a, const runtime::BodyPoint& b) {
@@ -95,6 +99,13 @@ BladeMap map_blade(const std::vector<BladeNode>& nodes, const BladeElementChanne
         m.aero_span.push_back(n.span);
     }
     m.loaded = loaded_nodes(ch.points);
+    for (const BladeNode& n : nodes) {
+        std::size_t best = m.loaded.front().point;
+        for (const LoadedNode& l : m.loaded)
+            if (std::abs(l.span - n.span) < std::abs(ch.points[best].origin.z() - n.span))
+                best = l.point;
+        m.nearest.push_back(best);
+    }
     m.modes = ch.points.front().phi.size();
     return m;
 }
@@ -119,7 +130,7 @@ void read_frame(const double* v, runtime::BodyFrame& f, std::size_t modes) {
 class BladeElementBlock final : public runtime::LoadBlock {
 public:
     explicit BladeElementBlock(BladeElementSetup s) : s_(std::move(s)) {
-        const BladeElementChannels& c = s_.channels;
+        BladeElementChannels& c = s_.channels;
         if (c.blades.empty() || c.blades.size() > s_.rotor.blades.size())
             throw std::invalid_argument(
                 "blade elements: the model has " + std::to_string(c.blades.size()) +
@@ -136,6 +147,8 @@ public:
         ports_.inputs_read = {c.wind, c.pitch};
         frames_.resize(c.blades.size());
         body_loads_.resize(c.blades.size());
+        lumped_force_.resize(c.blades.size());
+        lumped_moment_.resize(c.blades.size());
         motion_.blades.resize(c.blades.size());
         for (std::size_t k = 0; k < c.blades.size(); ++k) {
             const std::size_t n = s_.rotor.blades[k].size();
@@ -202,8 +215,7 @@ public:
     }
 
 private:
-    /// Each blade's loads per length, interpolated at its structural nodes and
-    /// set there over their elements.
+    /// Each blade's loads into its mesh inputs.
     void write_loads(const RotorResult& res, double* loads) const {
         for (std::size_t k = 0; k < maps_.size(); ++k) {
             const BladeMap& m = maps_[k];
@@ -212,24 +224,58 @@ private:
             load.force.setZero();
             load.moment.setZero();
             load.modal.assign(m.modes, 0.0);
-            for (const LoadedNode& n : m.loaded) {
-                const auto [j, s] = bracket(m.aero_span, n.span);
-                auto per_length = [&](const NodeResult& a) {
-                    return std::pair<Vector3d, Vector3d>{a.bem.fx * a.x - a.bem.fy * a.y,
-                                                         a.bem.mz * a.z};
-                };
-                const auto [f0, m0] = per_length(nodes[j]);
-                const auto [f1, m1] = per_length(nodes[j + 1]);
-                runtime::add_point_load(frames_[k], s_.channels.blades[k].points[n.point],
-                                        ((1 - s) * f0 + s * f1) * n.length,
-                                        ((1 - s) * m0 + s * m1) * n.length, load);
-            }
+            lumped_loads(k, nodes, load);
             for (int c = 0; c < 3; ++c) {
                 loads[c] = load.force[c];
                 loads[3 + c] = load.moment[c];
             }
             for (std::size_t i = 0; i < m.modes; ++i) loads[frame_inputs + i] = load.modal[i];
             loads += frame_inputs + m.modes;
+        }
+    }
+
+    /// AeroDyn's loads as OpenFAST hands them to ElastoDyn: the loads per length
+    /// linear between the AeroDyn nodes, lumped to them (line2 to point), each
+    /// lumped load moved to the nearest structural node with the moment of the
+    /// offset (point to point), there set on the blade through the node's partial
+    /// velocities. A rigid blade takes them at the AeroDyn nodes themselves.
+    void lumped_loads(std::size_t k, const std::vector<NodeResult>& nodes,
+                      runtime::BodyLoad& load) const {
+        const BladeMap& m = maps_[k];
+        const auto& points = s_.channels.blades[k].points;
+        // Each AeroDyn node's lumped load, then each at its structural node.
+        std::vector<Vector3d>& force = lumped_force_[k];
+        std::vector<Vector3d>& moment = lumped_moment_[k];
+        force.assign(nodes.size(), Vector3d::Zero());
+        moment.assign(nodes.size(), Vector3d::Zero());
+        auto apply = [&](std::size_t j, const Vector3d& f, const Vector3d& mo) {
+            force[j] += f;
+            moment[j] += mo;
+        };
+        for (std::size_t j = 0; j + 1 < nodes.size(); ++j) {
+            const NodeResult& p = nodes[j];
+            const NodeResult& q = nodes[j + 1];
+            const double len = (q.position - p.position).norm();
+            const Vector3d fp = p.bem.fx * p.x - p.bem.fy * p.y,
+                           fq = q.bem.fx * q.x - q.bem.fy * q.y;
+            apply(j, len / 6.0 * (2.0 * fp + fq), len / 2.0 * p.bem.mz * p.z);
+            apply(j + 1, len / 6.0 * (fp + 2.0 * fq), len / 2.0 * q.bem.mz * q.z);
+        }
+        if (m.rigid) {
+            for (std::size_t j = 0; j < nodes.size(); ++j)
+                runtime::add_point_load(frames_[k], points[j], force[j], moment[j], load);
+            return;
+        }
+        // Gathered per structural node: the forces, and their moments about it.
+        for (const LoadedNode& n : m.loaded) {
+            const Vector3d at = runtime::point_motion(frames_[k], points[n.point]).r;
+            Vector3d f = Vector3d::Zero(), mo = Vector3d::Zero();
+            for (std::size_t j = 0; j < nodes.size(); ++j) {
+                if (m.nearest[j] != n.point) continue;
+                f += force[j];
+                mo += moment[j] + (nodes[j].position - at).cross(force[j]);
+            }
+            runtime::add_point_load(frames_[k], points[n.point], f, mo, load);
         }
     }
 
@@ -259,6 +305,7 @@ private:
     mutable RotorMotion motion_;
     mutable std::vector<runtime::BodyFrame> frames_;
     mutable std::vector<runtime::BodyLoad> body_loads_;
+    mutable std::vector<std::vector<Vector3d>> lumped_force_, lumped_moment_; // per blade, node
 };
 
 } // namespace
