@@ -80,8 +80,14 @@ std::string reduced_model(const std::string& name, bool generator, std::string& 
     return model;
 }
 
+/// The commands' outputs: one directory for the test (scratch_dir empties it).
+const std::string& run_dir() {
+    static const std::string dir = scratch_dir("aero_damping_run");
+    return dir;
+}
+
 std::string yamsc(const std::string& name, const std::string& args) {
-    const std::string dir = scratch_dir("aero_damping_run");
+    const std::string& dir = run_dir();
     const std::string out = dir + "/" + name + ".txt";
     INFO(args);
     REQUIRE(run(std::string(YAMSC_EXE) + " " + args + " > " + out + " 2> " + dir + "/" + name +
@@ -193,8 +199,8 @@ TEST_CASE("lin --trim --mbc3 with blade elements: the tower's fore-aft damping a
     const std::string sim_model = reduced_model("sim", false, aero_sim);
     char speed[64];
     std::snprintf(speed, sizeof speed, "psi'=%.10g", rated_speed);
-    const std::string point = lin_model + " --aero " + aero_lin + " --wind 16 --at " + speed +
-                              " --u pitch=0.2,gen_torque=43093.5";
+    const std::string point = lin_model + " --aero " + aero_lin + " --wind 16 --at \"" + speed +
+                              "\"" + " --u pitch=0.2,gen_torque=43093.5";
 
     // The trimmed point: pitch and deflections.
     const std::string trim = yamsc("trim", "trim " + point + " --adjust pitch --json");
@@ -242,7 +248,7 @@ TEST_CASE("lin --trim --mbc3 with blade elements: the tower's fore-aft damping a
     std::snprintf(pitch_u, sizeof pitch_u, "pitch=%.17g", pitch);
     const std::string sim = "sim " + sim_model + " --aero " + aero_sim + " --wind 16 --u " +
                             pitch_u + " --tmax 24 --dt 0.01 --method rk4 --dt-out 0.05 -o ";
-    const std::string dir = scratch_dir("aero_damping_run");
+    const std::string& dir = run_dir();
     yamsc("sim_ref", sim + dir + "/ref.csv --ic " + ic);
     yamsc("sim_moved", sim + dir + "/moved.csv --ic " + ic_moved);
     const std::vector<double> time = column(read_file(dir + "/ref.csv"), "time");
