@@ -194,8 +194,8 @@ TEST_CASE("blade elements linearized with a frozen wake: the aerodynamic damping
     // The tower's fore-aft damping is the rotor's thrust slope: positive, large.
     const auto fa = static_cast<std::size_t>(index_of(base.dof_names, "q_fa1"));
     CHECK(-c6[fa * n + fa] > 1e5);
-    CHECK(d56 < 1e-4);
-    CHECK(d67 < 1e-4);
+    CHECK(d56 < 1e-7); // measured 1.1e-10
+    CHECK(d67 < 1e-7); // measured 1.7e-9
     // The frozen wake is not the quasi-steady rotor: its loads answer the motion more.
     CHECK(quasi_steady > 0.05);
 }
