@@ -154,6 +154,20 @@ runtime::ModelView with_load_blocks(const Loaded& l, const runtime::ModelView& v
     }
 }
 
+BlockOptions linear_block_options(const driver::LinOptions& o) {
+    BlockOptions b = block_options(o);
+    b.frozen_wake = o.wake == driver::Wake::frozen;
+    return b;
+}
+
+runtime::TrimSettings trim_settings(const Loaded& l, const BlockOptions& b) {
+    runtime::TrimSettings s;
+    if (const model::Model* m = model_of(l); m && !b.aero.empty())
+        for (const model::LoadBlock& decl : m->loads)
+            if (decl.kind == model::LoadKind::blade_elements) s.relative_tolerance = 1e-6;
+    return s;
+}
+
 int wind_input(const Loaded& l, const runtime::ModelView& v) {
     if (const model::Model* m = model_of(l))
         for (const model::LoadBlock& decl : m->loads) {

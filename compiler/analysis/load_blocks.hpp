@@ -7,10 +7,12 @@
 // sim, batch, trim, lin, the sweeps and the Python module all come here.
 #include "analysis/loaded_model.hpp"
 #include "codegen/routines.hpp"
+#include "driver/commands.hpp"
 #include "driver/outputs.hpp"
 
 #include <yamsc/load_block.hpp>
 #include <yamsc/model_view.hpp>
+#include <yamsc/trim.hpp>
 
 #include <string>
 #include <vector>
@@ -20,12 +22,24 @@ namespace yamsc::analysis {
 /// What the command line gives the load blocks.
 struct BlockOptions {
     std::string aero; // --aero TABLE: the Cp/Ct/Cq table of the rotor_table blocks
+    /// Blade elements differentiated with a frozen wake, as OpenFAST linearizes
+    /// AeroDyn (`lin`'s default, --wake frozen); else the derivatives of the
+    /// quasi-steady loads, the BEM solved at every perturbed point (trim's
+    /// Newton, CVODE, `lin --wake quasi-steady`).
+    bool frozen_wake = false;
+    /// The blocks' central differences: each value v stepped by this times (1 + |v|).
+    double difference_step = 1e-6;
 };
 
 /// The block options of a command's options (sim, lin, trim: each has --aero).
 template <class Options> BlockOptions block_options(const Options& o) {
-    return {o.aero};
+    BlockOptions b;
+    b.aero = o.aero;
+    return b;
 }
+
+/// The block options of `lin`: its --wake too.
+BlockOptions linear_block_options(const driver::LinOptions& o);
 
 /// Whether the options ask for any load block.
 bool any_blocks(const BlockOptions& b);
@@ -48,6 +62,13 @@ runtime::ModelView with_load_blocks(const Loaded& l, const BlockOptions& b);
 /// The same for a view of `l`'s library at other parameters.
 runtime::ModelView with_load_blocks(const Loaded& l, const runtime::ModelView& v,
                                     const std::vector<double>& params, const BlockOptions& b);
+
+/// The trim's settings with the blocks the options supply closed around `l`:
+/// the default, or with blade elements a relative tolerance of 1e-6, as far as
+/// their loads are exact (AeroDyn's BEM solve stops within 1e-6 rad of the
+/// inflow angle's root, Brent's bracket; the loads are then exact to about 1e-6
+/// of their size, and Newton can get no nearer).
+runtime::TrimSettings trim_settings(const Loaded& l, const BlockOptions& b);
 
 /// The input `--wind` drives: the wind role of the model's first load block
 /// that has one (UserError naming the declaration to add without one).

@@ -199,13 +199,17 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     auto loaded = load(o.model, o.set, o.sid, false, err, outputs, routines, o.external);
     if (!loaded || refuse_without_dofs(*loaded, "lin", "linearize", err)) return 1;
     if (o.sweep) return campbell(*loaded, o, out);
-    const runtime::ModelView v = with_load_blocks(*loaded, block_options(o));
+    // The linear model's blocks differentiate as a linearization does (a
+    // frozen wake); the trim's Newton steps take the quasi-steady loads'.
+    const runtime::ModelView v = with_load_blocks(*loaded, linear_block_options(o));
     const int nq = v.nq, nu = v.nu;
     std::vector<double> q, qd, u;
     operating_point(*loaded, loaded->params, o.at, o.u, q, qd, u);
     if (!o.wind.empty()) set_wind_at_start(*loaded, v, u, o.wind);
     if (o.trim) {
-        const runtime::TrimResult r = trim_point(v, q, qd, u, o.hold, o.adjust);
+        const runtime::TrimResult r = trim_point(
+            any_blocks(block_options(o)) ? with_load_blocks(*loaded, block_options(o)) : v, q, qd,
+            u, o.hold, o.adjust, trim_settings(*loaded, block_options(o)));
         q = r.q;
         u = r.u;
     }

@@ -55,7 +55,8 @@ SweepPoints::SweepPoints(const Loaded& l, const LinOptions& o) : l_(l), o_(o) {
             throw UsageError("--sweep of the parameter " + name +
                              " with load blocks (--aero): a block is bound to the model's "
                              "parameters; sweep a rate or an input");
-        blocks_view_ = with_load_blocks(l, block_options(o));
+        blocks_view_ = with_load_blocks(l, linear_block_options(o));
+        if (o.trim) trim_view_ = with_load_blocks(l, block_options(o));
     }
 }
 
@@ -73,7 +74,9 @@ SweepPoint SweepPoints::at(double value) const {
     operating_point(l_, params, at, o_.u, p.q, p.qd, p.u);
     if (!o_.wind.empty()) set_wind_at_start(l_, p.view, p.u, o_.wind);
     if (o_.trim) {
-        const runtime::TrimResult r = trim_point(p.view, p.q, p.qd, p.u, o_.hold, o_.adjust);
+        const runtime::TrimResult r =
+            trim_point(trim_view_ ? *trim_view_ : p.view, p.q, p.qd, p.u, o_.hold, o_.adjust,
+                       trim_settings(l_, block_options(o_)));
         p.q = r.q;
         p.u = r.u;
     }

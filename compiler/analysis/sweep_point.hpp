@@ -40,6 +40,7 @@ private:
     std::string input_;    // or the input
     std::optional<SweepSchedule> schedule_;
     std::optional<runtime::ModelView> blocks_view_; // load blocks: the view closed once
+    std::optional<runtime::ModelView> trim_view_;   // and with quasi-steady derivatives
 };
 
 } // namespace yamsc::analysis

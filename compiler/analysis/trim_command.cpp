@@ -25,7 +25,8 @@ int trim(const TrimOptions& o, std::ostream& out, std::ostream& err) {
     std::vector<double> q, qd, u0;
     operating_point(*loaded, loaded->params, o.at, o.u, q, qd, u0);
     if (!o.wind.empty()) set_wind_at_start(*loaded, v, u0, o.wind);
-    const runtime::TrimResult r = trim_point(v, q, qd, u0, o.hold, o.adjust);
+    const runtime::TrimResult r =
+        trim_point(v, q, qd, u0, o.hold, o.adjust, trim_settings(*loaded, block_options(o)));
     const std::vector<double>& u = r.u;
     if (o.json) {
         std::vector<std::string> held;

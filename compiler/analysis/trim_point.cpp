@@ -27,7 +27,8 @@ std::size_t index_of(const std::string& name, const std::vector<std::string>& na
 runtime::TrimResult trim_point(const runtime::ModelView& view, const std::vector<double>& q,
                                const std::vector<double>& qd, const std::vector<double>& u,
                                const std::vector<std::string>& hold,
-                               const std::vector<std::string>& adjust) {
+                               const std::vector<std::string>& adjust,
+                               const runtime::TrimSettings& settings) {
     std::vector<bool> held(q.size(), false);
     runtime::TrimAdjustment adjustment;
     for (std::size_t i = 0; i < qd.size(); ++i) {
@@ -50,7 +51,7 @@ runtime::TrimResult trim_point(const runtime::ModelView& view, const std::vector
                         "): each adjusted input balances one of them (a DOF is held at the rate "
                         "--at gives it, e.g. --at \"psi'=1.2671\")");
     }
-    runtime::TrimResult r = runtime::trim(view, q, qd, u, held, 0.0, {}, adjustment);
+    runtime::TrimResult r = runtime::trim(view, q, qd, u, held, 0.0, settings, adjustment);
     if (r.converged) return r;
     std::string message = "trim did not converge after " + std::to_string(r.iterations) +
                           " Newton steps: max |F| over the free DOFs is " +

@@ -20,6 +20,7 @@ namespace yamsc::analysis {
 runtime::TrimResult trim_point(const runtime::ModelView& view, const std::vector<double>& q,
                                const std::vector<double>& qd, const std::vector<double>& u,
                                const std::vector<std::string>& hold,
-                               const std::vector<std::string>& adjust = {});
+                               const std::vector<std::string>& adjust = {},
+                               const runtime::TrimSettings& settings = {});
 
 } // namespace yamsc::analysis

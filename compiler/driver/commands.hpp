@@ -68,6 +68,12 @@ struct EvalOptions {
     bool compiled = false; // --compiled: from the compiled code (eval_compiled.cpp)
 };
 
+/// --wake of `lin`: how blade elements' loads are differentiated.
+enum class Wake {
+    frozen,       // the inductions' velocities held at the point's (OpenFAST's linearization)
+    quasi_steady, // the BEM solved again at every perturbed point
+};
+
 /// --format of `lin`: the modes as a table (or --json), or OpenFAST's .lin files too.
 enum class LinFormat { table, openfast_lin };
 
@@ -91,6 +97,7 @@ struct LinOptions {
     std::string plot;           // --plot: its SVG
     std::string aero;           // --aero TABLE: the quasi-steady rotor block (Cp/Ct/Cq table)
     std::string wind;           // --wind SPEC: V_wind at the operating point (its value at t = 0)
+    Wake wake = Wake::frozen;   // --wake: blade elements' wake in the linear model
 };
 
 struct TrimOptions {

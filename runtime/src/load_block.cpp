@@ -334,18 +334,24 @@ Vec LoadBlock::initial_states() const {
 }
 
 void LoadBlock::derivatives(double t, const double* z, const double* r, BlockJacobian& j) const {
-    const BlockPorts& p = ports();
-    const int nz = static_cast<int>(state_names().size()), nl = static_cast<int>(p.loads.size());
+    central_differences(*this, t, z, r, j, 1e-6);
+}
+
+void central_differences(const LoadBlock& block, double t, const double* z, const double* r,
+                         BlockJacobian& j, double relative_step) {
+    const BlockPorts& p = block.ports();
+    const int nz = static_cast<int>(block.state_names().size()),
+              nl = static_cast<int>(p.loads.size());
     const int nr = static_cast<int>(p.outputs_read.size() + p.inputs_read.size());
-    const int nout = static_cast<int>(output_names().size());
+    const int nout = static_cast<int>(block.output_names().size());
     Vec zv(z, z + nz), rv(r, r + nr), lp(at(nl)), lm(at(nl)), rp(at(nz)), rm(at(nz)), out(at(nout));
     // Column `col` of d(loads)/dv and d(rates)/dv by a central difference in v[i].
     auto column = [&](Vec& v, int i, std::vector<double>& dl, std::vector<double>& dr, int ncol) {
-        const double h = step(v[at(i)]), v0 = v[at(i)];
+        const double v0 = v[at(i)], h = relative_step * (1.0 + std::fabs(v0));
         v[at(i)] = v0 + h;
-        evaluate(t, zv.data(), rv.data(), lp.data(), rp.data(), out.data());
+        block.evaluate(t, zv.data(), rv.data(), lp.data(), rp.data(), out.data());
         v[at(i)] = v0 - h;
-        evaluate(t, zv.data(), rv.data(), lm.data(), rm.data(), out.data());
+        block.evaluate(t, zv.data(), rv.data(), lm.data(), rm.data(), out.data());
         v[at(i)] = v0;
         for (int k = 0; k < nl; ++k) dl[at(k * ncol + i)] = (lp[at(k)] - lm[at(k)]) / (2 * h);
         for (int k = 0; k < nz; ++k) dr[at(k * ncol + i)] = (rp[at(k)] - rm[at(k)]) / (2 * h);

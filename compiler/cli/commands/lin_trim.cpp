@@ -51,6 +51,10 @@ LinOptions parse_lin(const Args& a) {
     o.json = a.has("--json");
     o.aero = a.get("--aero");
     o.wind = a.get("--wind");
+    if (const std::string w = a.get("--wake"); w == "quasi-steady")
+        o.wake = driver::Wake::quasi_steady;
+    else if (!w.empty() && w != "frozen")
+        throw UsageError("--wake must be frozen or quasi-steady");
     if (o.sweep && o.json) throw UsageError("--sweep writes CSV, not --json");
     o.schedule = a.get("--schedule");
     if (!o.sweep && !o.schedule.empty()) throw UsageError("--schedule needs --sweep");
@@ -95,7 +99,7 @@ Command lin_command() {
         R"(yamsc lin MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--json]
                     [--trim [--hold dof,..] [--adjust input,..]]
                     [--mbc3 [--azimuths N] [--azimuth dof]]
-                    [--aero Cp_Ct_Cq.txt] [--wind V]
+                    [--aero Cp_Ct_Cq.txt|AeroDyn.dat [--wake frozen|quasi-steady]] [--wind V]
                     [--sweep NAME=FROM:STEP:TO [--schedule points.csv] [-o campbell.csv]
                                                [--plot campbell.svg]]
                     [--format openfast-lin -o case.lin [--azimuths N [--azimuth dof]]]
@@ -111,11 +115,14 @@ Command lin_command() {
   --schedule FILE     what moves with the swept value: a steady-state table
   -o FILE             the sweep's CSV, or the .lin file(s) of --format openfast-lin
   --plot FILE         the sweep's SVG (1P/3P/6P with --mbc3)
+  --wake W            blade elements (--aero AeroDyn.dat) linearized with a frozen
+                      wake as OpenFAST does (frozen, default) or quasi-steady
   --format F          table (default), or openfast-lin: OpenFAST's .lin files at -o
 Details: docs/cli.md, docs/linearization.md.
 )",
         {{"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot", "--hold", "--azimuths",
-          "--azimuth", "--aero", "--wind", "--adjust", "--schedule", "--format", "--external"},
+          "--azimuth", "--aero", "--wind", "--adjust", "--schedule", "--format", "--external",
+          "--wake"},
          {"--json", "--trim", "--mbc3"}},
         parse_lin, analysis::lin);
 }

@@ -46,6 +46,11 @@ public:
     virtual void derivatives(double t, const double* z, const double* r, BlockJacobian& j) const;
 };
 
+/// LoadBlock::derivatives' central differences of `block.evaluate`, each value
+/// v stepped by relative_step (1 + |v|) either way (the default: 1e-6).
+void central_differences(const LoadBlock& block, double t, const double* z, const double* r,
+                         BlockJacobian& j, double relative_step);
+
 using LoadBlocks = std::vector<std::shared_ptr<const LoadBlock>>;
 
 /// `base` with the blocks closed around it, in order: each around the view

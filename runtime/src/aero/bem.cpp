@@ -322,7 +322,12 @@ ElementSolution solve_element(const ElementInput& in, const BemOptions& opt, dou
     }
     a *= in.weight;
     ap *= in.weight;
+    element_loads(in, opt, rho, a, ap, s);
+    return s;
+}
 
+void element_loads(const ElementInput& in, const BemOptions& opt, double rho, double a, double ap,
+                   ElementSolution& s) {
     s.a = a;
     s.ap = ap;
     s.phi = inflow_angle(in.vx, in.vy, a, ap);
@@ -340,7 +345,6 @@ ElementSolution solve_element(const ElementInput& in, const BemOptions& opt, dou
     s.fx = s.cx * qc;
     s.fy = s.cy * qc;
     s.mz = s.cm * qc * in.chord;
-    return s;
 }
 
 } // namespace yamsc::aero

@@ -125,12 +125,16 @@ const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind
         auto& nodes = result_.blades[k];
         double r_tip = 0;
         for (const auto& n : nodes) r_tip = std::max(r_tip, n.r_local);
-        for (auto& n : nodes) {
+        for (std::size_t j = 0; j < nodes.size(); ++j) {
+            NodeResult& n = nodes[j];
             n.input.chi0 = chi0;
             n.input.psi = psi;
             n.input.tip_ratio = n.r_local / r_tip;
             n.input.weight = weight;
-            n.bem = solve_element(n.input, options_, rho);
+            if (frozen_.empty())
+                n.bem = solve_element(n.input, options_, rho);
+            else
+                frozen_element(n, frozen_[k][j]);
         }
         // AeroDyn's line-to-point transfer: loads per length linear between the
         // nodes, lumped to the nodes, then summed about the hub.
@@ -165,6 +169,20 @@ const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind
     }
     solved_ = true;
     return r;
+}
+
+void BemRotor::freeze_wake() {
+    if (!solved_) throw std::logic_error("blade elements: a frozen wake needs an evaluation first");
+    frozen_.assign(result_.blades.size(), {});
+    for (std::size_t k = 0; k < result_.blades.size(); ++k)
+        for (const NodeResult& n : result_.blades[k])
+            frozen_[k].push_back({n.bem.a * n.vx, n.bem.ap * n.vy});
+}
+
+void BemRotor::frozen_element(NodeResult& n, const Induced& induced) const {
+    const double a = nearly_zero(n.vx) ? 0.0 : induced.axial / n.vx;
+    const double ap = nearly_zero(n.vy) ? 0.0 : induced.tangential / n.vy;
+    element_loads(n.input, options_, input_.air_density, a, ap, n.bem);
 }
 
 } // namespace yamsc::aero

@@ -214,7 +214,33 @@ public:
         write_outputs(res, out);
     }
 
+    void derivatives(double t, const double* z, const double* r,
+                     runtime::BlockJacobian& j) const override {
+        if (s_.frozen_wake)
+            frozen_wake_derivatives(t, z, r, j);
+        else
+            runtime::central_differences(*this, t, z, r, j, s_.difference_step);
+    }
+
 private:
+    /// The inductions of the point (r, z) held while the loads are differenced;
+    /// the block's states, if any, are the point's too (z is not moved by the
+    /// read values' columns).
+    void frozen_wake_derivatives(double t, const double* z, const double* r,
+                                 runtime::BlockJacobian& j) const {
+        std::vector<double> loads(ports_.loads.size()), rates(state_names().size()),
+            out(names_.size());
+        evaluate(t, z, r, loads.data(), rates.data(), out.data());
+        rotor_->freeze_wake();
+        try {
+            runtime::central_differences(*this, t, z, r, j, s_.difference_step);
+        } catch (...) {
+            rotor_->release_wake();
+            throw;
+        }
+        rotor_->release_wake();
+    }
+
     /// Each blade's loads into its mesh inputs.
     void write_loads(const RotorResult& res, double* loads) const {
         for (std::size_t k = 0; k < maps_.size(); ++k) {

@@ -74,6 +74,13 @@ Residual bem_residual(const ElementInput& in, const BemOptions& opt, double phi)
 // the loads per length for air density rho. Allocates nothing.
 ElementSolution solve_element(const ElementInput& in, const BemOptions& opt, double rho);
 
+// The element at given inductions a, a' (after every correction): its inflow
+// angle, coefficients and loads per length, written into s (s's BEM root and
+// F are left as they are). solve_element ends with it; a frozen wake calls it
+// with the operating point's inductions.
+void element_loads(const ElementInput& in, const BemOptions& opt, double rho, double a, double ap,
+                   ElementSolution& s);
+
 // Prandtl's loss factor of AeroDyn (BEM_Mod 1): tip and hub constants
 // B (z_tip - z) / (2 z) and B (z - z_hub) / (2 z_hub) over |sin phi|.
 double prandtl_loss(const ElementInput& in, const BemOptions& opt, double phi);

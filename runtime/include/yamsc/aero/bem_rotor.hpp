@@ -64,6 +64,14 @@ public:
                                 bool warm_start);
     const RotorResult& result() const { return result_; }
 
+    /// Frozen wake, as OpenFAST linearizes AeroDyn (DBEMT_Mod -1, BEMT's
+    /// computeFrozenWake): each node's induced velocities, a Vx and a' Vy, are
+    /// held at those of the last evaluation; evaluate then solves no BEM and
+    /// takes a = (a Vx)_0 / Vx, a' = (a' Vy)_0 / Vy at the node's new inflow
+    /// (0 where that is 0), with no skew or low-TSR correction on top.
+    void freeze_wake();
+    void release_wake() { frozen_.clear(); }
+
     /// A node's orientation relative to its blade's root, from the blade file:
     /// curve angle about y, then the twist about -z (AeroDyn's EulerConstruct(0, crv, -twist)).
     static Eigen::Matrix3d node_axes_in_root(const BladeNode& node);
@@ -75,6 +83,11 @@ private:
     std::vector<std::vector<double>> z_local_;
     RotorResult result_;
     bool solved_ = false;
+    struct Induced {
+        double axial = 0, tangential = 0; // a Vx, a' Vy [m/s]
+    };
+    std::vector<std::vector<Induced>> frozen_; // [blade][node]; empty: the BEM is solved
+    void frozen_element(NodeResult& n, const Induced& induced) const;
 };
 
 } // namespace yamsc::aero

@@ -37,6 +37,13 @@ struct BladeElementSetup {
     RotorInput rotor;
     BladeElementChannels channels;
     std::vector<int> output_nodes; // AeroDyn nodes (1-based) with BkNj outputs, blade 1..3
+    /// How derivatives() takes the loads' derivatives: central differences of
+    /// relative step `difference_step`, with the BEM solved at every perturbed
+    /// point (quasi-steady: trim's Newton, CVODE) or, with `frozen_wake`, the
+    /// wake frozen at the point (the linear model, as OpenFAST linearizes
+    /// AeroDyn: BemRotor::freeze_wake).
+    bool frozen_wake = false;
+    double difference_step = 1e-6;
 };
 
 std::shared_ptr<const runtime::LoadBlock> blade_element_block(BladeElementSetup setup);
