@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 namespace {
@@ -44,16 +45,29 @@ std::string deck_copy(const std::string& name,
     return d;
 }
 
-/// The deck's model (flexible tower and blades), from-openfast's text.
-std::string five_mw_model(const std::string& deck) {
-    const std::string dir = test_support::scratch_dir("aero", "block_tower_model");
-    yamsc::driver::FromOpenFastOptions o;
-    o.deck = deck + "/NREL-5MW.fst";
-    o.output = dir + "/full.mbd";
-    std::ostringstream out, err;
-    REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
-    REQUIRE(test_support::read_file(o.output).find("    tower = tower\n") != std::string::npos);
-    return o.output;
+/// The deck as it is (TwrPotent 0, TwrAero False), copied once.
+const std::string& plain_deck() {
+    static const std::string dir = deck_copy("block_tower_plain", {});
+    return dir;
+}
+
+/// The deck's model (flexible tower and blades) from-openfast writes, loaded
+/// once: the AeroDyn file is the blocks' option, not the model's.
+const yamsc::analysis::Loaded& five_mw() {
+    static const std::optional<yamsc::analysis::Loaded> loaded = [] {
+        const std::string dir = test_support::scratch_dir("aero", "block_tower_model");
+        yamsc::driver::FromOpenFastOptions o;
+        o.deck = plain_deck() + "/NREL-5MW.fst";
+        o.output = dir + "/full.mbd";
+        std::ostringstream out, err;
+        REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
+        REQUIRE(test_support::read_file(o.output).find("    tower = tower\n") != std::string::npos);
+        auto l =
+            yamsc::analysis::load(o.output, {}, "", false, err, {}, yamsc::codegen::abi_routines());
+        REQUIRE_MESSAGE(l, err.str());
+        return l;
+    }();
+    return *loaded;
 }
 
 std::size_t index_of(const std::vector<std::string>& names, const std::string& name) {
@@ -66,18 +80,15 @@ std::size_t index_of(const std::vector<std::string>& names, const std::string& n
 } // namespace
 
 TEST_CASE("the blade-element block's tower: OpenFAST's disk-averaged wind change and the drag") {
-    const std::string plain = deck_copy("block_tower_plain", {});
+    const yamsc::analysis::Loaded& l = five_mw();
+    const std::string& plain = plain_deck();
     const std::string tower =
         deck_copy("block_tower_twr", {{"TwrPotent", "1"}, {"TwrAero", "True"}});
-    std::ostringstream err;
-    auto l = yamsc::analysis::load(five_mw_model(plain), {}, "", false, err, {},
-                                   yamsc::codegen::abi_routines());
-    REQUIRE_MESSAGE(l, err.str());
     yamsc::analysis::BlockOptions without, with;
     without.aero = plain + aerodyn_file;
     with.aero = tower + aerodyn_file;
-    const yamsc::runtime::ModelView v0 = yamsc::analysis::with_load_blocks(*l, without);
-    const yamsc::runtime::ModelView v1 = yamsc::analysis::with_load_blocks(*l, with);
+    const yamsc::runtime::ModelView v0 = yamsc::analysis::with_load_blocks(l, without);
+    const yamsc::runtime::ModelView v1 = yamsc::analysis::with_load_blocks(l, with);
     REQUIRE(v0.nu == v1.nu);
 
     // The mean deflections of twr_U8 (its last 20 s): tower and blades.
@@ -138,15 +149,11 @@ TEST_CASE("the blade-element block's tower drag reaches the tower as its distrib
     // the drag per length, linear between AeroDyn's tower nodes, and its moment
     // about the base; 16.85 kN and 683.2 kN m (test_tower_drag.cpp).
     const std::string drag = deck_copy("block_tower_drag", {{"TwrAero", "True"}});
-    std::ostringstream err;
-    auto l = yamsc::analysis::load(five_mw_model(drag), {}, "", false, err, {},
-                                   yamsc::codegen::abi_routines());
-    REQUIRE_MESSAGE(l, err.str());
+    const yamsc::analysis::Loaded& l = five_mw();
     yamsc::analysis::BlockOptions options;
     options.aero = drag + aerodyn_file;
-    const yamsc::runtime::ModelView& v = l->view;
-    const yamsc::runtime::LoadBlocks blocks =
-        yamsc::analysis::load_blocks(*l, v, l->params, options);
+    const yamsc::runtime::ModelView& v = l.view;
+    const yamsc::runtime::LoadBlocks blocks = yamsc::analysis::load_blocks(l, v, l.params, options);
     REQUIRE(blocks.size() == 1);
     const yamsc::runtime::LoadBlock& block = *blocks.front();
     const yamsc::runtime::BlockPorts& ports = block.ports();
