@@ -202,3 +202,32 @@ TEST_CASE("the blade-element block's tower drag reaches the tower as its distrib
     CHECK(tower[6] > 0.2 * force);
     CHECK(tower[6] < force);
 }
+
+TEST_CASE("the blade-element block stops at a tower strike, as AeroDyn does") {
+    // Blade 1 pointing down, bent downwind by its first flap mode (1 at the
+    // tip) until a node reaches the tower's surface: AeroDyn's "Tower strike".
+    const yamsc::analysis::Loaded& l = five_mw();
+    const std::string tower = deck_copy("block_tower_strike", {{"TwrPotent", "1"}});
+    yamsc::analysis::BlockOptions options;
+    options.aero = tower + aerodyn_file;
+    const yamsc::runtime::ModelView v = yamsc::analysis::with_load_blocks(l, options);
+    std::vector<double> q(static_cast<std::size_t>(v.nq), 0.0),
+        qd = q, u(static_cast<std::size_t>(v.nu), 0.0), y(static_cast<std::size_t>(v.ny));
+    q[index_of(v.dof_names, "psi")] = M_PI;
+    u[index_of(v.input_names, "V_wind")] = 8.0;
+    const std::size_t flap = index_of(v.dof_names, "q_b1_flap1");
+    auto strikes = [&](double tip) {
+        q[flap] = tip;
+        try {
+            v.outputs(0.0, q.data(), qd.data(), u.data(), y.data());
+        } catch (const std::invalid_argument& e) {
+            CHECK(std::string(e.what()).find("tower strike") != std::string::npos);
+            return true;
+        }
+        return false;
+    };
+    CHECK_FALSE(strikes(3.0));
+    bool struck = false;
+    for (double tip = 3.0; tip < 20 && !struck; tip += 0.25) struck = strikes(tip);
+    CHECK(struck);
+}
