@@ -59,6 +59,14 @@ std::shared_ptr<const runtime::LoadBlock> build_blade_elements(const model::Load
         b.points = body_points(m.bodies[static_cast<std::size_t>(m.body_index(decl.role(r)))]);
         s.channels.blades.push_back(std::move(b));
     }
+    if (!decl.role(Role::tower).empty()) {
+        const int role = static_cast<int>(Role::tower);
+        aero::TowerChannels& t = s.channels.tower;
+        t.outputs = indices(v.output_names, model::mesh_output_names(m, decl, role));
+        t.loads = indices(v.input_names, model::mesh_input_names(m, decl, role));
+        t.points =
+            body_points(m.bodies[static_cast<std::size_t>(m.body_index(decl.role(Role::tower)))]);
+    }
     return aero::blade_element_block(std::move(s));
 }
 

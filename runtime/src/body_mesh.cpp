@@ -61,6 +61,17 @@ Matrix3d angle_rates(const Vector3d& th) {
 
 } // namespace
 
+void read_body_frame(const double* v, std::size_t modes, BodyFrame& f) {
+    f.r = Vector3d(v[0], v[1], v[2]);
+    f.v = Vector3d(v[3], v[4], v[5]);
+    f.w = Vector3d(v[6], v[7], v[8]);
+    for (int axis = 0; axis < 3; ++axis)
+        f.R.col(axis) = Vector3d(v[9 + 3 * axis], v[10 + 3 * axis], v[11 + 3 * axis]);
+    constexpr std::size_t frame = 18;
+    f.q.assign(v + frame, v + frame + modes);
+    f.qd.assign(v + frame + modes, v + frame + 2 * modes);
+}
+
 BodyPoint blend(const BodyPoint& a, const BodyPoint& b, double s) {
     auto mix = [s](const std::vector<Vector3d>& x, const std::vector<Vector3d>& y) {
         std::vector<Vector3d> out(x.size());

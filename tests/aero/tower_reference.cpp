@@ -1,5 +1,6 @@
 #include "tower_reference.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -61,6 +62,18 @@ std::vector<double> azimuth_profile(const Table& run, const std::string& name, d
     }
     for (int b = 0; b < bins; ++b) sum[b] = count[b] > 0 ? sum[b] / count[b] : std::nan("");
     return sum;
+}
+
+double change_spread(const Table& without, const Table& with, const std::string& column,
+                     const std::vector<double>& bounds) {
+    auto change = [&](double from, double to) {
+        return statistics(with, column, from, to).mean - statistics(without, column, from, to).mean;
+    };
+    const double whole = change(bounds.front(), bounds.back());
+    double spread = 0;
+    for (std::size_t i = 0; i + 1 < bounds.size(); ++i)
+        spread = std::max(spread, std::abs(change(bounds[i], bounds[i + 1]) - whole));
+    return spread;
 }
 
 Effect effect(const Table& without, const Table& with, double from) {

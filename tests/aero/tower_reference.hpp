@@ -41,6 +41,12 @@ struct Effect {
     // it dips most) minus its value there without the tower.
     double root_flap_dip = 0;
 };
+// The largest difference between a column's change (with - without) over
+// [bounds.front(), bounds.back()) and its changes over the windows between
+// successive bounds: how well the runs know that change.
+double change_spread(const yamsc::table::Table& without, const yamsc::table::Table& with,
+                     const std::string& column, const std::vector<double>& bounds);
+
 Effect effect(const yamsc::table::Table& without, const yamsc::table::Table& with, double from);
 Effect effect(const std::string& without_csv, const std::string& with_csv, double from);
 

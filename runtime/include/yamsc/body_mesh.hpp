@@ -22,6 +22,11 @@ struct BodyFrame {
     std::vector<double> q, qd; // its modes' coordinates and rates
 };
 
+/// The frame's motion from a body role's mesh outputs (model/mesh_channels.hpp:
+/// r, v, w, the x, y, z axes, then `modes` coordinates and `modes` rates);
+/// `f`'s storage is reused.
+void read_body_frame(const double* outputs, std::size_t modes, BodyFrame& f);
+
 /// A point of the body: undeformed position in body axes and, on a flexible
 /// body, its shapes per mode (SID node terms: translation Φ with its
 /// second-order part Φ¹ (axial shortening), rotation Ψ).

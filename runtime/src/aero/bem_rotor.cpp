@@ -77,7 +77,7 @@ const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind
             const Vec rel = out.position - motion.hub_position;
             out.r_local = (rel - x_disk * x_disk.dot(rel)).norm();
             r_max = std::max(r_max, out.r_local);
-            const Vec v = wind - b.velocity[j];
+            const Vec v = (b.wind.empty() ? wind : b.wind[j]) - b.velocity[j];
             v_sum += v;
             ++count;
             out.vx = v.dot(out.x);

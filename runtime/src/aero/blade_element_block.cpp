@@ -2,6 +2,8 @@
 
 #include "yamsc/aero/bem_rotor.hpp"
 
+#include "block_tower.hpp"
+
 #include "euler.hpp"
 
 #include <algorithm>
@@ -117,16 +119,6 @@ Matrix3d pitched(double pitch) {
     return r;
 }
 
-void read_frame(const double* v, runtime::BodyFrame& f, std::size_t modes) {
-    f.r = Vector3d(v[0], v[1], v[2]);
-    f.v = Vector3d(v[3], v[4], v[5]);
-    f.w = Vector3d(v[6], v[7], v[8]);
-    for (int axis = 0; axis < 3; ++axis)
-        f.R.col(axis) = Vector3d(v[9 + 3 * axis], v[10 + 3 * axis], v[11 + 3 * axis]);
-    f.q.assign(v + frame_outputs, v + frame_outputs + modes);
-    f.qd.assign(v + frame_outputs + modes, v + frame_outputs + 2 * modes);
-}
-
 class BladeElementBlock final : public runtime::LoadBlock {
 public:
     explicit BladeElementBlock(BladeElementSetup s) : s_(std::move(s)) {
@@ -144,6 +136,7 @@ public:
             ports_.loads.insert(ports_.loads.end(), c.blades[k].loads.begin(),
                                 c.blades[k].loads.end());
         }
+        add_tower();
         ports_.inputs_read = {c.wind, c.pitch};
         frames_.resize(c.blades.size());
         body_loads_.resize(c.blades.size());
@@ -179,14 +172,14 @@ public:
         const double wind = inputs[0];
         const bool pitch_given = s_.channels.pitch >= 0;
         runtime::BodyFrame hub;
-        read_frame(r, hub, 0);
+        runtime::read_body_frame(r, 0, hub);
         motion_.hub_position = hub.r;
         motion_.hub_axes = hub.R;
         motion_.hub_angular_velocity = hub.w;
         for (std::size_t k = 0; k < maps_.size(); ++k) {
             const BladeMap& m = maps_[k];
             runtime::BodyFrame& f = frames_[k];
-            read_frame(blade_values, f, m.modes);
+            runtime::read_body_frame(blade_values, m.modes, f);
             blade_values += frame_outputs + 2 * m.modes;
             // The pitch input replaces the pitch the blade's frame has about its
             // z axis relative to the hub (AeroDyn reads it so, StorePitchAndAzimuth).
@@ -209,8 +202,11 @@ public:
             const double hub_radius = (frames_[0].r - hub.r).norm();
             rotor_.emplace(s_.rotor, hub_radius);
         }
+        tower_->read(blade_values, Vector3d(wind, 0, 0));
+        tower_->disturb(motion_, Vector3d(wind, 0, 0));
         const RotorResult& res = rotor_->evaluate(motion_, Vector3d(wind, 0, 0), true);
         write_loads(res, loads);
+        tower_->write_loads(loads + ports_.loads.size() - tower_->loads().size());
         write_outputs(res, out);
     }
 
@@ -239,6 +235,15 @@ private:
             throw;
         }
         rotor_->release_wake();
+    }
+
+    /// The tower role's channels after the blades' (tower_influence.hpp).
+    void add_tower() {
+        const TowerChannels& t = s_.channels.tower;
+        tower_.emplace(s_.rotor, t);
+        if (!tower_->used()) return;
+        ports_.outputs_read.insert(ports_.outputs_read.end(), t.outputs.begin(), t.outputs.end());
+        ports_.loads.insert(ports_.loads.end(), tower_->loads().begin(), tower_->loads().end());
     }
 
     /// Each blade's loads into its mesh inputs.
@@ -328,6 +333,7 @@ private:
     // Scratch and AeroDyn's constraint state (the last inflow angles): a block
     // belongs to one simulation, run by one thread.
     mutable std::optional<BemRotor> rotor_;
+    mutable std::optional<BlockTower> tower_;
     mutable RotorMotion motion_;
     mutable std::vector<runtime::BodyFrame> frames_;
     mutable std::vector<runtime::BodyLoad> body_loads_;

@@ -48,6 +48,8 @@ struct RotorMotion {
         std::vector<Eigen::Vector3d> position, velocity;         // per AeroDyn node
         std::vector<Eigen::Matrix3d> axes; // per node: the root axes turned by the node's
                                            // curve and twist (and its elastic rotation)
+        std::vector<Eigen::Vector3d> wind; // per node, if not empty: the wind there (the
+                                           // tower's influence), else the uniform wind
     };
     std::vector<Blade> blades;
 };

@@ -17,6 +17,15 @@
 
 namespace yamsc::aero {
 
+/// The optional tower role: its mesh outputs (18 + 2 modes; empty: no tower
+/// role), its mesh inputs (6 + modes) and its SID nodes along its z axis (none:
+/// a rigid tower). AeroDyn's tower nodes (TwrElev, above the ground) move with
+/// it, between its nodes; the tower's influence and drag follow them.
+struct TowerChannels {
+    std::vector<int> outputs, loads;
+    std::vector<runtime::BodyPoint> points;
+};
+
 /// Where the block meets the model: indices into the view's channels.
 struct BladeElementChannels {
     int wind = -1;  // input: hub-height wind speed along ground x [m/s]
@@ -30,6 +39,7 @@ struct BladeElementChannels {
             points; // its structural nodes (body axes, z along the span)
     };
     std::vector<Blade> blades;
+    TowerChannels tower;
 };
 
 struct BladeElementSetup {
