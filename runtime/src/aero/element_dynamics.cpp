@@ -97,17 +97,7 @@ void ElementDynamics::apply(BemRotor& rotor, const RotorMotion& motion,
                 ua_settings_.model == UnsteadyModel::oye
                     ? evaluate(af, ua_settings_, n.input.chord, u, oye_[e])
                     : evaluate(af, ua_settings_, n.input.chord, ua_dt_, u, mp_[e]);
-            ElementSolution& s = n.bem;
-            s.cl = y.cl;
-            s.cd = y.cd;
-            s.cm = options_.use_pitching_moment ? y.cm : 0.0;
-            const double cphi = std::cos(s.phi), sphi = std::sin(s.phi);
-            s.cx = s.cl * cphi + s.cd * sphi;
-            s.cy = s.cl * sphi - s.cd * cphi;
-            const double qc = 0.5 * rho * s.vrel * s.vrel * n.input.chord;
-            s.fx = s.cx * qc;
-            s.fy = s.cy * qc;
-            s.mz = s.cm * qc * n.input.chord;
+            set_coefficients(n.bem, {y.cl, y.cd, y.cm}, n.input.chord, rho, options_);
         }
     rotor.integrate(motion);
 }
