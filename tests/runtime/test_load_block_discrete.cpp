@@ -112,3 +112,25 @@ TEST_CASE("a block's discrete states advance once per step of RK4 and ABM4") {
         CHECK(r.output_row(r.time.size() - 1)[1] == doctest::Approx(1.0));
     }
 }
+
+TEST_CASE("with CVODE a block's discrete states advance between output points") {
+    const auto block = std::make_shared<Staircase>();
+    const ModelView v = close_blocks(free_mass(), {block});
+    SimulationOptions o;
+    o.t_end = 1.0;
+    o.dt = 0.05; // the output step: the discrete step
+    o.method = Method::cvode;
+    o.x0 = {0.0, 0.0};
+    o.u = {0.0};
+    const SimulationResult r = simulate(v, o);
+    CHECK(block->updates_ == 20);
+    CHECK(block->reads_ok_);
+    CHECK(r.output_row(r.time.size() - 1)[1] == doctest::Approx(1.0));
+    // The staircase's motion within CVODE's tolerance of the exact one (1/6 - dt/4 + dt^2/...).
+    double q = 0, qd = 0;
+    for (int k = 0; k < 20; ++k) {
+        q += qd * o.dt + 0.5 * k * o.dt * o.dt * o.dt;
+        qd += k * o.dt * o.dt;
+    }
+    CHECK(r.state_row(r.time.size() - 1)[0] == doctest::Approx(q).epsilon(0.02));
+}
