@@ -9,12 +9,13 @@
 //
 // Two kinds of states, as OpenFAST's modules have them:
 // - continuous states z (state_names, evaluate's rates): integrated with the
-//   structure, at every stage of every step (UA_Mod 6's x4, DBEMT_Mod 3);
+//   structure, at every stage of every step;
 // - discrete states, held by the block itself (has_discrete_states,
 //   update_discrete_states): constant within a step, so every stage of the step
 //   sees the values of its start, and advanced once per accepted step from the
-//   values the block reads at t and at t + dt (UA_Mod 3, DBEMT_Mod 1 and 2,
-//   updated as AeroDyn's UpdateStates). The fixed-step integrators (RK4, ABM4)
+//   values the block reads at t and at t + dt (AeroDyn's UpdateStates: UA and
+//   DBEMT, whose continuous models, UA_Mod 6 and DBEMT_Mod 3, AeroDyn also
+//   advances there with their own integrators). The fixed-step integrators (RK4, ABM4)
 //   call ModelView::update_discrete after each step; simulate() with CVODE calls
 //   it between output points (the output step is then the discrete step).
 //   A block with discrete states belongs to one simulation at a time.
