@@ -34,20 +34,6 @@ InductionFactors filtered_induction(const Dbemt& dbemt, const DbemtInput& u, con
     return induction_factors(dbemt.output(u, x, e), in.vx, in.vy);
 }
 
-void set_coefficients(ElementSolution& s, const Coefficients& c, double chord, double rho,
-                      const BemOptions& opt) {
-    s.cl = c.cl;
-    s.cd = c.cd;
-    s.cm = opt.use_pitching_moment ? c.cm : 0.0;
-    const double cphi = std::cos(s.phi), sphi = std::sin(s.phi);
-    s.cx = c.cl * cphi + c.cd * sphi;
-    s.cy = c.cl * sphi - c.cd * cphi;
-    const double qc = 0.5 * rho * s.vrel * s.vrel * chord;
-    s.fx = s.cx * qc;
-    s.fy = s.cy * qc;
-    s.mz = s.cm * qc * chord;
-}
-
 ElementSolution element_with_induction(const ElementInput& in, const BemOptions& opt, double rho,
                                        InductionFactors f, const ElementSolution& solved) {
     ElementSolution s;

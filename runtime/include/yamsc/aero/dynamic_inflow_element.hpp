@@ -6,7 +6,6 @@
 // blend, from which phi, alpha, Vrel and the loads follow.
 #include "yamsc/aero/bem.hpp"
 #include "yamsc/aero/dynamic_inflow.hpp"
-#include "yamsc/aero/polar.hpp"
 
 namespace yamsc::aero {
 
@@ -25,11 +24,6 @@ InductionFactors quasi_steady_induction(const ElementInput& in, const BemOptions
 InductionFactors filtered_induction(const Dbemt& dbemt, const DbemtInput& u, const DbemtState& x,
                                     std::size_t e, const ElementInput& in, const BemOptions& opt,
                                     const ElementSolution& solved);
-
-// The element's coefficients c (the polar's, or unsteady ones) at its phi and vrel:
-// cl, cd, cm (0 without UseBlCm), cx, cy and the loads per length for density rho.
-void set_coefficients(ElementSolution& s, const Coefficients& c, double chord, double rho,
-                      const BemOptions& opt);
 
 // The element with the inductions f (DBEMT's, or any) instead of the quasi-steady
 // ones: the skew redistribution (except at a fixed-induction tip or hub node), the
