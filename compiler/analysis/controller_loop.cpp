@@ -78,7 +78,7 @@ simulate_with_controller(const runtime::ModelView& v, const runtime::SimulationO
     const auto nq = static_cast<std::size_t>(v.nq);
     const runtime::TimeGrid grid(options.t_start, options.t_end, options.dt);
     const std::size_t stride = runtime::output_stride(options.dt, options.dt_out);
-    std::vector<double> x = options.x0, u(static_cast<std::size_t>(v.nu)),
+    std::vector<double> x = options.x0, x_start, u(static_cast<std::size_t>(v.nu)),
                         u_stage(static_cast<std::size_t>(v.nu)), y(static_cast<std::size_t>(v.ny));
     // What the actuators apply (the model's inputs), from --u at the start.
     runtime::ControllerDemands applied;
@@ -166,7 +166,15 @@ simulate_with_controller(const runtime::ModelView& v, const runtime::SimulationO
         const double dt = grid[k + 1] - t;
         applied.pitch = actuator_lag(from.pitch, to.pitch, dt, a.pitch_tau);
         applied.gen_torque = actuator_lag(from.gen_torque, to.gen_torque, dt, a.torque_tau);
+        if (v.update_discrete) x_start = x;
         stepper.step(t, dt, x.data());
+        if (v.update_discrete) {
+            // The blocks' discrete states, from t to t + dt (load_block.hpp).
+            std::vector<double> u_start(u_stage.size()), u_end(u_stage.size());
+            step_inputs(t, u_start.data());
+            step_inputs(t + dt, u_end.data());
+            v.update_discrete(t, x_start.data(), u_start.data(), t + dt, x.data(), u_end.data());
+        }
     }
     return result;
 }

@@ -112,9 +112,9 @@ private:
             diags_.warning(Kind::NotSupported, at("CompAero"),
                            "CompAero = " + switch_of("CompAero") +
                                ": AeroDyn's blade elements become the `blade_elements` block "
-                               "(`sim --aero` the AeroDyn file): steady BEM on the flexible "
-                               "blades; its dynamic inflow, unsteady aerodynamics and tower "
-                               "influence are not converted yet (docs/aerodynamics.md)");
+                               "(`sim --aero` the AeroDyn file): BEM on the blades, with the "
+                               "file's dynamic inflow, unsteady airfoils and tower influence "
+                               "(docs/aerodynamics.md)");
         } else {
             diags_.warning(Kind::NotSupported, at("CompAero"),
                            "CompAero = " + switch_of("CompAero") +

@@ -88,15 +88,26 @@ std::size_t simulate_fixed_step(const char* method, const ModelView& view,
         view.rhs(t, x, u_now.data(), xdot);
     };
 
-    std::vector<double> x = x0;
+    std::vector<double> x = x0, x_start;
+    std::vector<double> u_start(static_cast<std::size_t>(view.nu)), u_end(u_start.size());
     auto stepper = make(f, x.size());
     PointDerivative derivative(f, x.size());
     derivative.move_to(grid[0], x.data());
     if (observe && !observe(grid[0], x.data(), derivative)) return 0;
     for (std::size_t k = 1; k < grid.size(); ++k) {
         const double t = grid[k - 1];
+        if (view.update_discrete) x_start = x;
         stepper(t, grid[k] - t, x.data(), derivative.known());
         if (!all_finite(x)) throw_diverged(method, grid[k], dt);
+        if (view.update_discrete) {
+            // The blocks' discrete states, from t to grid[k] (load_block.hpp).
+            if (view.nu > 0) {
+                u(t, u_start.data());
+                u(grid[k], u_end.data());
+            }
+            view.update_discrete(t, x_start.data(), u_start.data(), grid[k], x.data(),
+                                 u_end.data());
+        }
         derivative.move_to(grid[k], x.data());
         if (observe && !observe(grid[k], x.data(), derivative)) return k;
     }

@@ -324,6 +324,16 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
         v.rhs_jacobian = [c](double t, const double* x, const double* u, double* J) {
             c.rhs_jacobian(t, x, u, J);
         };
+    if (base->update_discrete || block->has_discrete_states())
+        v.update_discrete = [c](double t, const double* x, const double* u, double t_next,
+                                const double* x_next, const double* u_next) {
+            if (c.base->update_discrete) c.base->update_discrete(t, x, u, t_next, x_next, u_next);
+            if (!c.block->has_discrete_states()) return;
+            const Vec r = c.reads(t, x, x + c.nq, u);
+            const Vec r_next = c.reads(t_next, x_next, x_next + c.nq, u_next);
+            c.block->update_discrete_states(t, c.states(x + c.nq), r.data(), t_next,
+                                            c.states(x_next + c.nq), r_next.data());
+        };
     return v;
 }
 

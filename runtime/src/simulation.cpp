@@ -148,11 +148,25 @@ SimulationResult simulate(const ModelView& view, const SimulationOptions& option
         CvodeOptions cvode;
         cvode.rtol = options.rtol;
         cvode.atol = options.atol;
-        // CVODE's output points are interpolated: it has no rhs there.
+        // CVODE's output points are interpolated: it has no rhs there. The
+        // blocks' discrete states advance between output points.
+        std::vector<double> x_last, u_last(u.size()), u_now(u.size());
+        double t_last = options.t_start;
         simulate_cvode(
             view, options.x0, inputs, options.t_end, options.dt,
-            [&](double t, const double* x) { return record(t, x, nullptr); }, cvode,
-            options.t_start);
+            [&](double t, const double* x) {
+                if (view.update_discrete && !x_last.empty()) {
+                    if (view.nu > 0) {
+                        inputs(t_last, u_last.data());
+                        inputs(t, u_now.data());
+                    }
+                    view.update_discrete(t_last, x_last.data(), u_last.data(), t, x, u_now.data());
+                }
+                x_last.assign(x, x + result.nx);
+                t_last = t;
+                return record(t, x, nullptr);
+            },
+            cvode, options.t_start);
     }
     return result;
 }

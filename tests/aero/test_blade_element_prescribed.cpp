@@ -40,7 +40,10 @@ TEST_CASE("every DOF off: the prescribed rigid rotor's blade elements match Open
     text = set_entry(text, "RotSpeed", "8.9885664");
     test_support::write_file(ed, text);
     const std::string ad = dir + "/deck/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat";
+    // The reference's quasi-steady BEM: no dynamic inflow, no unsteady airfoils.
     std::string aero = set_entry(test_support::read_file(ad), "NBlOuts", "9");
+    aero = set_entry(aero, "DBEMT_Mod", "0");
+    aero = set_entry(aero, "UA_Mod", "0");
     aero = std::regex_replace(aero, std::regex("\n[^\n]*BlOutNd"),
                               "\n3, 5, 7, 9, 11, 13, 15, 17, 18    BlOutNd");
     test_support::write_file(ad, aero);

@@ -148,7 +148,10 @@ TEST_CASE("the blade-element block's tower on the flexible turbine: OpenFAST's t
     const double added_theirs =
         added(theirs.thrust_deviation_without, theirs.thrust_deviation_with);
     MESSAGE("thrust fluctuation the tower adds " << added_mine << " (" << added_theirs << ") kN");
-    CHECK(mine.thrust_deviation_with > 3 * mine.thrust_deviation_without);
+    // With unsteady airfoils and dynamic inflow the thrust without the tower
+    // fluctuates more than OpenFAST's over these 50 s (1.3 vs 0.33 kN:
+    // docs/validation.md), so the tower's share is compared in quadrature only.
+    CHECK(mine.thrust_deviation_with > mine.thrust_deviation_without);
     CHECK(added_mine == doctest::Approx(added_theirs).epsilon(0.25));
     CHECK(mine.root_flap_dip == doctest::Approx(theirs.root_flap_dip).epsilon(0.25));
 }

@@ -6,6 +6,19 @@
 // states of its own if it needs them, and adds its loads to input channels of
 // the model; close_blocks() feeds them back, so the closed view is again a
 // ModelView that every integrator, `lin` and `trim` take as they take a model.
+//
+// Two kinds of states, as OpenFAST's modules have them:
+// - continuous states z (state_names, evaluate's rates): integrated with the
+//   structure, at every stage of every step;
+// - discrete states, held by the block itself (has_discrete_states,
+//   update_discrete_states): constant within a step, so every stage of the step
+//   sees the values of its start, and advanced once per accepted step from the
+//   values the block reads at t and at t + dt (AeroDyn's UpdateStates: UA and
+//   DBEMT, whose continuous models, UA_Mod 6 and DBEMT_Mod 3, AeroDyn also
+//   advances there with their own integrators). The fixed-step integrators (RK4, ABM4)
+//   call ModelView::update_discrete after each step; simulate() with CVODE calls
+//   it between output points (the output step is then the discrete step).
+//   A block with discrete states belongs to one simulation at a time.
 #include "yamsc/model_view.hpp"
 
 #include <memory>
@@ -44,6 +57,14 @@ public:
     /// d(loads, z')/d(z, r); central differences of evaluate unless the block
     /// knows them exactly.
     virtual void derivatives(double t, const double* z, const double* r, BlockJacobian& j) const;
+    /// Whether it holds discrete states (then closed views call update_discrete_states).
+    virtual bool has_discrete_states() const { return false; }
+    /// Advances its discrete states from t to t_next, once per accepted step,
+    /// from its states z and read values r at both times (AeroDyn's
+    /// UpdateStates(t, n, u(t), u(t + dt))). evaluate() then uses the new ones.
+    virtual void update_discrete_states(double /*t*/, const double* /*z*/, const double* /*r*/,
+                                        double /*t_next*/, const double* /*z_next*/,
+                                        const double* /*r_next*/) const {}
 };
 
 /// LoadBlock::derivatives' central differences of `block.evaluate`, each value
@@ -62,6 +83,9 @@ using LoadBlocks = std::vector<std::shared_ptr<const LoadBlock>>;
 /// base's outputs, read without q'' when the base has outputs_from_qdd).
 /// A closed view with states has rhs, rhs_jacobian, mass_matrix and outputs
 /// (it is integrated, not linearized): no forcing or jacobians.
+/// update_discrete: the blocks' in order (inner first), each reading the view
+/// it is closed around with the model's inputs (not the loads of the blocks
+/// closed after it); set when any block has discrete states.
 ModelView close_blocks(const ModelView& base, const LoadBlocks& blocks);
 
 } // namespace yamsc::runtime

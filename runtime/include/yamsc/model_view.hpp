@@ -48,6 +48,14 @@ struct ModelView {
     std::vector<std::string> block_state_names; // nz names
     std::vector<double> block_initial_states;   // nz values
 
+    // Discrete states of load blocks (LoadBlock::update_discrete_states): called
+    // once per accepted step from (t, x, u) to (t_next, x_next, u_next), after the
+    // integrator has computed x_next and before anything is evaluated at t_next.
+    // Empty when no block has discrete states.
+    std::function<void(double t, const double* x, const double* u, double t_next,
+                       const double* x_next, const double* u_next)>
+        update_discrete;
+
     int nx() const { return 2 * nq + nz; }
 };
 

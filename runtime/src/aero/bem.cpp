@@ -334,17 +334,21 @@ void element_loads(const ElementInput& in, const BemOptions& opt, double rho, do
     s.alpha = s.phi - in.theta;
     const double wx = in.vx * (1.0 - a), wy = in.vy * (1.0 + ap);
     s.vrel = std::sqrt(wx * wx + wy * wy);
-    const Coefficients c = lookup(*in.airfoil, s.alpha);
+    set_coefficients(s, lookup(*in.airfoil, s.alpha), in.chord, rho, opt);
+}
+
+void set_coefficients(ElementSolution& s, const Coefficients& c, double chord, double rho,
+                      const BemOptions& opt) {
     s.cl = c.cl;
     s.cd = c.cd;
     s.cm = opt.use_pitching_moment ? c.cm : 0.0;
     const double cphi = std::cos(s.phi), sphi = std::sin(s.phi);
     s.cx = c.cl * cphi + c.cd * sphi;
     s.cy = c.cl * sphi - c.cd * cphi;
-    const double qc = 0.5 * rho * s.vrel * s.vrel * in.chord;
+    const double qc = 0.5 * rho * s.vrel * s.vrel * chord;
     s.fx = s.cx * qc;
     s.fy = s.cy * qc;
-    s.mz = s.cm * qc * in.chord;
+    s.mz = s.cm * qc * chord;
 }
 
 } // namespace yamsc::aero

@@ -116,7 +116,6 @@ const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind
     const double tsr = v_dot_x == 0 ? 0.0 : omega * r_max / v_dot_x;
     const double weight = induction_weight(tsr);
 
-    Vec force = Vec::Zero(), moment = Vec::Zero();
     const double rho = input_.air_density;
     for (std::size_t k = 0; k < nb; ++k) {
         const Vec root_z = motion.blades[k].root_axes.col(2);
@@ -136,6 +135,29 @@ const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind
             else
                 frozen_element(n, frozen_[k][j]);
         }
+    }
+    RotorResult& r = result_;
+    r.r_max = r_max;
+    r.tsr = tsr;
+    r.skew = chi0;
+    r.v_avg_xh = v_dot_x;
+    integrate(motion);
+    solved_ = true;
+    return r;
+}
+
+} // namespace yamsc::aero
+
+namespace yamsc::aero {
+
+const RotorResult& BemRotor::integrate(const RotorMotion& motion) {
+    const Vec x_disk = motion.hub_axes.col(0);
+    const double omega = motion.hub_angular_velocity.dot(x_disk);
+    const double rho = input_.air_density;
+    Vec force = Vec::Zero(), moment = Vec::Zero();
+    const std::size_t nb = std::min(motion.blades.size(), result_.blades.size());
+    for (std::size_t k = 0; k < nb; ++k) {
+        const auto& nodes = result_.blades[k];
         // AeroDyn's line-to-point transfer: loads per length linear between the
         // nodes, lumped to the nodes, then summed about the hub.
         for (std::size_t j = 0; j + 1 < nodes.size(); ++j) {
@@ -150,15 +172,11 @@ const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind
                       (q.position - motion.hub_position).cross(lq) + len / 2.0 * (mp + mq);
         }
     }
-
     RotorResult& r = result_;
+    const double v_dot_x = r.v_avg_xh, r_max = r.r_max;
     r.fxh = force.dot(x_disk);
     r.mxh = moment.dot(x_disk);
     r.power = omega * r.mxh;
-    r.r_max = r_max;
-    r.tsr = tsr;
-    r.skew = chi0;
-    r.v_avg_xh = v_dot_x;
     if (std::abs(v_dot_x) < 0.04) {
         r.cp = r.ct = r.cq = 0;
     } else {
@@ -167,7 +185,6 @@ const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind
         r.cq = r.mxh / (q * r_max);
         r.ct = r.fxh / q;
     }
-    solved_ = true;
     return r;
 }
 

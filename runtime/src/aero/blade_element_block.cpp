@@ -3,7 +3,7 @@
 #include "yamsc/aero/bem_rotor.hpp"
 
 #include "block_tower.hpp"
-
+#include "element_dynamics.hpp"
 #include "euler.hpp"
 
 #include <algorithm>
@@ -143,8 +143,11 @@ public:
         lumped_force_.resize(c.blades.size());
         lumped_moment_.resize(c.blades.size());
         motion_.blades.resize(c.blades.size());
+        node_omega_.resize(c.blades.size());
+        dynamics_.emplace(s_.rotor);
         for (std::size_t k = 0; k < c.blades.size(); ++k) {
             const std::size_t n = s_.rotor.blades[k].size();
+            node_omega_[k].resize(n);
             motion_.blades[k].position.resize(n);
             motion_.blades[k].velocity.resize(n);
             motion_.blades[k].axes.resize(n);
@@ -166,10 +169,37 @@ public:
 
     void evaluate(double, const double*, const double* r, double* loads, double*,
                   double* out) const override {
+        const RotorResult* res = &solve(r, wind(r));
+        if (dynamics_->active()) res = &apply_dynamics();
+        write_loads(*res, loads);
+        tower_->write_loads(loads + ports_.loads.size() - tower_->loads().size());
+        write_outputs(*res, out);
+    }
+
+    bool has_discrete_states() const override { return dynamics_->active(); }
+
+    void update_discrete_states(double t, const double*, const double* r, double t_next,
+                                const double*, const double* r_next) const override {
+        update_dynamics(t_next - t, r, r_next);
+    }
+
+    void derivatives(double t, const double* z, const double* r,
+                     runtime::BlockJacobian& j) const override {
+        if (s_.frozen_wake)
+            frozen_wake_derivatives(t, z, r, j);
+        else
+            runtime::central_differences(*this, t, z, r, j, s_.difference_step);
+    }
+
+private:
+    double wind(const double* r) const { return r[ports_.outputs_read.size()]; }
+
+    /// The rotor solved quasi-steadily at the motion read in r and the wind
+    /// `wind_speed` (the steady BEM, AeroDyn's element solves and integrals).
+    const RotorResult& solve(const double* r, double wind_speed) const {
         const std::size_t hub_n = s_.channels.hub_outputs.size();
         const double* blade_values = r + hub_n;
         const double* inputs = r + ports_.outputs_read.size();
-        const double wind = inputs[0];
         const bool pitch_given = s_.channels.pitch >= 0;
         runtime::BodyFrame hub;
         runtime::read_body_frame(r, 0, hub);
@@ -195,6 +225,7 @@ public:
                 b.position[j] = pm.r + offset;
                 b.velocity[j] = pm.v + pm.w.cross(offset);
                 b.axes[j] = axes * m.node_in_root[j];
+                node_omega_[k][j] = pm.w;
             }
         }
         if (!rotor_) {
@@ -202,23 +233,27 @@ public:
             const double hub_radius = (frames_[0].r - hub.r).norm();
             rotor_.emplace(s_.rotor, hub_radius);
         }
-        tower_->read(blade_values, Vector3d(wind, 0, 0));
-        tower_->disturb(motion_, Vector3d(wind, 0, 0));
-        const RotorResult& res = rotor_->evaluate(motion_, Vector3d(wind, 0, 0), true);
-        write_loads(res, loads);
-        tower_->write_loads(loads + ports_.loads.size() - tower_->loads().size());
-        write_outputs(res, out);
+        tower_->read(blade_values, Vector3d(wind_speed, 0, 0));
+        tower_->disturb(motion_, Vector3d(wind_speed, 0, 0));
+        return rotor_->evaluate(motion_, Vector3d(wind_speed, 0, 0), true);
     }
 
-    void derivatives(double t, const double* z, const double* r,
-                     runtime::BlockJacobian& j) const override {
-        if (s_.frozen_wake)
-            frozen_wake_derivatives(t, z, r, j);
-        else
-            runtime::central_differences(*this, t, z, r, j, s_.difference_step);
+    /// The rotor just solved, with DBEMT's filtered inductions and UA's
+    /// coefficients of the block's discrete states.
+    const RotorResult& apply_dynamics() const {
+        dynamics_->apply(*rotor_, motion_, node_omega_);
+        return rotor_->result();
     }
 
-private:
+    /// AeroDyn's BEMT_UpdateStates from the values read at t (r) and t + dt (r_next).
+    void update_dynamics(double dt, const double* r, const double* r_next) const {
+        const double wind_t = wind(r), wind_next = wind(r_next);
+        dynamics_->update(dt, wind_t != wind_next, [&](bool at_next, bool with_wind_next) {
+            solve(at_next ? r_next : r, at_next || with_wind_next ? wind_next : wind_t);
+            return ElementDynamics::Solved{&*rotor_, &motion_, &node_omega_};
+        });
+    }
+
     /// The inductions of the point (r, z) held while the loads are differenced;
     /// the block's states, if any, are the point's too (z is not moved by the
     /// read values' columns).
@@ -338,6 +373,9 @@ private:
     mutable std::vector<runtime::BodyFrame> frames_;
     mutable std::vector<runtime::BodyLoad> body_loads_;
     mutable std::vector<std::vector<Vector3d>> lumped_force_, lumped_moment_; // per blade, node
+    mutable std::vector<std::vector<Vector3d>> node_omega_; // per AeroDyn node (ground axes)
+    // AeroDyn's discrete states (DBEMT, UA) and their updates.
+    mutable std::optional<ElementDynamics> dynamics_;
 };
 
 } // namespace

@@ -55,17 +55,7 @@ ElementSolution element_with_induction(const ElementInput& in, const BemOptions&
     s.phi = std::atan2(wx, wy);
     s.alpha = s.phi - in.theta;
     s.vrel = std::sqrt(wx * wx + wy * wy);
-    const Coefficients c = lookup(*in.airfoil, s.alpha);
-    s.cl = c.cl;
-    s.cd = c.cd;
-    s.cm = opt.use_pitching_moment ? c.cm : 0.0;
-    const double cphi = std::cos(s.phi), sphi = std::sin(s.phi);
-    s.cx = c.cl * cphi + c.cd * sphi;
-    s.cy = c.cl * sphi - c.cd * cphi;
-    const double qc = 0.5 * rho * s.vrel * s.vrel * in.chord;
-    s.fx = s.cx * qc;
-    s.fy = s.cy * qc;
-    s.mz = s.cm * qc * in.chord;
+    set_coefficients(s, lookup(*in.airfoil, s.alpha), in.chord, rho, opt);
     return s;
 }
 

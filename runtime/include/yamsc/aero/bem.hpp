@@ -10,6 +10,7 @@
 // the (coned) rotor axis downwind, y opposite to the blade's motion (from the
 // leading to the trailing edge), z along the blade.
 #include "yamsc/aero/airfoil.hpp"
+#include "yamsc/aero/polar.hpp"
 #include "yamsc/aero/rotor_input.hpp"
 
 namespace yamsc::aero {
@@ -80,6 +81,11 @@ ElementSolution solve_element(const ElementInput& in, const BemOptions& opt, dou
 // with the operating point's inductions.
 void element_loads(const ElementInput& in, const BemOptions& opt, double rho, double a, double ap,
                    ElementSolution& s);
+
+// The element's coefficients c (the polar's, or unsteady ones) at its phi and vrel:
+// cl, cd, cm (0 without UseBlCm), cx, cy and the loads per length for density rho.
+void set_coefficients(ElementSolution& s, const Coefficients& c, double chord, double rho,
+                      const BemOptions& opt);
 
 // Prandtl's loss factor of AeroDyn (BEM_Mod 1): tip and hub constants
 // B (z_tip - z) / (2 z) and B (z - z_hub) / (2 z_hub) over |sin phi|.

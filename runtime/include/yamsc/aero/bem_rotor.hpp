@@ -73,6 +73,12 @@ public:
     /// (0 where that is 0), with no skew or low-TSR correction on top.
     void freeze_wake();
     void release_wake() { frozen_.clear(); }
+    /// The rotor's loads and coefficients (RtFld*) again from the nodes' element
+    /// solutions, after a caller replaced them (dynamic inflow, unsteady
+    /// airfoil coefficients); `motion` as given to the last evaluate.
+    const RotorResult& integrate(const RotorMotion& motion);
+    /// The nodes' results, for such a replacement.
+    std::vector<std::vector<NodeResult>>& nodes() { return result_.blades; }
 
     /// A node's orientation relative to its blade's root, from the blade file:
     /// curve angle about y, then the twist about -z (AeroDyn's EulerConstruct(0, crv, -twist)).
