@@ -980,7 +980,8 @@ private:
                     "blades\n"
                     "load blade_elements aero {\n"
                     "    wind = V_wind; pitch = pitch\n"
-                    "    hub = " << (flexible_blades() ? "hub" : "rotor");
+                    "    hub = "
+                 << (flexible_blades() ? "hub" : "rotor");
             for (int k = 1; k <= d_.blades; ++k) out_ << "; blade" << k << " = blade" << k;
             if (flexible_tower()) out_ << "\n    tower = tower";
             out_ << "\n}\n";

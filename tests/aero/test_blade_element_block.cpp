@@ -5,6 +5,7 @@
 // yamsc/aero/rigid_rotor.hpp, which places the nodes from the geometry alone.
 #include "analysis/load_blocks.hpp"
 #include "analysis/loaded_model.hpp"
+#include "loaded_channels.hpp"
 #include "openfast/from_openfast.hpp"
 #include "test_files.hpp"
 
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace {
@@ -81,20 +83,13 @@ std::vector<Row> read_reference(const std::string& name) {
     return rows;
 }
 
-int index_of(const std::vector<std::string>& names, const std::string& name) {
-    for (std::size_t i = 0; i < names.size(); ++i)
-        if (names[i] == name) return static_cast<int>(i);
-    FAIL("no channel " << name);
-    return -1;
-}
-
 } // namespace
+
+using aero_test::index_of;
 
 TEST_CASE("the blade-element rotor on undeflected blades matches OpenFAST's rigid rotor") {
     const std::string path = model_with_blade_elements();
-    std::ostringstream err;
-    auto l = yamsc::analysis::load(path, {}, "", false, err, {}, yamsc::codegen::abi_routines());
-    REQUIRE_MESSAGE(l, err.str());
+    auto l = std::make_optional(aero_test::load_model(path));
     yamsc::analysis::BlockOptions blocks;
     blocks.aero = deck_copy() + "/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat";
     const yamsc::runtime::ModelView v = yamsc::analysis::with_load_blocks(*l, blocks);

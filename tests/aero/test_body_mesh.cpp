@@ -5,6 +5,7 @@
 // give the same generalized forces as the same load on that body.
 #include "analysis/body_points.hpp"
 #include "analysis/loaded_model.hpp"
+#include "loaded_channels.hpp"
 #include "model/mesh_channels.hpp"
 #include "test_files.hpp"
 
@@ -45,27 +46,16 @@ std::string write(const std::string& name, const std::string& text) {
     return path;
 }
 
-yamsc::analysis::Loaded load(const std::string& path) {
-    std::ostringstream err;
-    auto l = yamsc::analysis::load(path, {}, "", false, err, {}, yamsc::codegen::abi_routines());
-    REQUIRE_MESSAGE(l, err.str());
-    return std::move(*l);
-}
-
-int index_of(const std::vector<std::string>& names, const std::string& name) {
-    for (std::size_t i = 0; i < names.size(); ++i)
-        if (names[i] == name) return static_cast<int>(i);
-    FAIL("no channel " << name);
-    return -1;
-}
-
 } // namespace
+
+using aero_test::index_of;
 
 TEST_CASE("a point load through a body's mesh equals the load on a body jointed to its node") {
     const int node = 12; // a SID node of the blade (ElastoDyn's element centres are 2..18)
-    const auto a = load(write("mesh_a.mbd", "model mesh_a\n" + structure() +
-                                                "load blade_elements aero { wind = V_wind; "
-                                                "hub = hub; blade1 = blade1 }\n"));
+    const auto a =
+        aero_test::load_model(write("mesh_a.mbd", "model mesh_a\n" + structure() +
+                                                      "load blade_elements aero { wind = V_wind; "
+                                                      "hub = hub; blade1 = blade1 }\n"));
     std::string probe = "rigid probe { mass = 0 }\n"
                         "joint blade1.node(" +
                         std::to_string(node) +
@@ -76,7 +66,8 @@ TEST_CASE("a point load through a body's mesh equals the load on a body jointed 
     for (const char* fn : {"position", "velocity", "angular_velocity"})
         for (const char* c : {"x", "y", "z"})
             probe += std::string("output ") + fn + "_" + c + " = " + fn + "(probe)." + c + "\n";
-    const auto b = load(write("mesh_b.mbd", "model mesh_b\n" + structure() + probe));
+    const auto b =
+        aero_test::load_model(write("mesh_b.mbd", "model mesh_b\n" + structure() + probe));
 
     const ModelView& va = a.view;
     const ModelView& vb = b.view;
