@@ -42,7 +42,6 @@ std::shared_ptr<const runtime::LoadBlock> build_blade_elements(const model::Load
     aero::BladeElementSetup s;
     const model::LoadKindInfo& kind = model::load_kind_info(decl.kind);
     s.output_prefix = kind.output_name(decl.name, "");
-    s.output_nodes = rotor->output_nodes;
     s.rotor = std::move(*rotor);
     s.frozen_wake = c.options.frozen_wake;
     s.difference_step = c.options.difference_step;

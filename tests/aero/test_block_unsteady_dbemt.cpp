@@ -5,26 +5,12 @@
 // discrete states advanced once per step as a fixed-step simulation advances them
 // (ModelView::update_discrete).
 #include "block_unsteady_support.hpp"
+#include "run_error.hpp"
 
 #include <chrono>
 #include <cstdio>
 
 using namespace block_unsteady;
-
-namespace {
-
-/// mean |y - ref| / (max ref - min ref); the largest difference for a constant reference.
-double epsilon(const std::vector<double>& y, const std::vector<double>& ref) {
-    double sum = 0, worst = 0;
-    for (std::size_t i = 0; i < ref.size(); ++i) {
-        sum += std::abs(y[i] - ref[i]);
-        worst = std::max(worst, std::abs(y[i] - ref[i]));
-    }
-    const auto [lo, hi] = std::minmax_element(ref.begin(), ref.end());
-    return *hi > *lo ? sum / double(ref.size()) / (*hi - *lo) : worst;
-}
-
-} // namespace
 
 TEST_CASE("the blade-element block's dynamic inflow follows OpenFAST's DBEMT_Mod 2 wind step") {
     const std::string deck = deck_copy("block_unsteady_dbemt", {{"UA_Mod", "0   UA_Mod"}});
@@ -69,7 +55,7 @@ TEST_CASE("the blade-element block's dynamic inflow follows OpenFAST's DBEMT_Mod
     for (const std::string& c : names) {
         const std::vector<double>& r = ref.at(c);
         REQUIRE(got[c].size() == r.size());
-        const double eps = epsilon(got[c], r);
+        const double eps = aero_test::epsilon(got[c], r);
         std::printf("block dbemt2_U11to13 %-12s eps %.2e\n", c.c_str(), eps);
         CHECK_MESSAGE(eps < 0.02, c);
         // Measured 1e-7 to 1e-6 (the reference's printed precision); each of AeroDyn's

@@ -16,6 +16,7 @@
 
 #include "analysis/aerodyn_rotor.hpp"
 #include "analysis/compare.hpp"
+#include "run_error.hpp"
 #include "yamsc/aero/dynamic_inflow.hpp"
 #include "yamsc/aero/dynamic_inflow_element.hpp"
 #include "yamsc/aero/rigid_rotor.hpp"
@@ -150,18 +151,6 @@ Channels run(const RotorInput& input, DynamicInflow model, double dt, int steps,
     return c;
 }
 
-// mean |y - ref| / (max ref - min ref); for a constant reference (a cylinder node's
-// zero induction) the largest difference.
-double epsilon(const std::vector<double>& y, const std::vector<double>& ref) {
-    double sum = 0, worst = 0;
-    for (std::size_t i = 0; i < ref.size(); ++i) {
-        sum += std::abs(y[i] - ref[i]);
-        worst = std::max(worst, std::abs(y[i] - ref[i]));
-    }
-    const auto [lo, hi] = std::minmax_element(ref.begin(), ref.end());
-    return *hi > *lo ? sum / double(ref.size()) / (*hi - *lo) : worst;
-}
-
 } // namespace
 
 TEST_CASE("dbemt: a wind step on the rigid NREL 5-MW rotor, DBEMT_Mod 2, "
@@ -200,7 +189,7 @@ TEST_CASE("dbemt: a wind step on the rigid NREL 5-MW rotor, DBEMT_Mod 2, "
         channels.push_back({node + "TnInd_[-]", &y.tn[i]});
     }
     for (const auto& [name, value] : channels) {
-        const double eps = epsilon(*value, column(name));
+        const double eps = aero_test::epsilon(*value, column(name));
         std::printf("dbemt2_U11to13 %-16s eps %.2e\n", name.c_str(), eps);
         CHECK_MESSAGE(eps < issue_bound, name);
         CHECK_MESSAGE(eps < conventions_bound, name);

@@ -154,11 +154,11 @@ public:
         }
         for (const char* o : rotor_outputs) names_.push_back(s_.output_prefix + o);
         for (std::size_t k = 0; k < c.blades.size(); ++k)
-            for (std::size_t j = 0; j < s_.output_nodes.size(); ++j)
+            for (std::size_t j = 0; j < s_.rotor.output_nodes.size(); ++j)
                 for (const char* o : node_outputs)
                     names_.push_back(s_.output_prefix + "B" + std::to_string(k + 1) + "N" +
                                      std::to_string(j + 1) + o);
-        for (int node : s_.output_nodes)
+        for (int node : s_.rotor.output_nodes)
             if (node < 1 || node > static_cast<int>(s_.rotor.blades.front().size()))
                 throw std::invalid_argument("blade elements: output node " + std::to_string(node) +
                                             " is not a node of the blade");
@@ -352,7 +352,7 @@ private:
                                 res.mxh,         res.power, res.cp,       res.ct,         res.cq};
         out = std::copy(std::begin(rotor), std::end(rotor), out);
         for (std::size_t k = 0; k < maps_.size(); ++k)
-            for (int node : s_.output_nodes) {
+            for (int node : s_.rotor.output_nodes) {
                 const NodeResult& n = res.blades[k][static_cast<std::size_t>(node - 1)];
                 const double v[] = {n.bem.alpha * deg, n.bem.phi * deg, n.bem.vrel,
                                     n.bem.a,           n.bem.ap,        n.bem.cl,

@@ -46,7 +46,6 @@ struct BladeElementSetup {
     std::string output_prefix; // before each output's name (AeroDyn's: RtFldCp, B1N1Alpha, ...)
     RotorInput rotor;
     BladeElementChannels channels;
-    std::vector<int> output_nodes; // AeroDyn nodes (1-based) with BkNj outputs, blade 1..3
     /// How derivatives() takes the loads' derivatives: central differences of
     /// relative step `difference_step`, with the BEM solved at every perturbed
     /// point (quasi-steady: trim's Newton, CVODE) or, with `frozen_wake`, the
