@@ -59,6 +59,14 @@ Matrix3d angle_rates(const Vector3d& th) {
     return W;
 }
 
+/// ElastoDyn's small rotation (SmllRotTrans): the rotation of the unit quaternion
+/// (w, th/2), about th by about |th|, with no second-order twist.
+Matrix3d small_rotation(const Vector3d& th) {
+    const Vector3d h = 0.5 * th;
+    const double w = std::sqrt(std::max(0.0, 1 - h.squaredNorm()));
+    return Eigen::Quaterniond(w, h.x(), h.y(), h.z()).toRotationMatrix();
+}
+
 } // namespace
 
 void read_body_frame(const double* v, std::size_t modes, BodyFrame& f) {
@@ -100,7 +108,7 @@ PointMotion point_motion(const BodyFrame& f, const BodyPoint& pt) {
     m.r = f.r + rho;
     m.v = f.v + f.w.cross(rho) + f.R * pd;
     m.w = f.w + f.R * (W * thd);
-    m.R = f.R * about(0, th.x()) * about(1, th.y()) * about(2, th.z()) * pt.orientation;
+    m.R = f.R * small_rotation(th) * pt.orientation;
     return m;
 }
 

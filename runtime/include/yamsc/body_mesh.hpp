@@ -40,9 +40,14 @@ struct BodyPoint {
 /// `a` and `b` blended, (1 - s) a + s b: a point between two nodes.
 BodyPoint blend(const BodyPoint& a, const BodyPoint& b, double s);
 
-/// A point's motion: position, orientation (its axes in ground components:
-/// body axes turned by the elastic rotations about x, then y, then z, then the
-/// node's orientation), velocity and angular velocity, in ground axes.
+/// A point's motion: position, orientation, velocity and angular velocity, in
+/// ground axes. The orientation (its axes in ground components) is the body's
+/// axes turned by the elastic rotation θ = Ψ q, then the node's orientation. θ
+/// turns as ElastoDyn's SmllRotTrans turns a blade node: about θ by about |θ|,
+/// with no order of axes. A sequence (about x, then y) would add a twist θx θy / 2
+/// that no mode describes; the air sees it as angle of attack (at the NREL 5-MW
+/// tip, 0.04° once per revolution: 11 % of OoPDefl's azimuthal variation).
+/// Position, velocity and angular velocity are the derivation's own, to rounding.
 struct PointMotion {
     Eigen::Vector3d r, v, w;
     Eigen::Matrix3d R;
