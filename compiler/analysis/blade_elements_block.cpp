@@ -43,6 +43,8 @@ std::shared_ptr<const runtime::LoadBlock> build_blade_elements(const model::Load
     const model::LoadKindInfo& kind = model::load_kind_info(decl.kind);
     s.output_prefix = kind.output_name(decl.name, "");
     s.rotor = std::move(*rotor);
+    if (c.options.inflow_angle_tolerance > 0)
+        s.rotor.inflow_angle_tolerance = c.options.inflow_angle_tolerance;
     s.frozen_wake = c.options.frozen_wake;
     s.difference_step = c.options.difference_step;
     s.channels.wind = index_in(v.input_names, decl.role(Role::wind));

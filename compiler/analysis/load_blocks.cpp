@@ -155,7 +155,7 @@ runtime::ModelView with_load_blocks(const Loaded& l, const runtime::ModelView& v
 }
 
 BlockOptions linear_block_options(const driver::LinOptions& o) {
-    BlockOptions b = block_options(o);
+    BlockOptions b = trim_block_options(o);
     b.frozen_wake = o.wake == driver::Wake::frozen;
     return b;
 }

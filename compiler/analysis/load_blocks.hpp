@@ -29,6 +29,10 @@ struct BlockOptions {
     bool frozen_wake = false;
     /// The blocks' central differences: each value v stepped by this times (1 + |v|).
     double difference_step = 1e-6;
+    /// Blade elements: the BEM's inflow angle solved to this [rad] (0: AeroDyn's
+    /// 1e-6, as sim runs it); trim and lin solve it to round-off, so that their
+    /// Newton steps and difference quotients see smooth loads.
+    double inflow_angle_tolerance = 0;
 };
 
 /// The block options of a command's options (sim, lin, trim: each has --aero).
@@ -40,6 +44,13 @@ template <class Options> BlockOptions block_options(const Options& o) {
 
 /// The block options of `lin`: its --wake too.
 BlockOptions linear_block_options(const driver::LinOptions& o);
+
+/// The block options of a trim (`trim`, `lin --trim`, the sweeps' trims).
+template <class Options> BlockOptions trim_block_options(const Options& o) {
+    BlockOptions b = block_options(o);
+    b.inflow_angle_tolerance = 1e-13;
+    return b;
+}
 
 /// Whether the options ask for any load block.
 bool any_blocks(const BlockOptions& b);

@@ -208,8 +208,8 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     if (!o.wind.empty()) set_wind_at_start(*loaded, v, u, o.wind);
     if (o.trim) {
         const runtime::TrimResult r = trim_point(
-            any_blocks(block_options(o)) ? with_load_blocks(*loaded, block_options(o)) : v, q, qd,
-            u, o.hold, o.adjust, trim_settings(*loaded, block_options(o)));
+            any_blocks(block_options(o)) ? with_load_blocks(*loaded, trim_block_options(o)) : v, q,
+            qd, u, o.hold, o.adjust, trim_settings(*loaded, block_options(o)));
         q = r.q;
         u = r.u;
     }

@@ -56,7 +56,7 @@ SweepPoints::SweepPoints(const Loaded& l, const LinOptions& o) : l_(l), o_(o) {
                              " with load blocks (--aero): a block is bound to the model's "
                              "parameters; sweep a rate or an input");
         blocks_view_ = with_load_blocks(l, linear_block_options(o));
-        if (o.trim) trim_view_ = with_load_blocks(l, block_options(o));
+        if (o.trim) trim_view_ = with_load_blocks(l, trim_block_options(o));
     }
 }
 

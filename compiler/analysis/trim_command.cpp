@@ -21,7 +21,7 @@ int trim(const TrimOptions& o, std::ostream& out, std::ostream& err) {
     add_block_routines(block_options(o), false, routines);
     auto loaded = load(o.model, o.set, o.sid, false, err, {}, routines, o.external);
     if (!loaded || refuse_without_dofs(*loaded, "trim", "trim", err)) return 1;
-    const runtime::ModelView v = with_load_blocks(*loaded, block_options(o));
+    const runtime::ModelView v = with_load_blocks(*loaded, trim_block_options(o));
     std::vector<double> q, qd, u0;
     operating_point(*loaded, loaded->params, o.at, o.u, q, qd, u0);
     if (!o.wind.empty()) set_wind_at_start(*loaded, v, u0, o.wind);
@@ -37,6 +37,7 @@ int trim(const TrimOptions& o, std::ostream& out, std::ostream& err) {
             << ",\"inputs\":" << json::strings(v.input_names)
             << ",\"adjusted\":" << json::strings(o.adjust) << ",\"held\":" << json::strings(held)
             << ",\"residual\":" << json::array(r.residual) << ",\"iterations\":" << r.iterations
+            << ",\"discrete_passes\":" << r.discrete_passes
             << ",\"max_free_residual\":" << json::number(r.max_free_residual) << "}\n";
         return 0;
     }
@@ -44,7 +45,16 @@ int trim(const TrimOptions& o, std::ostream& out, std::ostream& err) {
     std::snprintf(line, sizeof line,
                   "trimmed in %d Newton steps: max |F| over the free DOFs %.3g (tolerance %.3g)\n",
                   r.iterations, r.max_free_residual, r.tolerance);
-    out << line << "dof                           q0             q0'  F (held: what holds it)\n";
+    out << line;
+    if (r.discrete_passes > 0) {
+        // Unsteady airfoils and dynamic inflow steady at the point (runtime/trim.hpp).
+        std::snprintf(line, sizeof line,
+                      "the blocks' discrete states (unsteady airfoils, dynamic inflow) settled "
+                      "at the point in %d passes\n",
+                      r.discrete_passes);
+        out << line;
+    }
+    out << "dof                           q0             q0'  F (held: what holds it)\n";
     for (std::size_t i = 0; i < r.q.size(); ++i) {
         std::snprintf(line, sizeof line, "%-16s %16.10g %15.10g  %.6g%s\n", v.dof_names[i].c_str(),
                       r.q[i], r.qd[i], r.residual[i], r.held[i] ? " (held)" : "");

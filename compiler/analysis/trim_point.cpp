@@ -53,8 +53,12 @@ runtime::TrimResult trim_point(const runtime::ModelView& view, const std::vector
     }
     runtime::TrimResult r = runtime::trim(view, q, qd, u, held, 0.0, settings, adjustment);
     if (r.converged) return r;
+    const std::string passes = r.discrete_passes > 0
+                                   ? " and " + std::to_string(r.discrete_passes) +
+                                         " passes settling the blocks' discrete states"
+                                   : "";
     std::string message = "trim did not converge after " + std::to_string(r.iterations) +
-                          " Newton steps: max |F| over the free DOFs is " +
+                          " Newton steps" + passes + ": max |F| over the free DOFs is " +
                           std::to_string(r.max_free_residual) + " (tolerance " +
                           std::to_string(r.tolerance) + "); residual by DOF:";
     for (std::size_t i = 0; i < r.q.size(); ++i) {

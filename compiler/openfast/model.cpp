@@ -94,6 +94,15 @@ private:
     bool flexible_blades() const { return openfast::flexible_blades(in_.dofs); }
     /// A body per blade (flexible, or rigid when every DOF is off): blade root loads.
     bool blade_bodies() const { return flexible_blades() || !in_.blades.empty(); }
+    /// In wind the blades turn with the controller's pitch, as ElastoDyn turns them
+    /// with ServoDyn's BlPitchCom; otherwise they sit at the deck's BlPitch.
+    bool pitched_by_input() const { return in_.operation && blade_bodies(); }
+    /// Blade k's pitch in the model's expressions ("" when it is 0).
+    std::string blade_pitch(int k) const {
+        if (pitched_by_input()) return "pitch";
+        const std::string name = "BlPitch" + std::to_string(k);
+        return v(name) != 0 ? name : "";
+    }
     double v(const std::string& key) const { return d_[key]; }
     /// The rotating body the generator torque acts on and the rotor hangs from.
     std::string shaft_body() const {
@@ -218,7 +227,7 @@ private:
             for (int k = 1; k <= d_.blades; ++k) {
                 const std::string n = std::to_string(k);
                 param_deg("PreCone" + n, v("PreCone" + n), "cone of blade " + n + "; > 0 downwind");
-                if (v("BlPitch" + n) != 0)
+                if (!pitched_by_input() && v("BlPitch" + n) != 0)
                     param_deg("BlPitch" + n, v("BlPitch" + n), "pitch of blade " + n);
                 if (flexible_blades() && v("TipMass" + n) != 0)
                     param("TipMass" + n, v("TipMass" + n),
@@ -280,7 +289,14 @@ private:
         out_ << "\n# ---- loads (inputs; 0 unless given, e.g. `yamsc sim --u thrust=8e5`)\n";
         if (in_.operation) {
             input("V_wind", "hub-height wind speed [m/s] (`--wind`)");
-            input("pitch", "collective blade pitch of the rotor block [rad] (the controller's)");
+            if (pitched_by_input())
+                // ElastoDyn without PitchDOF takes the pitch as prescribed and leaves its
+                // rates out of the blades' motion: pitch' and pitch'' stay 0.
+                input("pitch order 2", "collective blade pitch [rad] (the controller's): the "
+                                       "blades turn with it; pitch', pitch'' 0 as in ElastoDyn");
+            else
+                input("pitch",
+                      "collective blade pitch of the rotor block [rad] (the controller's)");
         }
         const std::string added = in_.operation ? " (`--aero` adds the table's)" : "";
         input("thrust", "rotor thrust at the apex along the shaft [N]" + added);
@@ -474,7 +490,7 @@ private:
             if (k > 1) steps = "rotate x " + mbd_number(360.0 * (k - 1) / d_.blades) + " deg; ";
             steps += "rotate y PreCone" + n + "; at (0, 0, HubRad)";
             // ElastoDyn pitches a blade about its -z axis (towards feather).
-            if (v("BlPitch" + n) != 0) steps += "; rotate z -BlPitch" + n;
+            if (!blade_pitch(k).empty()) steps += "; rotate z -" + blade_pitch(k);
             out_ << "joint " << rotor_name << " -> blade" << n << " { " << steps << " }\n";
             if (flexible_blades() && v("TipMass" + n) != 0)
                 out_ << "rigid tip_mass" << n << " { mass = TipMass" << n << " }\njoint blade" << n
@@ -756,8 +772,8 @@ private:
                 dy += term((*shapes[m])[1], q);
             }
             const std::string n = std::to_string(k);
-            const std::string pitch = "BlPitch" + n;
-            if (v(pitch) == 0) {
+            const std::string pitch = blade_pitch(k);
+            if (pitch.empty()) {
                 output("OoPDefl" + n, strip(dx), "m");
                 output("IPDefl" + n, strip(dy), "m");
             } else {
@@ -832,14 +848,15 @@ private:
         // Blade 1 root (point S(0)): b = the blade's pitched axes, c = before the pitch.
         if (blade_bodies()) {
             const std::string m = "reaction_moment(blade1)";
-            if (v("BlPitch1") != 0) {
+            const std::string pitch = blade_pitch(1);
+            if (!pitch.empty()) {
                 output("RootMxc1",
-                       "-(" + m + ".x * cos(BlPitch1) + " + m +
-                           ".y * sin(BlPitch1)) / 1000 in blade1",
+                       "-(" + m + ".x * cos(" + pitch + ") + " + m + ".y * sin(" + pitch +
+                           ")) / 1000 in blade1",
                        "kN m");
                 output("RootMyc1",
-                       "-(" + m + ".y * cos(BlPitch1) - " + m +
-                           ".x * sin(BlPitch1)) / 1000 in blade1",
+                       "-(" + m + ".y * cos(" + pitch + ") - " + m + ".x * sin(" + pitch +
+                           ")) / 1000 in blade1",
                        "kN m");
             } else {
                 output("RootMxc1", "-" + m + ".x / 1000 in blade1", "kN m");

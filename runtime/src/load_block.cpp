@@ -334,6 +334,11 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
             c.block->update_discrete_states(t, c.states(x + c.nq), r.data(), t_next,
                                             c.states(x_next + c.nq), r_next.data());
         };
+    if (v.update_discrete)
+        v.reset_discrete = [c] {
+            if (c.base->reset_discrete) c.base->reset_discrete();
+            c.block->reset_discrete_states();
+        };
     return v;
 }
 

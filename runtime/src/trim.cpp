@@ -21,8 +21,12 @@ public:
 
     const std::vector<double>& at(const std::vector<double>& q, const std::vector<double>& u) {
         v_.forcing(t_, q.data(), qd_.data(), inputs(u), F_.data());
+        if (!offset_.empty())
+            for (std::size_t i = 0; i < F_.size(); ++i) F_[i] += offset_[i];
         return F_;
     }
+    /// Added to every F from now on (constant in q and u).
+    void set_offset(std::vector<double> offset) { offset_ = std::move(offset); }
     /// ∂F/∂q and ∂F/∂u at (q, u), in dq() and du().
     void differentiate(const std::vector<double>& q, const std::vector<double>& u) {
         v_.jacobians(t_, q.data(), qd_.data(), inputs(u), dq_.data(), dqd_.data(), du_.data());
@@ -37,7 +41,7 @@ private:
     const ModelView& v_;
     const std::vector<double>& qd_;
     double t_;
-    std::vector<double> F_;
+    std::vector<double> F_, offset_;
     RowMajor dq_, dqd_, du_;
 };
 
@@ -98,6 +102,63 @@ Unknowns unknowns_of(const ModelView& view, const std::vector<bool>& held,
     return x;
 }
 
+/// Newton's method on `x`'s unknowns from r's point (r.tolerance set).
+void newton(const Unknowns& x, Forces& forces, const TrimSettings& settings, TrimResult& r);
+
+/// The view's discrete states from a run's start, advanced at r's point, which
+/// stands still.
+void settle_discrete_states(const ModelView& view, const TrimResult& r, double t,
+                            const TrimSettings& settings) {
+    view.reset_discrete();
+    std::vector<double> state(r.q);
+    state.insert(state.end(), r.qd.begin(), r.qd.end());
+    const double* u = r.u.empty() ? nullptr : r.u.data();
+    const auto steps =
+        static_cast<long>(std::ceil(settings.discrete_settle_time / settings.discrete_step));
+    for (long k = 0; k < steps; ++k)
+        view.update_discrete(t, state.data(), u, t + settings.discrete_step, state.data(), u);
+}
+
+/// The largest change of an unknown from `a` to `b`, relative to max(1, its size).
+double largest_change(const Unknowns& x, const TrimResult& a, const TrimResult& b) {
+    double change = 0;
+    for (Eigen::Index k = 0; k < x.size(); ++k) {
+        const double after = x.value(k, b.q, b.u);
+        change = std::max(change, std::fabs(after - x.value(k, a.q, a.u)) /
+                                      std::max(1.0, std::fabs(after)));
+    }
+    return change;
+}
+
+/// The point where the blocks' discrete states are steady as well. Their settled
+/// forces are not smooth enough in (q, u) for Newton with the states held (a
+/// held unsteady airfoil answers a new angle of attack with its transient), so
+/// Newton solves the quasi-steady forces plus the defect the settled states add
+/// at the last point; the defect varies slowly with the point.
+void trim_with_discrete_states(const ModelView& view, const Unknowns& x, Forces& forces, double t,
+                               const TrimSettings& settings, TrimResult& r) {
+    bool settled = false;
+    while (r.converged && !settled && r.discrete_passes < settings.max_discrete_passes) {
+        settle_discrete_states(view, r, t, settings);
+        forces.set_offset({});
+        std::vector<double> defect = forces.at(r.q, r.u);
+        view.reset_discrete();
+        const std::vector<double>& quasi_steady = forces.at(r.q, r.u);
+        for (std::size_t i = 0; i < defect.size(); ++i) defect[i] -= quasi_steady[i];
+        forces.set_offset(std::move(defect));
+        const TrimResult before = r;
+        ++r.discrete_passes;
+        newton(x, forces, settings, r);
+        settled = largest_change(x, before, r) <= settings.discrete_tolerance;
+    }
+    // The blocks keep the states of the point; its residual is theirs.
+    settle_discrete_states(view, r, t, settings);
+    forces.set_offset({});
+    r.residual = forces.at(r.q, r.u);
+    r.max_free_residual = x.max_residual(r.residual);
+    r.converged = r.converged && settled;
+}
+
 } // namespace
 
 TrimResult trim(const ModelView& view, const std::vector<double>& q0,
@@ -122,13 +183,24 @@ TrimResult trim(const ModelView& view, const std::vector<double>& q0,
     r.u = u0;
     r.held = held;
     Forces forces(view, r.qd, t);
+    r.tolerance = settings.relative_tolerance * std::max(1.0, x.max_residual(forces.at(r.q, r.u)));
+    if (view.update_discrete && view.reset_discrete) view.reset_discrete();
+    newton(x, forces, settings, r);
+    if (view.update_discrete && view.reset_discrete)
+        trim_with_discrete_states(view, x, forces, t, settings, r);
+    return r;
+}
+
+namespace {
+
+void newton(const Unknowns& x, Forces& forces, const TrimSettings& settings, TrimResult& r) {
     double norm = x.max_residual(forces.at(r.q, r.u));
-    r.tolerance = settings.relative_tolerance * std::max(1.0, norm);
+    const int first = r.iterations;
     const Eigen::Index n = x.size();
     const auto m = static_cast<Eigen::Index>(x.rows.size());
     bool at_round_off = false;
     std::vector<double> trial_q, trial_u;
-    while (norm > r.tolerance && r.iterations < settings.max_iterations) {
+    while (norm > r.tolerance && r.iterations - first < settings.max_iterations) {
         const std::vector<double> F = forces.at(r.q, r.u);
         forces.differentiate(r.q, r.u);
         Eigen::MatrixXd J(m, n);
@@ -180,7 +252,8 @@ TrimResult trim(const ModelView& view, const std::vector<double>& q0,
     r.residual = forces.at(r.q, r.u);
     r.max_free_residual = x.max_residual(r.residual);
     r.converged = r.max_free_residual <= r.tolerance || at_round_off;
-    return r;
 }
+
+} // namespace
 
 } // namespace yamsc::runtime

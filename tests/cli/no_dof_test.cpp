@@ -232,8 +232,9 @@ TEST_CASE("an OpenFAST deck with every ElastoDyn DOF off (--dofs): the rotor tur
     REQUIRE(exit_status(yamsc + " from-openfast " + deck + "/NREL-5MW.fst --dofs " + off + " -o " +
                         model + " > /dev/null 2>&1") == 0);
     check_rigid_rotor(model, 0, 8.9836); // the deck's Azimuth and RotSpeed
-    // No pitch here: the blade and its cone axes are one.
-    CHECK(read_file(model).find("joint rotor -> blade1 { rotate y PreCone1; at (0, 0, HubRad) }") !=
+    // A full deck: the blades turn with the controller's pitch input (0 here, as BlPitch).
+    CHECK(read_file(model).find(
+              "joint rotor -> blade1 { rotate y PreCone1; at (0, 0, HubRad); rotate z -pitch }") !=
           std::string::npos);
 }
 

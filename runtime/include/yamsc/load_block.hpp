@@ -65,6 +65,9 @@ public:
     virtual void update_discrete_states(double /*t*/, const double* /*z*/, const double* /*r*/,
                                         double /*t_next*/, const double* /*z_next*/,
                                         const double* /*r_next*/) const {}
+    /// Forgets its discrete states, as at the start of a run (trim settles them
+    /// at its point from there).
+    virtual void reset_discrete_states() const {}
 };
 
 /// LoadBlock::derivatives' central differences of `block.evaluate`, each value

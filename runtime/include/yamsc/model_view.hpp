@@ -55,6 +55,9 @@ struct ModelView {
     std::function<void(double t, const double* x, const double* u, double t_next,
                        const double* x_next, const double* u_next)>
         update_discrete;
+    // Back to the discrete states of a run's start (LoadBlock::reset_discrete_states);
+    // set with update_discrete.
+    std::function<void()> reset_discrete;
 
     int nx() const { return 2 * nq + nz; }
 };

@@ -29,6 +29,18 @@ struct TrimSettings {
     /// times max(1, max |q|): F is then at its floating-point floor.
     double step_tolerance = 1e-13;
     int max_iterations = 50;
+    /// Load blocks with discrete states (unsteady airfoils, dynamic inflow):
+    /// they are settled at the point, advanced in steps of `discrete_step` for
+    /// `discrete_settle_time` as if time went on with the point standing still.
+    /// Newton solves the quasi-steady equations (the blocks' states reset) plus
+    /// the settled minus the quasi-steady forces of the last point (a defect
+    /// correction), until a pass moves no unknown by more than
+    /// `discrete_tolerance` times max(1, its size), at most
+    /// `max_discrete_passes` passes.
+    double discrete_step = 0.00625;   // [s]
+    double discrete_settle_time = 10; // [s]
+    double discrete_tolerance = 1e-9;
+    int max_discrete_passes = 20;
 };
 
 /// Inputs trimmed with the DOFs, and the held DOFs whose residual they cancel
@@ -44,6 +56,7 @@ struct TrimResult {
     std::vector<double> residual; ///< F(q, q', u) for every DOF
     std::vector<bool> held;       ///< as given
     int iterations = 0;           ///< Newton steps taken
+    int discrete_passes = 0;      ///< settling passes of the blocks' discrete states
     double max_free_residual = 0; ///< max |F| over the free and balanced DOFs
     double tolerance = 0;         ///< what max_free_residual had to reach
     bool converged = false;
@@ -57,7 +70,9 @@ struct TrimResult {
 /// The view needs forcing and jacobians. Throws std::invalid_argument for
 /// wrong sizes or an adjustment that is not one input per held DOF; a point
 /// that does not converge is returned with converged = false (the caller
-/// reports the residual by DOF).
+/// reports the residual by DOF). With discrete block states (view.update_discrete)
+/// the point is where they are steady too, and the blocks keep those states:
+/// a linearization or a run that follows starts from them (TrimSettings).
 TrimResult trim(const ModelView& view, const std::vector<double>& q0,
                 const std::vector<double>& qd0, const std::vector<double>& u,
                 const std::vector<bool>& held, double t = 0.0, const TrimSettings& settings = {},

@@ -57,14 +57,14 @@ double inflow_angle(double vx, double vy, double a, double ap) {
 }
 
 // Brent's method on [lo, hi] with f(lo), f(hi) of opposite signs: stops when the
-// bracket is below 1e-6 rad or |f| below the tolerance (AeroDyn's sub_brent).
+// bracket is below opt.angle_tolerance or |f| below opt.tolerance (AeroDyn's sub_brent).
 struct BrentResult {
     double x;
     bool valid;
 };
 BrentResult brent(const ElementInput& in, const BemOptions& opt, double lo, double hi, double flo,
                   double fhi, bool hi_valid) {
-    constexpr double x_tolerance = 1e-6;
+    const double x_tolerance = opt.angle_tolerance;
     const double eps = std::numeric_limits<double>::epsilon();
     double a = lo, b = hi, fa = flo, fb = fhi;
     double c = a, fc = fa, d = b - a, e = d;
@@ -202,6 +202,7 @@ BemOptions bem_options(const RotorInput& input) {
     o.axial_drag = input.axial_drag;
     o.tangential_drag = input.tangential_drag;
     if (input.induction_tolerance > 0) o.tolerance = input.induction_tolerance;
+    if (input.inflow_angle_tolerance > 0) o.angle_tolerance = input.inflow_angle_tolerance;
     o.max_iterations = input.max_iterations;
     o.skew_redistribution = input.skew == SkewModel::active &&
                             input.skew_redistribution == SkewRedistribution::pitt_peters;

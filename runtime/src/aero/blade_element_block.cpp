@@ -183,6 +183,8 @@ public:
         update_dynamics(t_next - t, r, r_next);
     }
 
+    void reset_discrete_states() const override { dynamics_->reset(); }
+
     void derivatives(double t, const double* z, const double* r,
                      runtime::BlockJacobian& j) const override {
         if (s_.frozen_wake)

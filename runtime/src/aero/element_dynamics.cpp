@@ -36,6 +36,20 @@ ElementDynamics::ElementDynamics(const RotorInput& input)
     ua_next_.resize(elements);
 }
 
+void ElementDynamics::reset() {
+    dbemt_.reset();
+    u_t_ = {};
+    u_next_ = {};
+    x_ = {};
+    phi_.clear();
+    a_qs_.clear();
+    have_next_ = false;
+    mp_.assign(mp_.size(), MinnemaPierceState{});
+    oye_.assign(oye_.size(), OyeState{});
+    ua_dt_ = 0;
+    step_ = 0;
+}
+
 void ElementDynamics::locate_ua_span(const RotorResult& r) const {
     // UAStartRad, UAEndRad: UA off for good from the root to the last node inside
     // the start and from the first node beyond the end (AeroDyn's UAOff_innerNode,

@@ -44,6 +44,10 @@ public:
     };
     template <class Solve> void update(double dt, bool wind_changes, Solve&& solve);
 
+    /// Back to the start of a run: no state, so apply() is quasi-steady (the
+    /// polar, the quasi-steady induction) until the next update.
+    void reset();
+
 private:
     void sample(const RotorResult& r, DbemtInput& u, bool stale_phi);
     void unsteady_inputs(const RotorResult& r,

@@ -21,6 +21,10 @@ struct BemOptions {
     bool axial_drag = false, tangential_drag = false;
     double tolerance = 5e-10; // IndToler; AeroDyn's double-precision default
     int max_iterations = 100;
+    // Brent stops when the inflow angle's bracket is below this [rad]: AeroDyn's
+    // 1e-6 (sub_brent) leaves the loads rough at 1e-6 of their size, which a
+    // Newton method or a difference quotient sees; trim and lin ask for less.
+    double angle_tolerance = 1e-6;
     bool skew_redistribution = true;                           // Skew_Mod 1 with SkewRedistr_Mod 1
     double skew_factor = 15.0 * 3.14159265358979323846 / 32.0; // SkewRedistrFactor
     bool use_pitching_moment = true;                           // UseBlCm

@@ -61,6 +61,7 @@ struct RotorInput {
     bool tip_loss = true, hub_loss = true, tangential_induction = true;
     bool axial_drag = false, tangential_drag = false; // AIDrag, TIDrag
     double induction_tolerance = 0;                   // IndToler; 0: AeroDyn's default
+    double inflow_angle_tolerance = 0; // Brent's bracket [rad]; 0: AeroDyn's (BemOptions)
     int max_iterations = 100;
     DynamicInflow dynamic_inflow = DynamicInflow::none;
     double tau1_const = 4; // [s]

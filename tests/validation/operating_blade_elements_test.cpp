@@ -1,0 +1,223 @@
+// The NREL 5-MW in wind under ROSCO with AeroDyn's blade elements, against OpenFAST +
+// AeroDyn + ROSCO: every run `openfast_<case>.csv` in tests/data/reference/operating
+// (the given 8 and 16 m/s; another run of the same deck is one more file there).
+// Each run's deck is the folder's deck with the run's own start (ElastoDyn's initial
+// state from its first row) and wind (steady at its first Wind1VelX, or the deck's
+// uniform wind file `<case>.wnd`); `from-openfast` writes the model, which runs as its
+// header says (ABM4, DT 0.00625 s, as long as the run) under ROSCO.
+#include "validation_support.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <regex>
+
+using namespace validation;
+using yamsc::analysis::Table;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path operating = fs::path(reference_dir) / "operating";
+
+const std::vector<double>& column(const Table& t, const std::string& name) {
+    const int j = t.find(name);
+    REQUIRE_MESSAGE(j >= 0, "no column " << name);
+    return t.data[static_cast<std::size_t>(j)];
+}
+
+/// Mean of the rows with time in (t_end - window, t_end].
+double tail_mean(const Table& t, const std::string& name, double window) {
+    const std::vector<double>& time = t.data.front();
+    const std::vector<double>& v = column(t, name);
+    double sum = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < time.size(); ++i)
+        if (time[i] > time.back() - window + 1e-9) {
+            sum += v[i];
+            ++n;
+        }
+    REQUIRE(n > 0);
+    return sum / n;
+}
+
+/// Sets ElastoDyn/InflowWind entry `key` of `text` (value first, then the key) to `value`.
+void set_entry(std::string& text, const std::string& key, const std::string& value) {
+    const std::regex line("(^|\n)[ \t]*[^ \t\n]+([ \t]+" +
+                          std::regex_replace(key, std::regex(R"([()])"), R"(\$&)") + "[ \t])");
+    std::smatch m;
+    REQUIRE_MESSAGE(std::regex_search(text, m, line), "no entry " << key);
+    text.replace(static_cast<std::size_t>(m.position(0)), static_cast<std::size_t>(m.length(0)),
+                 m[1].str() + "   " + value + m[2].str());
+}
+
+std::string format(double v) {
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    return s.str();
+}
+
+/// The deck of run `stem` in `folder`: ElastoDyn's initial state from the run's first
+/// row, InflowWind's steady wind from it unless the deck has `<stem>.wnd`.
+fs::path deck_of(const std::string& stem, const Table& run, const fs::path& folder) {
+    fs::remove_all(folder);
+    fs::create_directories(folder.parent_path());
+    fs::copy(operating / "deck", folder, fs::copy_options::recursive);
+    const fs::path ed = folder / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat";
+    std::string text = read(ed.string());
+    const std::vector<std::pair<const char*, std::vector<const char*>>> start{
+        {"OoPDefl1_[m]", {"OoPDefl"}},
+        {"IPDefl1_[m]", {"IPDefl"}},
+        {"BlPitch1_[deg]", {"BlPitch(1)", "BlPitch(2)", "BlPitch(3)"}},
+        {"Azimuth_[deg]", {"Azimuth"}},
+        {"RotSpeed_[rpm]", {"RotSpeed"}},
+        {"TTDspFA_[m]", {"TTDspFA"}},
+        {"TTDspSS_[m]", {"TTDspSS"}}};
+    for (const auto& [channel, keys] : start)
+        if (run.find(channel) >= 0)
+            for (const char* key : keys) set_entry(text, key, format(column(run, channel).front()));
+    std::ofstream(ed.string()) << text;
+    const fs::path inflow = folder / "NRELOffshrBsline5MW_InflowWind.dat";
+    text = read(inflow.string());
+    if (fs::exists(folder / (stem + ".wnd"))) {
+        set_entry(text, "WindType", "2");
+        set_entry(text, "Filename_Uni", "\"" + stem + ".wnd\"");
+    } else {
+        set_entry(text, "HWindSpeed", format(column(run, "Wind1VelX_[m/s]").front()));
+    }
+    std::ofstream(inflow.string()) << text;
+    return folder / "NREL-5MW.fst";
+}
+
+struct Tolerance {
+    const char* channel;
+    double relative, absolute; // either bound passes
+};
+
+/// The issue's bounds on the means of the last 50 s.
+const Tolerance tolerances[] = {{"RotSpeed_[rpm]", 0.005, 0}, {"GenPwr_[kW]", 0.01, 0},
+                                {"BlPitch1_[deg]", 0, 0.3},   {"RotThrust_[kN]", 0.02, 0},
+                                {"TTDspFA_[m]", 0.03, 0},     {"RootMyc1_[kN-m]", 0.03, 0}};
+
+/// `yamsc trim` of the run's model at its mean rotor speed: the pitch that holds
+/// it at the mean generator torque above rated, the torque at its pitch below,
+/// against the run's own means (the blocks' discrete states settled).
+void check_trim(const yamsc::driver::SimOptions& run, const Table& openfast) {
+    const double rpm = tail_mean(openfast, "RotSpeed_[rpm]", 50);
+    const double torque = 1000 * tail_mean(openfast, "GenTq_[kN-m]", 50);
+    const double pitch = tail_mean(openfast, "BlPitch1_[deg]", 50);
+    yamsc::driver::TrimOptions o;
+    o.model = run.model;
+    o.aero = run.aero;
+    o.wind = run.wind;
+    o.at = {{"psi", 1, rpm * M_PI / 30}};
+    o.u = {{"pitch", 0, pitch * M_PI / 180}, {"gen_torque", 0, torque}};
+    const bool above_rated = pitch > 1;
+    o.adjust = {above_rated ? "pitch" : "gen_torque"};
+    o.json = true;
+    std::ostringstream out, err;
+    REQUIRE_MESSAGE(yamsc::analysis::trim(o, out, err) == 0, err.str());
+    const std::string json = out.str();
+    CHECK(json.find("\"discrete_passes\":0") == std::string::npos);
+    auto number = [&](const std::string& array, std::size_t index) {
+        std::size_t at = json.find("\"" + array + "\":[") + array.size() + 4;
+        for (std::size_t i = 0; i < index; ++i) at = json.find(',', at) + 1;
+        return std::stod(json.substr(at));
+    };
+    // The input's index among "inputs":["V_wind","pitch",...].
+    auto input = [&](const std::string& name) {
+        const std::size_t from = json.find("\"inputs\":[");
+        const std::size_t at = json.find("\"" + name + "\"", from);
+        REQUIRE(at != std::string::npos);
+        return static_cast<std::size_t>(std::count(json.begin() + static_cast<long>(from),
+                                                   json.begin() + static_cast<long>(at), ','));
+    };
+    if (above_rated) {
+        const double trimmed = number("u", input("pitch")) * 180 / M_PI;
+        MESSAGE("trim: pitch " << trimmed << " deg (OpenFAST's mean " << pitch << " deg)");
+        CHECK(std::fabs(trimmed - pitch) <= 0.05);
+    } else {
+        const double trimmed = number("u", input("gen_torque"));
+        MESSAGE("trim: generator torque " << trimmed << " N m (OpenFAST's mean " << torque << ")");
+        CHECK(std::fabs(trimmed / torque - 1) <= 0.005);
+    }
+}
+
+void check_run(const fs::path& reference) {
+    const std::string stem = reference.stem().string().substr(std::string("openfast_").size());
+    CAPTURE(stem);
+    const Table openfast = yamsc::analysis::read_table(reference.string());
+    const fs::path folder = fs::path(work_dir) / ("operating_" + stem);
+    const fs::path fst = deck_of(stem, openfast, folder);
+
+    yamsc::driver::FromOpenFastOptions f;
+    f.deck = fst.string();
+    f.output = (folder / "turbine.mbd").string();
+    std::ostringstream out, err;
+    REQUIRE_MESSAGE(yamsc::openfast::from_openfast(f, out, err) == 0, err.str());
+    const std::string model = read(f.output);
+    // The header's command: blade elements, ABM4, the deck's TMax and DT.
+    REQUIRE(model.find("#     --aero NRELOffshrBsline5MW_Onshore_AeroDyn15.dat \\\n") !=
+            std::string::npos);
+    REQUIRE(model.find(" --dt 0.00625 ") != std::string::npos);
+    REQUIRE(model.find("#     --method abm4") != std::string::npos);
+    // The blades turn with the controller's pitch, as ElastoDyn's do.
+    REQUIRE(model.find("rotate z -pitch }") != std::string::npos);
+
+    yamsc::driver::SimOptions o;
+    o.model = f.output;
+    o.aero = (folder / "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat").string();
+    o.wind = fs::exists(folder / (stem + ".wnd"))
+                 ? (folder / (stem + ".wnd")).string()
+                 : format(column(openfast, "Wind1VelX_[m/s]").front());
+    o.controller = YAMSC_ROSCO_DISCON;
+    o.controller_input = (folder / "DISCON.IN").string();
+    o.tmax = openfast.data.front().back();
+    o.dt = 0.00625;
+    o.dt_out = 0.025;
+    o.method = yamsc::driver::SimMethod::abm4;
+    const double pitch0 = column(openfast, "BlPitch1_[deg]").front();
+    if (pitch0 != 0) o.u = {{"pitch", 0, pitch0 * M_PI / 180}};
+    o.channels = yamsc::driver::Channels::openfast;
+    o.output = (folder / "run.csv").string();
+    REQUIRE_MESSAGE(yamsc::analysis::sim(o, out, err) == 0, err.str());
+    const Table yamsc_run = yamsc::analysis::read_table(o.output);
+
+    for (const Tolerance& t : tolerances) {
+        const std::string channel = t.channel;
+        CAPTURE(channel);
+        const double got = tail_mean(yamsc_run, channel, 50);
+        const double want = tail_mean(openfast, channel, 50);
+        const std::string difference = t.absolute > 0
+                                           ? std::to_string(got - want)
+                                           : std::to_string(100 * (got / want - 1)) + " %";
+        MESSAGE(stem << " " << channel << ": " << got << " (OpenFAST " << want << ", " << difference
+                     << ")");
+        if (t.absolute > 0)
+            CHECK(std::fabs(got - want) <= t.absolute);
+        else
+            CHECK(std::fabs(got / want - 1) <= t.relative);
+    }
+    const std::vector<double>& wind = column(openfast, "Wind1VelX_[m/s]");
+    if (*std::min_element(wind.begin(), wind.end()) == *std::max_element(wind.begin(), wind.end()))
+        check_trim(o, openfast);
+}
+
+} // namespace
+
+#ifdef YAMSC_ROSCO_DISCON
+// Run by the `rosco_blade_elements` test (tests/CMakeLists.txt), which builds ROSCO.
+TEST_CASE("blade elements under ROSCO: every operating run against OpenFAST + AeroDyn + ROSCO" *
+          doctest::skip()) {
+    std::vector<fs::path> runs;
+    for (const auto& entry : fs::directory_iterator(operating)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("openfast_", 0) == 0 && entry.path().extension() == ".csv")
+            runs.push_back(entry.path());
+    }
+    std::sort(runs.begin(), runs.end());
+    REQUIRE(runs.size() >= 2); // the given 8 and 16 m/s
+    for (const fs::path& run : runs) check_run(run);
+}
+#endif
