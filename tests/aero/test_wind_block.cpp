@@ -1,0 +1,200 @@
+// The blade elements in InflowWind's wind (`--wind InflowWind.dat`): the deck
+// with every ElastoDyn DOF off (a rigid rotor at 8.9886 rpm, pitch 0, as
+// test_blade_element_prescribed.cpp runs it) with the wind propagating at 20 deg
+// against OpenFAST's run (data/reference/aero/rigid_U8_prop20.csv); then in
+// sheared (PLexp 0.2) yawed wind against the rigid rotor of bem_rotor.hpp fed
+// the same field at every node: RtFldCp and RtFldCt within 0.5 %, the nodes'
+// angle of attack within 0.1 deg, their Fx and Fy within 1 % of the largest.
+#include "analysis/aerodyn_rotor.hpp"
+#include "analysis/commands.hpp"
+#include "analysis/compare.hpp"
+#include "openfast/from_openfast.hpp"
+#include "test_files.hpp"
+
+#include <yamsc/aero/rigid_rotor.hpp>
+#include <yamsc/wind.hpp>
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+using yamsc::analysis::Table;
+const std::string data_dir = YAMSC_TEST_DATA_DIR;
+constexpr double pi = 3.14159265358979323846;
+constexpr double rpm = 8.9885664;
+constexpr int output_nodes[9] = {3, 5, 7, 9, 11, 13, 15, 17, 18};
+
+std::string set_entry(std::string text, const std::string& key, const std::string& value) {
+    return std::regex_replace(text, std::regex("\n\\s*\\S+(\\s+)" + key + "\\b"),
+                              "\n  " + value + "$1" + key);
+}
+
+/// The deck with every DOF off and the reference's quasi-steady BEM, its model,
+/// and sim's options for it.
+struct Rigid {
+    std::string dir, aerodyn, inflowwind;
+    yamsc::driver::SimOptions sim;
+};
+
+const Rigid& rigid_deck() {
+    static const Rigid r = [] {
+        Rigid d;
+        d.dir = test_support::scratch_dir("aero", "wind_block");
+        fs::copy(data_dir + "/reference/operating/deck", d.dir + "/deck",
+                 fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+        const std::string ed = d.dir + "/deck/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat";
+        std::string text = test_support::read_file(ed);
+        for (const char* dof : {"FlapDOF1", "FlapDOF2", "EdgeDOF", "TeetDOF", "DrTrDOF", "GenDOF",
+                                "YawDOF", "TwFADOF1", "TwFADOF2", "TwSSDOF1", "TwSSDOF2"})
+            text = set_entry(text, dof, "False");
+        text = set_entry(text, "RotSpeed", "8.9885664");
+        test_support::write_file(ed, text);
+        d.aerodyn = d.dir + "/deck/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat";
+        std::string aero = set_entry(test_support::read_file(d.aerodyn), "NBlOuts", "9");
+        aero = set_entry(aero, "DBEMT_Mod", "0");
+        aero = set_entry(aero, "UA_Mod", "0");
+        aero = std::regex_replace(aero, std::regex("\n[^\n]*BlOutNd"),
+                                  "\n3, 5, 7, 9, 11, 13, 15, 17, 18    BlOutNd");
+        test_support::write_file(d.aerodyn, aero);
+        d.inflowwind = d.dir + "/deck/NRELOffshrBsline5MW_InflowWind.dat";
+
+        yamsc::driver::FromOpenFastOptions o;
+        o.deck = d.dir + "/deck/NREL-5MW.fst";
+        o.output = d.dir + "/rigid.mbd";
+        std::ostringstream out, err;
+        REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
+        d.sim.model = o.output;
+        d.sim.aero = d.aerodyn;
+        d.sim.tmax = 10;
+        d.sim.dt = 0.025;
+        d.sim.channels = yamsc::driver::Channels::openfast;
+        return d;
+    }();
+    return r;
+}
+
+/// The run in the deck's InflowWind file with PropagationDir and PLexp set.
+/// Each run once per test executable.
+Table run_in(const std::string& name, const std::string& propagation, const std::string& plexp) {
+    static std::map<std::string, Table> runs;
+    if (const auto it = runs.find(name); it != runs.end()) return it->second;
+    const Rigid& d = rigid_deck();
+    std::string wind = test_support::read_file(d.inflowwind);
+    wind = set_entry(wind, "PropagationDir", propagation);
+    wind = set_entry(wind, "PLexp", plexp);
+    const std::string path = d.dir + "/" + name + "_InflowWind.dat";
+    test_support::write_file(path, wind);
+    yamsc::driver::SimOptions s = d.sim;
+    s.wind = path;
+    s.output = d.dir + "/" + name + ".csv";
+    std::ostringstream out, err;
+    REQUIRE_MESSAGE(yamsc::analysis::sim(s, out, err) == 0, err.str());
+    return runs[name] = yamsc::analysis::read_table(s.output);
+}
+
+std::vector<double> column(const Table& t, const std::string& name) {
+    const int c = t.find(name);
+    REQUIRE_MESSAGE(c >= 0, name);
+    return t.data[static_cast<std::size_t>(c)];
+}
+
+double largest(const Table& t, const std::string& what) {
+    double m = 0;
+    for (int j = 1; j <= 9; ++j)
+        for (double v : column(t, "B1N" + std::to_string(j) + what)) m = std::max(m, std::abs(v));
+    return m;
+}
+
+} // namespace
+
+TEST_CASE("wind: the rigid rotor's blade elements in wind from 20 deg match OpenFAST's") {
+    const Table y = run_in("prop20", "20", "0");
+    const Table ref = yamsc::analysis::read_table(data_dir + "/reference/aero/rigid_U8_prop20.csv");
+    const auto t_ref = column(ref, "Time_[s]"), t_y = column(y, "Time_[s]");
+    const double fx_max = largest(ref, "Fx_[N/m]"), fy_max = largest(ref, "Fy_[N/m]");
+    int compared = 0;
+    for (std::size_t r = 0; r < t_ref.size(); r += 8) {
+        const auto i = static_cast<std::size_t>(std::lround(t_ref[r] / 0.025));
+        REQUIRE(i < t_y.size());
+        CAPTURE(t_ref[r]);
+        auto near = [&](const std::string& name, double rel) {
+            CAPTURE(name);
+            CHECK(column(y, name)[i] == doctest::Approx(column(ref, name)[r]).epsilon(rel));
+        };
+        near("Azimuth_[deg]", 1e-6);
+        near("RtFldCp_[-]", 0.005);
+        near("RtFldCt_[-]", 0.005);
+        for (int j = 1; j <= 9; ++j) {
+            const std::string n = "B1N" + std::to_string(j);
+            CAPTURE(n);
+            CHECK(std::abs(column(y, n + "Alpha_[deg]")[i] - column(ref, n + "Alpha_[deg]")[r]) <
+                  0.1);
+            CHECK(std::abs(column(y, n + "Fx_[N/m]")[i] - column(ref, n + "Fx_[N/m]")[r]) <
+                  0.01 * fx_max);
+            CHECK(std::abs(column(y, n + "Fy_[N/m]")[i] - column(ref, n + "Fy_[N/m]")[r]) <
+                  0.01 * fy_max);
+        }
+        ++compared;
+    }
+    CHECK(compared >= 10);
+}
+
+TEST_CASE("wind: in sheared, yawed wind the blade elements see the field at each node") {
+    const Table y = run_in("shear", "20", "0.2");
+    const Rigid& d = rigid_deck();
+    yamsc::diag::Diagnostics diags;
+    const auto rotor = yamsc::analysis::read_aerodyn_rotor(d.aerodyn, 3, diags);
+    REQUIRE_MESSAGE(rotor, diags.render());
+    const yamsc::runtime::WindInput wind =
+        yamsc::runtime::open_wind(d.dir + "/shear_InflowWind.dat");
+    REQUIRE(wind.field);
+    yamsc::aero::RigidRotor rigid(*rotor, yamsc::aero::RotorGeometry{});
+    const auto azimuth = column(y, "Azimuth_[deg]");
+    const double fx_max = largest(y, "Fx_[N/m]"), fy_max = largest(y, "Fy_[N/m]");
+    for (std::size_t i = 0; i < azimuth.size(); i += 20) {
+        CAPTURE(azimuth[i]);
+        yamsc::aero::OperatingPoint op;
+        op.azimuth = azimuth[i] * pi / 180;
+        op.rotor_speed = rpm * pi / 30;
+        op.wind_speed = 8.0;
+        op.wind_field = wind.field.get();
+        const yamsc::aero::RotorResult& res = rigid.evaluate(op);
+        CHECK(column(y, "RtFldCp_[-]")[i] == doctest::Approx(res.cp).epsilon(0.005));
+        CHECK(column(y, "RtFldCt_[-]")[i] == doctest::Approx(res.ct).epsilon(0.005));
+        for (int j = 1; j <= 9; ++j) {
+            const std::string n = "B1N" + std::to_string(j);
+            const auto& bem = res.blades[0][static_cast<std::size_t>(output_nodes[j - 1] - 1)].bem;
+            CAPTURE(n);
+            CHECK(std::abs(column(y, n + "Alpha_[deg]")[i] - bem.alpha * 180 / pi) < 0.1);
+            CHECK(std::abs(column(y, n + "Fx_[N/m]")[i] - bem.fx) < 0.01 * fx_max);
+            CHECK(std::abs(column(y, n + "Fy_[N/m]")[i] - bem.fy) < 0.01 * fy_max);
+        }
+    }
+    // The shear is felt: against the same yawed wind without shear, the tip's
+    // angle of attack is highest with the blade up (151 m: 11 % more wind) and
+    // lowest with it down (29 m: 20 % less).
+    const Table unsheared = run_in("prop20", "20", "0");
+    const auto sheared_tip = column(y, "B1N9Alpha_[deg]");
+    const auto plain_tip = column(unsheared, "B1N9Alpha_[deg]");
+    std::size_t up = 0, down = 0;
+    for (std::size_t i = 0; i < azimuth.size(); ++i) {
+        const double d = sheared_tip[i] - plain_tip[i];
+        if (d > sheared_tip[up] - plain_tip[up]) up = i;
+        if (d < sheared_tip[down] - plain_tip[down]) down = i;
+    }
+    MESSAGE("tip alpha, sheared less unsheared: "
+            << sheared_tip[up] - plain_tip[up] << " deg at " << azimuth[up] << " deg, "
+            << sheared_tip[down] - plain_tip[down] << " deg at " << azimuth[down] << " deg");
+    CHECK(sheared_tip[up] - plain_tip[up] > 0.5);
+    CHECK(sheared_tip[down] - plain_tip[down] < -0.5);
+    CHECK(std::min(azimuth[up], 360 - azimuth[up]) < 20);
+    CHECK(std::abs(azimuth[down] - 180) < 20);
+}
