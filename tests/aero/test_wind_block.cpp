@@ -7,9 +7,7 @@
 // angle of attack within 0.1 deg, their Fx and Fy within 1 % of the largest.
 #include "analysis/aerodyn_rotor.hpp"
 #include "analysis/commands.hpp"
-#include "analysis/compare.hpp"
-#include "openfast/from_openfast.hpp"
-#include "test_files.hpp"
+#include "rigid_deck.hpp"
 
 #include <yamsc/aero/rigid_rotor.hpp>
 #include <yamsc/wind.hpp>
@@ -18,67 +16,25 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <map>
-#include <regex>
 #include <sstream>
 
 namespace {
 
-namespace fs = std::filesystem;
+using aero_test::column;
 using yamsc::analysis::Table;
-const std::string data_dir = YAMSC_TEST_DATA_DIR;
 constexpr double pi = 3.14159265358979323846;
 constexpr double rpm = 8.9885664;
 constexpr int output_nodes[9] = {3, 5, 7, 9, 11, 13, 15, 17, 18};
 
-std::string set_entry(std::string text, const std::string& key, const std::string& value) {
-    return std::regex_replace(text, std::regex("\n\\s*\\S+(\\s+)" + key + "\\b"),
-                              "\n  " + value + "$1" + key);
+const std::string& work_dir() {
+    static const std::string dir = test_support::scratch_dir("aero", "wind_block");
+    return dir;
 }
 
-/// The deck with every DOF off and the reference's quasi-steady BEM, its model,
-/// and sim's options for it.
-struct Rigid {
-    std::string dir, aerodyn, inflowwind;
-    yamsc::driver::SimOptions sim;
-};
-
-const Rigid& rigid_deck() {
-    static const Rigid r = [] {
-        Rigid d;
-        d.dir = test_support::scratch_dir("aero", "wind_block");
-        fs::copy(data_dir + "/reference/operating/deck", d.dir + "/deck",
-                 fs::copy_options::recursive | fs::copy_options::overwrite_existing);
-        const std::string ed = d.dir + "/deck/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat";
-        std::string text = test_support::read_file(ed);
-        for (const char* dof : {"FlapDOF1", "FlapDOF2", "EdgeDOF", "TeetDOF", "DrTrDOF", "GenDOF",
-                                "YawDOF", "TwFADOF1", "TwFADOF2", "TwSSDOF1", "TwSSDOF2"})
-            text = set_entry(text, dof, "False");
-        text = set_entry(text, "RotSpeed", "8.9885664");
-        test_support::write_file(ed, text);
-        d.aerodyn = d.dir + "/deck/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat";
-        std::string aero = set_entry(test_support::read_file(d.aerodyn), "NBlOuts", "9");
-        aero = set_entry(aero, "DBEMT_Mod", "0");
-        aero = set_entry(aero, "UA_Mod", "0");
-        aero = std::regex_replace(aero, std::regex("\n[^\n]*BlOutNd"),
-                                  "\n3, 5, 7, 9, 11, 13, 15, 17, 18    BlOutNd");
-        test_support::write_file(d.aerodyn, aero);
-        d.inflowwind = d.dir + "/deck/NRELOffshrBsline5MW_InflowWind.dat";
-
-        yamsc::driver::FromOpenFastOptions o;
-        o.deck = d.dir + "/deck/NREL-5MW.fst";
-        o.output = d.dir + "/rigid.mbd";
-        std::ostringstream out, err;
-        REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
-        d.sim.model = o.output;
-        d.sim.aero = d.aerodyn;
-        d.sim.tmax = 10;
-        d.sim.dt = 0.025;
-        d.sim.channels = yamsc::driver::Channels::openfast;
-        return d;
-    }();
-    return r;
+const aero_test::RigidDeck& deck() {
+    static const aero_test::RigidDeck d = aero_test::rigid_deck(work_dir());
+    return d;
 }
 
 /// The run in the deck's InflowWind file with PropagationDir and PLexp set.
@@ -86,24 +42,22 @@ const Rigid& rigid_deck() {
 Table run_in(const std::string& name, const std::string& propagation, const std::string& plexp) {
     static std::map<std::string, Table> runs;
     if (const auto it = runs.find(name); it != runs.end()) return it->second;
-    const Rigid& d = rigid_deck();
-    std::string wind = test_support::read_file(d.inflowwind);
-    wind = set_entry(wind, "PropagationDir", propagation);
-    wind = set_entry(wind, "PLexp", plexp);
-    const std::string path = d.dir + "/" + name + "_InflowWind.dat";
+    std::string wind = test_support::read_file(deck().inflowwind);
+    wind = aero_test::set_entry(wind, "PropagationDir", propagation);
+    wind = aero_test::set_entry(wind, "PLexp", plexp);
+    const std::string path = work_dir() + "/" + name + "_InflowWind.dat";
     test_support::write_file(path, wind);
-    yamsc::driver::SimOptions s = d.sim;
+    yamsc::driver::SimOptions s;
+    s.model = deck().model;
+    s.aero = deck().aerodyn;
+    s.tmax = 10;
+    s.dt = 0.025;
+    s.channels = yamsc::driver::Channels::openfast;
     s.wind = path;
-    s.output = d.dir + "/" + name + ".csv";
+    s.output = work_dir() + "/" + name + ".csv";
     std::ostringstream out, err;
     REQUIRE_MESSAGE(yamsc::analysis::sim(s, out, err) == 0, err.str());
     return runs[name] = yamsc::analysis::read_table(s.output);
-}
-
-std::vector<double> column(const Table& t, const std::string& name) {
-    const int c = t.find(name);
-    REQUIRE_MESSAGE(c >= 0, name);
-    return t.data[static_cast<std::size_t>(c)];
 }
 
 double largest(const Table& t, const std::string& what) {
@@ -117,14 +71,10 @@ double largest(const Table& t, const std::string& what) {
 
 TEST_CASE("wind: the rigid rotor's blade elements in wind from 20 deg match OpenFAST's") {
     const Table y = run_in("prop20", "20", "0");
-    const Table ref = yamsc::analysis::read_table(data_dir + "/reference/aero/rigid_U8_prop20.csv");
-    const auto t_ref = column(ref, "Time_[s]"), t_y = column(y, "Time_[s]");
+    const Table ref = yamsc::analysis::read_table(std::string(YAMSC_TEST_DATA_DIR) +
+                                                  "/reference/aero/rigid_U8_prop20.csv");
     const double fx_max = largest(ref, "Fx_[N/m]"), fy_max = largest(ref, "Fy_[N/m]");
-    int compared = 0;
-    for (std::size_t r = 0; r < t_ref.size(); r += 8) {
-        const auto i = static_cast<std::size_t>(std::lround(t_ref[r] / 0.025));
-        REQUIRE(i < t_y.size());
-        CAPTURE(t_ref[r]);
+    const int compared = aero_test::each_reference_row(y, ref, [&](std::size_t i, std::size_t r) {
         auto near = [&](const std::string& name, double rel) {
             CAPTURE(name);
             CHECK(column(y, name)[i] == doctest::Approx(column(ref, name)[r]).epsilon(rel));
@@ -135,26 +85,24 @@ TEST_CASE("wind: the rigid rotor's blade elements in wind from 20 deg match Open
         for (int j = 1; j <= 9; ++j) {
             const std::string n = "B1N" + std::to_string(j);
             CAPTURE(n);
-            CHECK(std::abs(column(y, n + "Alpha_[deg]")[i] - column(ref, n + "Alpha_[deg]")[r]) <
-                  0.1);
-            CHECK(std::abs(column(y, n + "Fx_[N/m]")[i] - column(ref, n + "Fx_[N/m]")[r]) <
-                  0.01 * fx_max);
-            CHECK(std::abs(column(y, n + "Fy_[N/m]")[i] - column(ref, n + "Fy_[N/m]")[r]) <
-                  0.01 * fy_max);
+            auto within = [&](const std::string& what, double bound) {
+                CHECK(std::abs(column(y, n + what)[i] - column(ref, n + what)[r]) < bound);
+            };
+            within("Alpha_[deg]", 0.1);
+            within("Fx_[N/m]", 0.01 * fx_max);
+            within("Fy_[N/m]", 0.01 * fy_max);
         }
-        ++compared;
-    }
+    });
     CHECK(compared >= 10);
 }
 
 TEST_CASE("wind: in sheared, yawed wind the blade elements see the field at each node") {
     const Table y = run_in("shear", "20", "0.2");
-    const Rigid& d = rigid_deck();
     yamsc::diag::Diagnostics diags;
-    const auto rotor = yamsc::analysis::read_aerodyn_rotor(d.aerodyn, 3, diags);
+    const auto rotor = yamsc::analysis::read_aerodyn_rotor(deck().aerodyn, 3, diags);
     REQUIRE_MESSAGE(rotor, diags.render());
     const yamsc::runtime::WindInput wind =
-        yamsc::runtime::open_wind(d.dir + "/shear_InflowWind.dat");
+        yamsc::runtime::open_wind(work_dir() + "/shear_InflowWind.dat");
     REQUIRE(wind.field);
     yamsc::aero::RigidRotor rigid(*rotor, yamsc::aero::RotorGeometry{});
     const auto azimuth = column(y, "Azimuth_[deg]");

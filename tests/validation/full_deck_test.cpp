@@ -173,8 +173,8 @@ TEST_CASE("a full deck's sheared steady wind: InflowWind's file, or the hub heig
     yamsc::driver::FromOpenFastOptions o;
     o.deck = (copy / "NREL-5MW.fst").string();
     o.output = work_dir + "/full_deck_shear.mbd";
-    o.dofs = operating_dofs;
     {
+        // The deck's own DOFs: flexible blades, the blade elements.
         std::ostringstream out, err;
         REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
         const std::string text = read(o.output);
@@ -183,7 +183,8 @@ TEST_CASE("a full deck's sheared steady wind: InflowWind's file, or the hub heig
         CHECK(text.find("--wind from NRELOffshrBsline5MW_InflowWind.dat:5") != std::string::npos);
         CHECK(err.str().find("PLexp") == std::string::npos);
     }
-    o.aero = yamsc::driver::RotorAero::table;
+    // Rigid blades with other DOFs: one rotor body, the table rotor.
+    o.dofs = operating_dofs;
     std::ostringstream out, err;
     REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
     const std::string text = read(o.output);
