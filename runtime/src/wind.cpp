@@ -82,7 +82,7 @@ double WindSignal::operator()(double t) const {
 
 WindInput open_wind(const std::string& spec) {
     double v = 0;
-    if (parse_number(spec, v)) return {{{0.0}, {v}}, nullptr, {}};
+    if (parse_number(spec, v)) return {{{0.0}, {v}}, nullptr, {}, {}};
     if (spec.rfind("step:", 0) == 0) {
         // step:V0:V1:t=T
         std::vector<std::string> parts;
@@ -94,7 +94,7 @@ WindInput open_wind(const std::string& spec) {
             throw std::invalid_argument("--wind: expected step:V0:V1:t=T, got '" + spec + "'");
         // A step: V0 up to T, V1 after (the linear interpolation between two
         // samples 1e-9 s apart).
-        return {{{t, t + 1e-9}, {v0, v1}}, nullptr, {}};
+        return {{{t, t + 1e-9}, {v0, v1}}, nullptr, {}, {}};
     }
     std::ifstream in(spec);
     if (!in)
@@ -103,7 +103,9 @@ WindInput open_wind(const std::string& spec) {
     const bool inflowwind = wind::looks_like_inflowwind(in);
     in.clear();
     in.seekg(0);
-    return inflowwind ? open_inflowwind(in, spec) : open_samples(in, spec);
+    WindInput w = inflowwind ? open_inflowwind(in, spec) : open_samples(in, spec);
+    w.files.insert(w.files.begin(), spec);
+    return w;
 }
 
 WindSignal parse_wind(const std::string& spec) {

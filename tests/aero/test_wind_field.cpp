@@ -122,6 +122,10 @@ TEST_CASE("wind field: a uniform wind file's nine columns, linear in time (WindT
     const yamsc::runtime::WindInput w = yamsc::runtime::open_wind(dat);
     REQUIRE(w.field);
     CHECK_FALSE(w.field->steady());
+    // The files read: the InflowWind file, then the uniform wind file it names.
+    REQUIRE(w.files.size() == 2);
+    CHECK(w.files[0] == dat);
+    CHECK(w.files[1] == file);
     // V_wind is the speed with the gust, at the reference height.
     CHECK(w.hub(15.0) == doctest::Approx(12.0));
     CHECK(w.field->reference_speed(15.0) == doctest::Approx(12.0));

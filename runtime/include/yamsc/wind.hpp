@@ -25,6 +25,8 @@ struct WindInput {
     std::shared_ptr<const WindField> field;
     /// "file:line:col: warning: ..." for entries of the file that are not used.
     std::vector<std::string> warnings;
+    /// The files read: the spec's, then those it names (a uniform wind file).
+    std::vector<std::string> files;
 };
 
 /// "11.4" (steady), "step:8:14:t=10" (8 m/s, 14 m/s from t = 10 s), the path of

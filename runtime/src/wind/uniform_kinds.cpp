@@ -73,7 +73,9 @@ WindInput open_uniform_wind(wind::InflowWindFile& f) {
         f.warn(f.entry("PropagationDir"),
                "PropagationDir and the uniform wind file's first direction both turn the wind "
                "(InflowWind warns of a double rotation too)");
-    return uniform_input(std::move(s));
+    WindInput input = uniform_input(std::move(s));
+    input.files.push_back(path);
+    return input;
 }
 
 } // namespace yamsc::runtime
