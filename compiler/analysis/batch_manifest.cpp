@@ -4,6 +4,8 @@
 #include "diag/errors.hpp"
 #include "driver/values.hpp"
 
+#include <yamsc/wind.hpp>
+
 #include <algorithm>
 #include <fstream>
 #include <sstream>
@@ -257,6 +259,13 @@ BatchCase case_of(const Manifest& m, const ManifestRow& row) {
                 if (!readable(c.sim.wind))
                     throw CaseError(at(f), "cannot read the wind file '" + c.sim.wind + "'");
                 c.files.push_back(c.sim.wind);
+                // An InflowWind file's uniform wind file is an input too (a bad
+                // file is the case's error when it runs).
+                try {
+                    const std::vector<std::string> read = runtime::open_wind(c.sim.wind).files;
+                    c.files.insert(c.files.end(), read.begin() + 1, read.end());
+                } catch (const std::exception&) {
+                }
             }
         } else if (f.text.empty()) {
             continue; // an optional value not given for this case

@@ -47,6 +47,7 @@ std::shared_ptr<const runtime::LoadBlock> build_blade_elements(const model::Load
         s.rotor.inflow_angle_tolerance = c.options.inflow_angle_tolerance;
     s.frozen_wake = c.options.frozen_wake;
     s.difference_step = c.options.difference_step;
+    s.wind_field = c.wind_field;
     s.channels.wind = index_in(v.input_names, decl.role(Role::wind));
     s.channels.pitch =
         decl.role(Role::pitch).empty() ? -1 : index_in(v.input_names, decl.role(Role::pitch));

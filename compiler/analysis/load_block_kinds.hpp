@@ -5,6 +5,8 @@
 #include "analysis/load_blocks.hpp"
 #include "model/model.hpp"
 
+#include <yamsc/wind/wind_field.hpp>
+
 #include <memory>
 
 namespace yamsc::analysis {
@@ -15,6 +17,8 @@ struct BlockContext {
     const runtime::ModelView& view;    // the view the block is closed around
     const std::vector<double>& params; // the parameters it is bound to
     const BlockOptions& options;
+    /// --wind's field (an InflowWind file), or null: V_wind along ground x.
+    std::shared_ptr<const runtime::WindField> wind_field;
 };
 
 /// The index of `name` in `names` (the checker has seen it declared).

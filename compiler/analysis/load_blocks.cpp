@@ -4,6 +4,8 @@
 #include "diag/errors.hpp"
 #include "model/load_kinds.hpp"
 
+#include <yamsc/wind.hpp>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -102,7 +104,19 @@ std::vector<driver::NamedFile> block_files(const BlockOptions& b) {
 runtime::LoadBlocks load_blocks(const Loaded& l, const runtime::ModelView& v,
                                 const std::vector<double>& params, const BlockOptions& b) {
     const model::Model* m = model_of(l);
-    const BlockContext context{l, v, params, b};
+    // The field is opened here, its errors --wind's; its warnings are printed
+    // where --wind drives the wind input (wind_input.hpp).
+    std::shared_ptr<const runtime::WindField> field;
+    if (!b.wind.empty()) {
+        try {
+            field = runtime::open_wind(b.wind).field;
+        } catch (const std::invalid_argument& e) {
+            throw diag::UsageError(e.what());
+        } catch (const std::runtime_error& e) {
+            throw UserError(e.what());
+        }
+    }
+    const BlockContext context{l, v, params, b, field};
     runtime::LoadBlocks blocks;
     // Several kinds may take their data from one option (--aero: a Cp/Ct/Cq
     // table or an AeroDyn file): the model's declarations say which.

@@ -22,6 +22,9 @@ namespace yamsc::analysis {
 /// What the command line gives the load blocks.
 struct BlockOptions {
     std::string aero; // --aero TABLE: the Cp/Ct/Cq table of the rotor_table blocks
+    /// --wind SPEC: an InflowWind file gives the blade elements its field
+    /// (yamsc/wind.hpp); any other spec, or none, V_wind along ground x.
+    std::string wind{};
     /// Blade elements differentiated with a frozen wake, as OpenFAST linearizes
     /// AeroDyn (`lin`'s default, --wake frozen); else the derivatives of the
     /// quasi-steady loads, the BEM solved at every perturbed point (trim's
@@ -39,6 +42,7 @@ struct BlockOptions {
 template <class Options> BlockOptions block_options(const Options& o) {
     BlockOptions b;
     b.aero = o.aero;
+    b.wind = o.wind;
     return b;
 }
 

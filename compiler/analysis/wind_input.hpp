@@ -6,10 +6,16 @@
 #include <yamsc/integration.hpp>
 #include <yamsc/model_view.hpp>
 
+#include <yamsc/wind.hpp>
+
 #include <string>
 #include <vector>
 
 namespace yamsc::analysis {
+
+/// What --wind names (yamsc/wind.hpp), its warnings printed to stderr; a
+/// malformed spec is a UsageError, a bad file a UserError.
+runtime::WindInput open_wind_input(const std::string& spec);
 
 /// Inputs `u` with the wind input following --wind.
 runtime::InputFunction wind_inputs(const Loaded& l, const runtime::ModelView& v,

@@ -901,8 +901,8 @@ private:
     void operation_header(const Operation& op) {
         if (op.blade_elements)
             out_ << "# In wind (docs/openfast.md, \"A full deck\"): AeroDyn becomes its blade\n"
-                    "# elements on the flexible blades (docs/aerodynamics.md), InflowWind the\n"
-                    "# hub-height wind, ServoDyn's controller the DISCON library it names:\n";
+                    "# elements on the flexible blades (docs/aerodynamics.md), InflowWind its\n"
+                    "# wind at every node, ServoDyn's controller the DISCON library it names:\n";
         else
             out_
                 << "# In wind (docs/openfast.md, \"A full deck\"): AeroDyn becomes the "

@@ -141,6 +141,14 @@ private:
         if (!iw) return;
         const auto type = iw->get_int("WindType", diags_);
         if (!type) return;
+        // The blade elements take InflowWind's field itself (`--wind` the InflowWind
+        // file: shear, direction, upflow, a uniform wind file's columns at every node).
+        if (op_.blade_elements && (*type == 1 || *type == 2)) {
+            if (auto it = deck_.module_files.find("InflowFile"); it != deck_.module_files.end())
+                op_.wind = it->second;
+            op_.wind_from = file_line(*iw, "WindType");
+            return;
+        }
         if (*type == 1) {
             const auto speed = iw->get_double("HWindSpeed", diags_);
             const auto ref = iw->get_double("RefHt", diags_);

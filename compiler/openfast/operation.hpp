@@ -18,8 +18,9 @@ struct Operation {
     double rotor_radius = 0; ///< TipRad (ElastoDyn) [m]
     double air_density = 0;  ///< AirDens (.fst, else AeroDyn) [kg/m^3]
     std::string air_density_from;
-    /// `--wind`'s argument: a hub-height speed, or a uniform wind file (resolved
-    /// path); empty when InflowWind's wind type is not converted.
+    /// `--wind`'s argument: a hub-height speed, or a uniform wind file, or with the
+    /// blade elements the InflowWind file itself (resolved paths); empty when
+    /// InflowWind's wind type is not converted.
     std::string wind;
     std::optional<double> wind_speed; ///< when steady
     std::string wind_from;

@@ -43,6 +43,9 @@ case $target in
   fuzz_wind)
     seeds=("$here"/seeds/wind/*)
     dict= ;;
+  fuzz_inflowwind)
+    seeds=("$root"/tests/data/reference/operating/deck/*InflowWind.dat "$here"/seeds/inflowwind/*)
+    dict= ;;
   fuzz_aerodyn_primary)
     seeds=("$root"/tests/data/reference/operating/deck/*AeroDyn15.dat)
     dict= ;;

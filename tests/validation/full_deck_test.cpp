@@ -158,9 +158,10 @@ TEST_CASE("a full deck's model runs in wind as the shipped operating model does"
           shipped.data[static_cast<std::size_t>(rpm)].front());
 }
 
-TEST_CASE("a full deck's sheared steady wind is taken at the hub height") {
-    // The deck with InflowWind's power law (PLexp 0.14 from RefHt 50 m): the rotor
-    // block reads the wind at the apex, 87.6 + 1.96256 + 5.0191 sin(5 deg) = 90.0 m.
+TEST_CASE("a full deck's sheared steady wind: InflowWind's file, or the hub height's speed") {
+    // The deck with InflowWind's power law (PLexp 0.14 from RefHt 50 m): the table
+    // rotor reads the wind at the apex, 87.6 + 1.96256 + 5.0191 sin(5 deg) = 90.0 m;
+    // the blade elements the InflowWind file itself, its shear at every node.
     namespace fs = std::filesystem;
     const fs::path copy = fs::path(work_dir) / "deck_shear";
     fs::remove_all(copy);
@@ -172,6 +173,17 @@ TEST_CASE("a full deck's sheared steady wind is taken at the hub height") {
     yamsc::driver::FromOpenFastOptions o;
     o.deck = (copy / "NREL-5MW.fst").string();
     o.output = work_dir + "/full_deck_shear.mbd";
+    {
+        // The deck's own DOFs: flexible blades, the blade elements.
+        std::ostringstream out, err;
+        REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
+        const std::string text = read(o.output);
+        CHECK(text.find("#     --wind deck_shear/NRELOffshrBsline5MW_InflowWind.dat \\\n") !=
+              std::string::npos);
+        CHECK(text.find("--wind from NRELOffshrBsline5MW_InflowWind.dat:5") != std::string::npos);
+        CHECK(err.str().find("PLexp") == std::string::npos);
+    }
+    // Rigid blades with other DOFs: one rotor body, the table rotor.
     o.dofs = operating_dofs;
     std::ostringstream out, err;
     REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());

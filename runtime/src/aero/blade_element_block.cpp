@@ -151,6 +151,7 @@ public:
             motion_.blades[k].position.resize(n);
             motion_.blades[k].velocity.resize(n);
             motion_.blades[k].axes.resize(n);
+            motion_.blades[k].wind.resize(n);
         }
         for (const char* o : rotor_outputs) names_.push_back(s_.output_prefix + o);
         for (std::size_t k = 0; k < c.blades.size(); ++k)
@@ -167,9 +168,9 @@ public:
     const runtime::BlockPorts& ports() const override { return ports_; }
     std::vector<std::string> output_names() const override { return names_; }
 
-    void evaluate(double, const double*, const double* r, double* loads, double*,
+    void evaluate(double t, const double*, const double* r, double* loads, double*,
                   double* out) const override {
-        const RotorResult* res = &solve(r, wind(r));
+        const RotorResult* res = &solve(r, t, wind(r));
         if (dynamics_->active()) res = &apply_dynamics();
         write_loads(*res, loads);
         tower_->write_loads(loads + ports_.loads.size() - tower_->loads().size());
@@ -180,7 +181,7 @@ public:
 
     void update_discrete_states(double t, const double*, const double* r, double t_next,
                                 const double*, const double* r_next) const override {
-        update_dynamics(t_next - t, r, r_next);
+        update_dynamics(t, t_next, r, r_next);
     }
 
     void reset_discrete_states() const override { dynamics_->reset(); }
@@ -197,8 +198,9 @@ private:
     double wind(const double* r) const { return r[ports_.outputs_read.size()]; }
 
     /// The rotor solved quasi-steadily at the motion read in r and the wind
-    /// `wind_speed` (the steady BEM, AeroDyn's element solves and integrals).
-    const RotorResult& solve(const double* r, double wind_speed) const {
+    /// of time `wind_time` with V_wind `wind_speed` (the steady BEM, AeroDyn's
+    /// element solves and integrals).
+    const RotorResult& solve(const double* r, double wind_time, double wind_speed) const {
         const std::size_t hub_n = s_.channels.hub_outputs.size();
         const double* blade_values = r + hub_n;
         const double* inputs = r + ports_.outputs_read.size();
@@ -235,8 +237,13 @@ private:
             const double hub_radius = (frames_[0].r - hub.r).norm();
             rotor_.emplace(s_.rotor, hub_radius);
         }
-        tower_->read(blade_values, Vector3d(wind_speed, 0, 0));
-        tower_->disturb(motion_, Vector3d(wind_speed, 0, 0));
+        // InflowWind's wind at each node's deflected position, then the tower's
+        // disturbance on top (AeroDyn's InflowOnBlade, DisturbedInflow).
+        const FreeWind free{s_.wind_field.get(), wind_time, wind_speed};
+        for (RotorMotion::Blade& b : motion_.blades)
+            for (std::size_t j = 0; j < b.position.size(); ++j) b.wind[j] = free.at(b.position[j]);
+        tower_->read(blade_values, free);
+        tower_->disturb(motion_);
         return rotor_->evaluate(motion_, Vector3d(wind_speed, 0, 0), true);
     }
 
@@ -248,12 +255,16 @@ private:
     }
 
     /// AeroDyn's BEMT_UpdateStates from the values read at t (r) and t + dt (r_next).
-    void update_dynamics(double dt, const double* r, const double* r_next) const {
+    void update_dynamics(double t, double t_next, const double* r, const double* r_next) const {
         const double wind_t = wind(r), wind_next = wind(r_next);
-        dynamics_->update(dt, wind_t != wind_next, [&](bool at_next, bool with_wind_next) {
-            solve(at_next ? r_next : r, at_next || with_wind_next ? wind_next : wind_t);
-            return ElementDynamics::Solved{&*rotor_, &motion_, &node_omega_};
-        });
+        const bool field_changes = s_.wind_field && !s_.wind_field->steady();
+        dynamics_->update(t_next - t, wind_t != wind_next || field_changes,
+                          [&](bool at_next, bool with_wind_next) {
+                              const bool next = at_next || with_wind_next;
+                              solve(at_next ? r_next : r, next ? t_next : t,
+                                    next ? wind_next : wind_t);
+                              return ElementDynamics::Solved{&*rotor_, &motion_, &node_omega_};
+                          });
     }
 
     /// The inductions of the point (r, z) held while the loads are differenced;

@@ -69,11 +69,14 @@ BlockTower::BlockTower(const RotorInput& rotor, const TowerChannels& channels)
     blade_winds_.resize(nodes);
 }
 
-void BlockTower::read(const double* values, const Vector3d& wind) {
+void BlockTower::read(const double* values, const FreeWind& wind) {
     if (!used()) return;
     const std::size_t n = rotor_.tower.size();
-    for (std::size_t j = 0; j < n; ++j) state_.wind[j] = vec3(wind);
-    if (channels_.outputs.empty()) return; // the undeflected tower, at rest
+    if (channels_.outputs.empty()) { // the undeflected tower, at rest
+        for (std::size_t j = 0; j < n; ++j)
+            state_.wind[j] = vec3(wind.at(eigen(state_.position[j])));
+        return;
+    }
     runtime::read_body_frame(values, modes_, frame_);
     if (points_.empty()) {
         // TwrElev is measured from the ground, the tower body from its origin
@@ -87,19 +90,17 @@ void BlockTower::read(const double* values, const Vector3d& wind) {
         state_.position[j] = vec3(pm.r);
         state_.axis[j] = vec3(pm.R.col(2));
         state_.velocity[j] = vec3(pm.v);
+        state_.wind[j] = vec3(wind.at(pm.r));
     }
 }
 
-void BlockTower::disturb(RotorMotion& motion, const Vector3d& wind) {
-    if (!influence_.active()) {
-        for (auto& b : motion.blades) b.wind.clear();
-        return;
-    }
+void BlockTower::disturb(RotorMotion& motion) {
+    if (!influence_.active()) return;
     std::size_t i = 0;
     for (const auto& b : motion.blades)
-        for (const Vector3d& p : b.position) {
-            blade_points_[i] = vec3(p);
-            blade_winds_[i++] = vec3(wind);
+        for (std::size_t j = 0; j < b.position.size(); ++j) {
+            blade_points_[i] = vec3(b.position[j]);
+            blade_winds_[i++] = vec3(b.wind[j]);
         }
     const double clearance = disturb_winds(influence_, rotor_.tower, state_, blade_points_.data(),
                                            blade_winds_.data(), i);
@@ -107,10 +108,8 @@ void BlockTower::disturb(RotorMotion& motion, const Vector3d& wind) {
         throw std::invalid_argument("blade elements: tower strike (a blade node " +
                                     std::to_string(-clearance) + " m inside the tower's surface)");
     i = 0;
-    for (auto& b : motion.blades) {
-        b.wind.resize(b.position.size());
+    for (auto& b : motion.blades)
         for (Vector3d& w : b.wind) w = eigen(blade_winds_[i++]);
-    }
 }
 
 void BlockTower::write_loads(double* loads) {

@@ -7,11 +7,23 @@
 #include "yamsc/aero/bem_rotor.hpp"
 #include "yamsc/aero/blade_element_block.hpp"
 #include "yamsc/aero/tower_influence.hpp"
+#include "yamsc/wind/wind_field.hpp"
 
 #include <optional>
 #include <vector>
 
 namespace yamsc::aero {
+
+/// The undisturbed wind at a point at one time: the field's, its reference speed
+/// replaced by the V_wind the block reads (wind_field.hpp), or without a field
+/// V_wind along ground x everywhere.
+struct FreeWind {
+    const runtime::WindField* field = nullptr;
+    double time = 0, speed = 0;
+    Eigen::Vector3d at(const Eigen::Vector3d& p) const {
+        return field ? field->velocity(time, p, speed) : Eigen::Vector3d(speed, 0, 0);
+    }
+};
 
 class BlockTower {
 public:
@@ -26,11 +38,12 @@ public:
     const std::vector<int>& loads() const { return drag_on_ ? channels_.loads : no_loads_; }
 
     /// Reads the tower's frame and modes (`values`: its mesh outputs) and
-    /// places AeroDyn's tower nodes in the undisturbed uniform `wind`.
-    void read(const double* values, const Eigen::Vector3d& wind);
-    /// Fills each blade's per-node wind in `motion` with the disturbed wind
-    /// at its nodes; throws std::invalid_argument on a tower strike.
-    void disturb(RotorMotion& motion, const Eigen::Vector3d& wind);
+    /// places AeroDyn's tower nodes in the undisturbed `wind` at each.
+    void read(const double* values, const FreeWind& wind);
+    /// Adds the tower's disturbance to each blade's per-node wind in `motion`
+    /// (the undisturbed wind there on entry); throws std::invalid_argument on
+    /// a tower strike.
+    void disturb(RotorMotion& motion);
     /// The drag's loads on the tower's mesh inputs, in `loads()`'s order.
     void write_loads(double* loads);
 

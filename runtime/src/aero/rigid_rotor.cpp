@@ -93,6 +93,10 @@ const RotorResult& RigidRotor::evaluate(const OperatingPoint& op, bool warm_star
             b.velocity[j] = omega.cross(b.position[j] - rf.hub);
             b.axes[j] = b.root_axes * BemRotor::node_axes_in_root(n);
         }
+        b.wind.clear();
+        if (op.wind_field)
+            for (const Vec& p : b.position)
+                b.wind.push_back(op.wind_field->velocity(0.0, p, op.wind_speed));
     }
     const Vec wind =
         op.wind_speed * Vec(std::cos(op.wind_direction), -std::sin(op.wind_direction), 0.0);

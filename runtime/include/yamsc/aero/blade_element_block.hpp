@@ -10,6 +10,7 @@
 #include "yamsc/aero/rotor_input.hpp"
 #include "yamsc/body_mesh.hpp"
 #include "yamsc/load_block.hpp"
+#include "yamsc/wind/wind_field.hpp"
 
 #include <memory>
 #include <string>
@@ -28,7 +29,7 @@ struct TowerChannels {
 
 /// Where the block meets the model: indices into the view's channels.
 struct BladeElementChannels {
-    int wind = -1;  // input: hub-height wind speed along ground x [m/s]
+    int wind = -1;  // input: V_wind, the hub-height wind speed [m/s] (the field's reference speed)
     int pitch = -1; // input (or -1): the blades' collective pitch [rad], about their z axes
                     // from the pitch their frames have relative to the hub (else as they are)
     std::vector<int> hub_outputs; // the hub's mesh outputs (18)
@@ -53,6 +54,10 @@ struct BladeElementSetup {
     /// AeroDyn: BemRotor::freeze_wake).
     bool frozen_wake = false;
     double difference_step = 1e-6;
+    /// The wind at every node (blades and tower) at the block's time, its
+    /// reference speed replaced by the V_wind read (wind_field.hpp); null: V_wind
+    /// along ground x everywhere.
+    std::shared_ptr<const runtime::WindField> wind_field;
 };
 
 std::shared_ptr<const runtime::LoadBlock> blade_element_block(BladeElementSetup setup);

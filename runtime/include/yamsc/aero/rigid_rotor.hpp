@@ -13,6 +13,7 @@
 
 #include "yamsc/aero/bem_rotor.hpp"
 #include "yamsc/aero/rotor_input.hpp"
+#include "yamsc/wind/wind_field.hpp"
 
 namespace yamsc::aero {
 
@@ -34,6 +35,9 @@ struct OperatingPoint {
     double wind_speed = 0;  // [m/s]
     // InflowWind's PropagationDir: the wind blows along (cos d, -sin d, 0) [rad].
     double wind_direction = 0;
+    // If set, the wind at each node is this field's at time 0 with its reference
+    // speed wind_speed (wind_field.hpp), and wind_direction is not used.
+    const runtime::WindField* wind_field = nullptr;
 };
 
 class RigidRotor {
