@@ -161,6 +161,8 @@ void check_run(const fs::path& reference) {
     REQUIRE(model.find("#     --aero NRELOffshrBsline5MW_Onshore_AeroDyn15.dat \\\n") !=
             std::string::npos);
     REQUIRE(model.find(" --dt 0.00625 ") != std::string::npos);
+    REQUIRE(model.find("#     --wind NRELOffshrBsline5MW_InflowWind.dat \\\n") !=
+            std::string::npos);
     REQUIRE(model.find("#     --method abm4") != std::string::npos);
     // The blades turn with the controller's pitch, as ElastoDyn's do.
     REQUIRE(model.find("rotate z -pitch }") != std::string::npos);
@@ -168,9 +170,7 @@ void check_run(const fs::path& reference) {
     yamsc::driver::SimOptions o;
     o.model = f.output;
     o.aero = (folder / "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat").string();
-    o.wind = fs::exists(folder / (stem + ".wnd"))
-                 ? (folder / (stem + ".wnd")).string()
-                 : format(column(openfast, "Wind1VelX_[m/s]").front());
+    o.wind = (folder / "NRELOffshrBsline5MW_InflowWind.dat").string();
     o.controller = YAMSC_ROSCO_DISCON;
     o.controller_input = (folder / "DISCON.IN").string();
     o.tmax = openfast.data.front().back();
