@@ -1,12 +1,15 @@
 // The deck with every ElastoDyn DOF off, as OpenFAST's rigid-rotor reference
-// runs it (data/reference/aero/rigid_U8.csv: 8.9886 rpm, pitch 0, quasi-steady
-// BEM), written by from-openfast (a hub and a rigid body per blade, their
-// motion prescribed) and simulated with its blade elements: the rotor's
-// coefficients, the nodes' angles of attack and the blade-root loads, which
-// carry the aerodynamic loads through the blade's mesh into its joint's reaction.
+// runs it (the rigid runs of data/reference/aero/cases.txt: fixed rotor speed
+// and pitch, quasi-steady BEM), written by from-openfast (a hub and a rigid body
+// per blade, their motion prescribed) and simulated with its blade elements over
+// the run's rows (from its first row's azimuth: nothing else carries over a
+// prescribed quasi-steady rotor's past): the rotor's coefficients, the nodes'
+// angles of attack and the blade-root loads, which carry the aerodynamic loads
+// through the blade's mesh into its joint's reaction.
 #include "analysis/commands.hpp"
 #include "analysis/compare.hpp"
 #include "openfast/from_openfast.hpp"
+#include "reference_cases.hpp"
 #include "test_files.hpp"
 
 #include <doctest/doctest.h>
@@ -14,42 +17,42 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <regex>
+#include <iomanip>
 #include <sstream>
 
 namespace {
 
-namespace fs = std::filesystem;
-const std::string data_dir = YAMSC_TEST_DATA_DIR;
-
-std::string set_entry(std::string text, const std::string& key, const std::string& value) {
-    return std::regex_replace(text, std::regex("\n\\s*\\S+(\\s+)" + key + "\\b"),
-                              "\n  " + value + "$1" + key);
+std::string number(double x) {
+    std::ostringstream s;
+    s << std::setprecision(10) << x;
+    return s.str();
 }
 
-} // namespace
+/// The run simulated over its rows; they and the reference compared.
+void compare(const reference_cases::Case& c) {
+    CAPTURE(c.file);
+    const yamsc::analysis::Table ref = yamsc::analysis::read_table(c.path());
+    auto column = [](const yamsc::analysis::Table& t, const std::string& name) {
+        const int i = t.find(name);
+        REQUIRE_MESSAGE(i >= 0, name);
+        return t.data[static_cast<std::size_t>(i)];
+    };
+    const auto t_ref = column(ref, "Time_[s]");
+    const double t0 = t_ref.front();
 
-TEST_CASE("every DOF off: the prescribed rigid rotor's blade elements match OpenFAST's") {
-    const std::string dir = test_support::scratch_dir("aero", "prescribed_rotor");
-    fs::copy(data_dir + "/reference/operating/deck", dir + "/deck", fs::copy_options::recursive);
-    const std::string ed = dir + "/deck/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat";
-    std::string text = test_support::read_file(ed);
+    reference_cases::Settings settings = c.settings;
     for (const char* dof : {"FlapDOF1", "FlapDOF2", "EdgeDOF", "TeetDOF", "DrTrDOF", "GenDOF",
                             "YawDOF", "TwFADOF1", "TwFADOF2", "TwSSDOF1", "TwSSDOF2"})
-        text = set_entry(text, dof, "False");
-    text = set_entry(text, "RotSpeed", "8.9885664");
-    test_support::write_file(ed, text);
-    const std::string ad = dir + "/deck/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat";
-    // The reference's quasi-steady BEM: no dynamic inflow, no unsteady airfoils.
-    std::string aero = set_entry(test_support::read_file(ad), "NBlOuts", "9");
-    aero = set_entry(aero, "DBEMT_Mod", "0");
-    aero = set_entry(aero, "UA_Mod", "0");
-    aero = std::regex_replace(aero, std::regex("\n[^\n]*BlOutNd"),
-                              "\n3, 5, 7, 9, 11, 13, 15, 17, 18    BlOutNd");
-    test_support::write_file(ad, aero);
+        settings.emplace_back(dof, "False");
+    settings.emplace_back("RotSpeed", number(c.rpm));
+    settings.emplace_back("Azimuth", number(column(ref, "Azimuth_[deg]").front()));
+    for (const char* b : {"BlPitch(1)", "BlPitch(2)", "BlPitch(3)"})
+        settings.emplace_back(b, number(c.pitch_deg));
+    const std::string dir = test_support::scratch_dir("aero", "prescribed_" + c.name());
+    const std::string deck = reference_cases::deck("prescribed_" + c.name() + "_deck", settings);
 
     yamsc::driver::FromOpenFastOptions o;
-    o.deck = dir + "/deck/NREL-5MW.fst";
+    o.deck = deck + "/NREL-5MW.fst";
     o.output = dir + "/rigid.mbd";
     std::ostringstream out, err;
     REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
@@ -58,28 +61,22 @@ TEST_CASE("every DOF off: the prescribed rigid rotor's blade elements match Open
 
     yamsc::driver::SimOptions s;
     s.model = o.output;
-    s.aero = ad;
-    s.wind = "8";
-    s.tmax = 10;
+    s.aero = deck + reference_cases::aerodyn_file;
+    s.wind = number(c.wind);
+    s.u = {{"pitch", 0, c.pitch_deg * M_PI / 180}};
+    s.tmax = t_ref.back() - t0;
     s.dt = 0.025;
     s.channels = yamsc::driver::Channels::openfast;
     s.output = dir + "/rigid.csv";
     REQUIRE_MESSAGE(yamsc::analysis::sim(s, out, err) == 0, err.str());
     const yamsc::analysis::Table y = yamsc::analysis::read_table(s.output);
-    const yamsc::analysis::Table ref =
-        yamsc::analysis::read_table(data_dir + "/reference/aero/rigid_U8.csv");
-    auto column = [](const yamsc::analysis::Table& t, const std::string& name) {
-        const int c = t.find(name);
-        REQUIRE_MESSAGE(c >= 0, name);
-        return t.data[static_cast<std::size_t>(c)];
-    };
-    const auto t_ref = column(ref, "Time_[s]"), t_y = column(y, "Time_[s]");
+    const auto t_y = column(y, "Time_[s]");
     int compared = 0;
     for (std::size_t r = 0; r < t_ref.size(); r += 8) {
-        // The same instant in yamsc's rows (both every 0.025 s from 0).
-        const auto i = static_cast<std::size_t>(std::lround(t_ref[r] / 0.025));
+        // The same instant in yamsc's rows (both every 0.025 s, yamsc's from the first).
+        const auto i = static_cast<std::size_t>(std::lround((t_ref[r] - t0) / 0.025));
         REQUIRE(i < t_y.size());
-        CHECK(t_y[i] == doctest::Approx(t_ref[r]));
+        CHECK(t_y[i] + t0 == doctest::Approx(t_ref[r]));
         CAPTURE(t_ref[r]);
         auto near = [&](const std::string& name, double rel) {
             CAPTURE(name);
@@ -104,4 +101,12 @@ TEST_CASE("every DOF off: the prescribed rigid rotor's blade elements match Open
         ++compared;
     }
     CHECK(compared >= 10);
+}
+
+} // namespace
+
+TEST_CASE("every DOF off: the prescribed rigid rotor's blade elements match OpenFAST's") {
+    // yamsc sim's wind has a speed only: a run in yawed wind is left out.
+    for (const reference_cases::Case& c : reference_cases::cases(reference_cases::Kind::rigid))
+        if (!reference_cases::sets_any(c, {"PropagationDir", "VFlowAng"})) compare(c);
 }
