@@ -21,30 +21,11 @@
 
 namespace {
 
-namespace fs = std::filesystem;
 const std::string data_dir = YAMSC_TEST_DATA_DIR;
-const std::string deck_dir = data_dir + "/reference/operating/deck";
 
 /// The deck copied, with AeroDyn's node outputs at the reference's nodes.
 std::string deck_copy() {
-    static const std::string dir = [] {
-        const std::string d = test_support::scratch_dir("aero", "blade_elements_deck");
-        fs::copy(deck_dir, d, fs::copy_options::recursive);
-        const std::string ad = d + "/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat";
-        std::istringstream in(test_support::read_file(ad));
-        std::string text, line;
-        while (std::getline(in, line)) {
-            if (line.find("NBlOuts") != std::string::npos)
-                line =
-                    "          9   NBlOuts             - Number of blade node outputs [0 - 9] (-)";
-            else if (line.find("BlOutNd") != std::string::npos)
-                line = "3, 5, 7, 9, 11, 13, 15, 17, 18    BlOutNd             - Blade nodes whose "
-                       "values will be output  (-)";
-            text += line + "\n";
-        }
-        test_support::write_file(ad, text);
-        return d;
-    }();
+    static const std::string dir = reference_cases::deck("blade_elements_deck", {});
     return dir;
 }
 

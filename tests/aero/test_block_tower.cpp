@@ -20,36 +20,11 @@
 
 namespace {
 
-namespace fs = std::filesystem;
-const std::string data_dir = YAMSC_TEST_DATA_DIR;
-const std::string deck_dir = data_dir + "/reference/operating/deck";
-const std::string aerodyn_file = "/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat";
-
-/// The deck copied into `name`, its AeroDyn file's entries `changes` set
-/// (the first word of each line whose key matches).
-std::string deck_copy(const std::string& name,
-                      const std::vector<std::pair<std::string, std::string>>& changes) {
-    const std::string d = test_support::scratch_dir("aero", name);
-    fs::remove_all(d);
-    fs::copy(deck_dir, d, fs::copy_options::recursive);
-    std::istringstream in(test_support::read_file(d + aerodyn_file));
-    std::string text, line;
-    while (std::getline(in, line)) {
-        for (const auto& [key, value] : changes) {
-            std::istringstream words(line);
-            std::string first, second;
-            words >> first >> second;
-            if (second == key) line = value + "   " + key;
-        }
-        text += line + "\n";
-    }
-    test_support::write_file(d + aerodyn_file, text);
-    return d;
-}
+const std::string aerodyn_file = reference_cases::aerodyn_file;
 
 /// The deck as it is (TwrPotent 0, TwrAero False), copied once.
 const std::string& plain_deck() {
-    static const std::string dir = deck_copy("block_tower_plain", {});
+    static const std::string dir = reference_cases::deck("block_tower_plain", {});
     return dir;
 }
 
@@ -160,7 +135,7 @@ TEST_CASE("the blade-element block's tower drag reaches the tower as its distrib
     // mesh inputs (force and moment at its base in its axes) carry the total of
     // the drag per length, linear between AeroDyn's tower nodes, and its moment
     // about the base; 16.85 kN and 683.2 kN m (test_tower_drag.cpp).
-    const std::string drag = deck_copy("block_tower_drag", {{"TwrAero", "True"}});
+    const std::string drag = reference_cases::deck("block_tower_drag", {{"TwrAero", "True"}});
     const yamsc::analysis::Loaded& l = five_mw();
     yamsc::analysis::BlockOptions options;
     options.aero = drag + aerodyn_file;
@@ -219,7 +194,7 @@ TEST_CASE("the blade-element block stops at a tower strike, as AeroDyn does") {
     // Blade 1 pointing down, bent downwind by its first flap mode (1 at the
     // tip) until a node reaches the tower's surface: AeroDyn's "Tower strike".
     const yamsc::analysis::Loaded& l = five_mw();
-    const std::string tower = deck_copy("block_tower_strike", {{"TwrPotent", "1"}});
+    const std::string tower = reference_cases::deck("block_tower_strike", {{"TwrPotent", "1"}});
     yamsc::analysis::BlockOptions options;
     options.aero = tower + aerodyn_file;
     const yamsc::runtime::ModelView v = yamsc::analysis::with_load_blocks(l, options);
