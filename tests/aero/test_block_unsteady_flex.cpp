@@ -40,7 +40,8 @@ using Columns = std::map<std::string, std::vector<double>>;
 
 /// The run of `c` (once per test process): from undeflected blades and tower, as
 /// the reference, the blades pitched in the structure (ElastoDyn's BlPitch) and in
-/// the block (the pitch input), 80 s with ElastoDyn's ABM4.
+/// the block (the pitch input), as long as the reference (80 s given) and with its
+/// rows (every 0.1 s), with ElastoDyn's ABM4.
 const Columns& run(const Case& c) {
     static std::map<std::string, Columns> runs;
     if (runs.count(c.file)) return runs[c.file];
@@ -57,9 +58,10 @@ const Columns& run(const Case& c) {
 
     yamsc::driver::SimOptions o;
     o.model = f.output;
-    o.tmax = 80;
+    const std::vector<double> time = reference_cases::column(c.path(), "Time");
+    o.tmax = time.back();
     o.dt = 0.00625;
-    o.dt_out = 0.1;
+    o.dt_out = time.at(1) - time.at(0);
     o.set = {{"Omega0", 0, c.rpm * M_PI / 30}};
     o.u = {{"pitch", 0, c.pitch_deg * M_PI / 180}};
     for (const char* q : {"q_fa1", "q_ss1", "q_b1_flap1", "q_b1_edge1", "q_b2_flap1", "q_b2_edge1",
@@ -72,7 +74,7 @@ const Columns& run(const Case& c) {
     o.output = deck + "/flex.csv";
     const auto start = std::chrono::steady_clock::now();
     REQUIRE_MESSAGE(yamsc::analysis::sim(o, out, err) == 0, err.str());
-    std::printf("block %s: 80 s in %.1f s\n", c.file.c_str(),
+    std::printf("block %s: %.0f s in %.1f s\n", c.file.c_str(), o.tmax,
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     return runs[c.file] = read_columns(o.output);
 }
