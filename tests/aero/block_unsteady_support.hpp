@@ -1,7 +1,7 @@
 #pragma once
 // The NREL 5-MW model from-openfast writes, with the AeroDyn file edited, for the
 // tests of the blade-element block's unsteady aerodynamics and dynamic inflow
-// (test_block_unsteady_*.cpp), and OpenFAST's reference runs (data/reference/aero).
+// (test_block_unsteady_*.cpp), and the columns of OpenFAST's reference runs and yamsc's.
 #include "analysis/load_blocks.hpp"
 #include "analysis/loaded_model.hpp"
 #include "openfast/from_openfast.hpp"
@@ -20,29 +20,6 @@
 namespace block_unsteady {
 
 inline const std::string data_dir = YAMSC_TEST_DATA_DIR;
-
-/// The deck copied to scratch directory `name`, its AeroDyn file's lines holding
-/// a key of `lines` replaced by the value (AeroDyn's node outputs at the
-/// references' nodes always).
-inline std::string deck_copy(const std::string& name,
-                             std::vector<std::pair<std::string, std::string>> lines) {
-    namespace fs = std::filesystem;
-    const std::string d = test_support::scratch_dir("aero", name);
-    fs::remove_all(d);
-    fs::copy(data_dir + "/reference/operating/deck", d, fs::copy_options::recursive);
-    lines.emplace_back("NBlOuts", "9   NBlOuts");
-    lines.emplace_back("BlOutNd", "3, 5, 7, 9, 11, 13, 15, 17, 18    BlOutNd");
-    const std::string ad = d + "/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat";
-    std::istringstream in(test_support::read_file(ad));
-    std::string text, line;
-    while (std::getline(in, line)) {
-        for (const auto& [key, value] : lines)
-            if (line.find(" " + key + " ") != std::string::npos) line = value + " -";
-        text += line + "\n";
-    }
-    test_support::write_file(ad, text);
-    return d;
-}
 
 /// The deck's model with its blade-element block, DOFs as `dofs` says.
 inline yamsc::runtime::ModelView model(const std::string& deck,
@@ -76,11 +53,6 @@ inline std::map<std::string, std::vector<double>> read_columns(const std::string
             columns[header.at(i)].push_back(std::stod(c));
     }
     return columns;
-}
-
-/// A reference run's columns by name.
-inline std::map<std::string, std::vector<double>> read_reference(const std::string& name) {
-    return read_columns(data_dir + "/reference/aero/" + name);
 }
 
 inline std::size_t index_of(const std::vector<std::string>& names, const std::string& name) {

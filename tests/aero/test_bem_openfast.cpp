@@ -1,10 +1,12 @@
 // The rigid NREL 5-MW rotor against OpenFAST v5 + AeroDyn (every ElastoDyn DOF
-// off, quasi-steady BEM; data/reference/aero/README.md): RtFldCp and RtFldCt
-// within 0.5 %, the nine output nodes' angle of attack within 0.1 deg, their Fx
-// and Fy within 1 % of the blade's largest, at azimuths over a revolution.
+// off, quasi-steady BEM; data/reference/aero/README.md), every rigid run of its
+// cases.txt: RtFldCp and RtFldCt within 0.5 %, the nine output nodes' angle of
+// attack within 0.1 deg, their Fx and Fy within 1 % of the blade's largest, at
+// azimuths over a revolution.
 #include "analysis/aerodyn_rotor.hpp"
 #include "analysis/commands.hpp"
 #include "driver/commands.hpp"
+#include "reference_cases.hpp"
 #include "yamsc/aero/rigid_rotor.hpp"
 #include "yamsc/aero/rotor_table.hpp"
 #include "yamsc/performance_table.hpp"
@@ -67,11 +69,23 @@ struct Worst {
     double cp = 0, ct = 0, alpha = 0, fx = 0, fy = 0; // %, %, deg, % of largest, % of largest
 };
 
+// The deck's rotor with the run's AeroDyn entries set.
+aero::RotorInput rotor_of(const reference_cases::Case& c) {
+    const std::string deck = reference_cases::deck("bem_openfast_" + c.name(), c.settings);
+    diag::Diagnostics diags;
+    const auto rotor = analysis::read_aerodyn_rotor(deck + reference_cases::aerodyn_file, 3, diags);
+    REQUIRE_MESSAGE(rotor, diags.render());
+    return *rotor;
+}
+
 // warm: each row starts from the previous row's phi, as AeroDyn's constraint state.
-Worst compare(const std::string& name, double propagation_deg, bool warm = false) {
-    const auto rows = read_csv(data_dir + "aero/" + name + ".csv");
+Worst compare(const reference_cases::Case& c, bool warm = false) {
+    const std::string name = c.name();
+    const double propagation_deg = c.number("PropagationDir", 0);
+    const auto rows = read_csv(c.path());
     REQUIRE(rows.size() > 80);
-    aero::RigidRotor rotor(nrel5mw(), aero::RotorGeometry{});
+    const aero::RotorInput input = rotor_of(c); // the rotor keeps a reference to it
+    aero::RigidRotor rotor(input, aero::RotorGeometry{});
     Worst w;
     for (const std::size_t i : {0, 13, 26, 40, 53, 67, 80}) {
         const Row& r = rows[i];
@@ -123,24 +137,15 @@ Worst compare(const std::string& name, double propagation_deg, bool warm = false
 
 } // namespace
 
-TEST_CASE("bem: rigid rotor at 8 m/s (below rated) as OpenFAST + AeroDyn") {
-    compare("rigid_U8", 0);
+TEST_CASE("bem: every rigid rotor run (rigid_U8, rigid_U11.4, rigid_U16, rigid_U8_prop20 and "
+          "those held) as OpenFAST + AeroDyn") {
+    for (const reference_cases::Case& c : reference_cases::cases(reference_cases::Kind::rigid))
+        compare(c);
 }
 
-TEST_CASE("bem: rigid rotor at 8 m/s from the previous azimuth's inflow angles") {
-    compare("rigid_U8", 0, true);
-}
-
-TEST_CASE("bem: rigid rotor at 11.4 m/s (rated) as OpenFAST + AeroDyn") {
-    compare("rigid_U11.4", 0);
-}
-
-TEST_CASE("bem: rigid rotor at 16 m/s (pitched) as OpenFAST + AeroDyn") {
-    compare("rigid_U16", 0);
-}
-
-TEST_CASE("bem: rigid rotor in wind from 20 deg (skewed wake) as OpenFAST + AeroDyn") {
-    compare("rigid_U8_prop20", 20);
+TEST_CASE("bem: every rigid rotor run from the previous azimuth's inflow angles") {
+    for (const reference_cases::Case& c : reference_cases::cases(reference_cases::Kind::rigid))
+        compare(c, true);
 }
 
 // ROSCO's table of the deck was made with CCBlade, not AeroDyn: CCBlade's

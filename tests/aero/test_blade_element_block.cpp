@@ -1,12 +1,13 @@
 // `load blade_elements` on the NREL 5-MW structure from-openfast writes, its
 // blades undeflected: the rotor of AeroDyn's BEM through the blades' meshes,
-// against OpenFAST + AeroDyn's rigid rotor (data/reference/aero/rigid_*.csv:
-// every ElastoDyn DOF off, quasi-steady BEM) and against the rigid rotor of
-// yamsc/aero/rigid_rotor.hpp, which places the nodes from the geometry alone.
+// against OpenFAST + AeroDyn's rigid rotor (the rigid runs of
+// data/reference/aero/cases.txt: every ElastoDyn DOF off, quasi-steady BEM) and against the rigid
+// rotor of yamsc/aero/rigid_rotor.hpp, which places the nodes from the geometry alone.
 #include "analysis/load_blocks.hpp"
 #include "analysis/loaded_model.hpp"
 #include "loaded_channels.hpp"
 #include "openfast/from_openfast.hpp"
+#include "reference_cases.hpp"
 #include "test_files.hpp"
 
 #include <doctest/doctest.h>
@@ -20,30 +21,11 @@
 
 namespace {
 
-namespace fs = std::filesystem;
 const std::string data_dir = YAMSC_TEST_DATA_DIR;
-const std::string deck_dir = data_dir + "/reference/operating/deck";
 
 /// The deck copied, with AeroDyn's node outputs at the reference's nodes.
 std::string deck_copy() {
-    static const std::string dir = [] {
-        const std::string d = test_support::scratch_dir("aero", "blade_elements_deck");
-        fs::copy(deck_dir, d, fs::copy_options::recursive);
-        const std::string ad = d + "/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat";
-        std::istringstream in(test_support::read_file(ad));
-        std::string text, line;
-        while (std::getline(in, line)) {
-            if (line.find("NBlOuts") != std::string::npos)
-                line =
-                    "          9   NBlOuts             - Number of blade node outputs [0 - 9] (-)";
-            else if (line.find("BlOutNd") != std::string::npos)
-                line = "3, 5, 7, 9, 11, 13, 15, 17, 18    BlOutNd             - Blade nodes whose "
-                       "values will be output  (-)";
-            text += line + "\n";
-        }
-        test_support::write_file(ad, text);
-        return d;
-    }();
+    static const std::string dir = reference_cases::deck("blade_elements_deck", {});
     return dir;
 }
 
@@ -90,17 +72,17 @@ using aero_test::index_of;
 TEST_CASE("the blade-element rotor on undeflected blades matches OpenFAST's rigid rotor") {
     const std::string path = model_with_blade_elements();
     auto l = std::make_optional(aero_test::load_model(path));
-    yamsc::analysis::BlockOptions blocks;
-    blocks.aero = deck_copy() + "/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat";
-    const yamsc::runtime::ModelView v = yamsc::analysis::with_load_blocks(*l, blocks);
 
-    struct Case {
-        const char* file;
-        double wind;
-    };
-    for (const Case& c :
-         {Case{"rigid_U8.csv", 8.0}, Case{"rigid_U11.4.csv", 11.4}, Case{"rigid_U16.csv", 16.0}}) {
+    // The block's wind has a speed only: a run in yawed wind is left out.
+    for (const reference_cases::Case& c : reference_cases::cases(reference_cases::Kind::rigid)) {
+        if (reference_cases::sets_any(c, {"PropagationDir", "VFlowAng"})) continue;
         CAPTURE(c.file);
+        // The run's AeroDyn entries (quasi-steady BEM) in the block; the
+        // structure is the deck's, its motion the run's.
+        yamsc::analysis::BlockOptions blocks;
+        blocks.aero = reference_cases::deck("blade_elements_" + c.name(), c.settings) +
+                      reference_cases::aerodyn_file;
+        const yamsc::runtime::ModelView v = yamsc::analysis::with_load_blocks(*l, blocks);
         const std::vector<Row> rows = read_reference(c.file);
         for (std::size_t r = 0; r < rows.size(); r += 20) {
             const Row& ref = rows[r];

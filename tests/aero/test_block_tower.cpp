@@ -2,10 +2,12 @@
 // from-openfast writes (its flexible tower bound to the block's `tower` role),
 // with the deck's tower table as the AeroDyn reader reads it: the tower's
 // potential flow through the model's kinematics against OpenFAST's disk-averaged
-// wind (twr_U8 - flex_U8), and the drag set on the tower against its closed form.
+// wind (every tower run of data/reference/aero/cases.txt less its flexible run:
+// twr_U8 - flex_U8 given), and the drag set on the tower against its closed form.
 #include "analysis/load_blocks.hpp"
 #include "analysis/loaded_model.hpp"
 #include "openfast/from_openfast.hpp"
+#include "reference_cases.hpp"
 #include "test_files.hpp"
 #include "tower_reference.hpp"
 
@@ -18,36 +20,11 @@
 
 namespace {
 
-namespace fs = std::filesystem;
-const std::string data_dir = YAMSC_TEST_DATA_DIR;
-const std::string deck_dir = data_dir + "/reference/operating/deck";
-const std::string aerodyn_file = "/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat";
-
-/// The deck copied into `name`, its AeroDyn file's entries `changes` set
-/// (the first word of each line whose key matches).
-std::string deck_copy(const std::string& name,
-                      const std::vector<std::pair<std::string, std::string>>& changes) {
-    const std::string d = test_support::scratch_dir("aero", name);
-    fs::remove_all(d);
-    fs::copy(deck_dir, d, fs::copy_options::recursive);
-    std::istringstream in(test_support::read_file(d + aerodyn_file));
-    std::string text, line;
-    while (std::getline(in, line)) {
-        for (const auto& [key, value] : changes) {
-            std::istringstream words(line);
-            std::string first, second;
-            words >> first >> second;
-            if (second == key) line = value + "   " + key;
-        }
-        text += line + "\n";
-    }
-    test_support::write_file(d + aerodyn_file, text);
-    return d;
-}
+const std::string aerodyn_file = reference_cases::aerodyn_file;
 
 /// The deck as it is (TwrPotent 0, TwrAero False), copied once.
 const std::string& plain_deck() {
-    static const std::string dir = deck_copy("block_tower_plain", {});
+    static const std::string dir = reference_cases::deck("block_tower_plain", {});
     return dir;
 }
 
@@ -77,13 +54,18 @@ std::size_t index_of(const std::vector<std::string>& names, const std::string& n
     return 0;
 }
 
-} // namespace
-
-TEST_CASE("the blade-element block's tower: OpenFAST's disk-averaged wind change and the drag") {
+/// The disk-averaged wind the tower run's AeroDyn entries change, at its mean
+/// deflections (its last 20 s: tower and blades), in the block; OpenFAST's
+/// change (tower run less its flexible run) and the spread of its 10-s halves.
+struct WindChange {
+    double block = 0, reference = 0, spread = 0;
+};
+WindChange wind_change(const reference_cases::Case& c) {
+    CAPTURE(c.file);
+    const reference_cases::Case base = reference_cases::base_run(c);
     const yamsc::analysis::Loaded& l = five_mw();
-    const std::string& plain = plain_deck();
-    const std::string tower =
-        deck_copy("block_tower_twr", {{"TwrPotent", "1"}, {"TwrAero", "True"}});
+    const std::string plain = reference_cases::deck("block_tower_" + base.name(), base.settings);
+    const std::string tower = reference_cases::deck("block_tower_" + c.name(), c.settings);
     yamsc::analysis::BlockOptions without, with;
     without.aero = plain + aerodyn_file;
     with.aero = tower + aerodyn_file;
@@ -91,12 +73,11 @@ TEST_CASE("the blade-element block's tower: OpenFAST's disk-averaged wind change
     const yamsc::runtime::ModelView v1 = yamsc::analysis::with_load_blocks(l, with);
     REQUIRE(v0.nu == v1.nu);
 
-    // The mean deflections of twr_U8 (its last 20 s): tower and blades.
-    const std::string ref = data_dir + "/reference/aero/";
-    const yamsc::table::Table flex = yamsc::table::read_table(ref + "flex_U8.csv");
-    const yamsc::table::Table twr = yamsc::table::read_table(ref + "twr_U8.csv");
+    const double from = reference_cases::last_20_s(c);
+    const yamsc::table::Table flex = yamsc::table::read_table(base.path());
+    const yamsc::table::Table twr = yamsc::table::read_table(c.path());
     auto mean = [&](const char* column) {
-        return tower_reference::statistics(twr, column, 60.0).mean;
+        return tower_reference::statistics(twr, column, from).mean;
     };
     std::vector<double> q(static_cast<std::size_t>(v0.nq), 0.0),
         qd = q, u(static_cast<std::size_t>(v0.nu), 0.0), y0(static_cast<std::size_t>(v0.ny)),
@@ -109,32 +90,44 @@ TEST_CASE("the blade-element block's tower: OpenFAST's disk-averaged wind change
         q[index_of(v0.dof_names, b + "edge1")] = mean("Q_B1E1_[m]");
         q[index_of(v0.dof_names, b + "flap2")] = mean("Q_B1F2_[m]");
     }
-    const double omega = 8.988566 * M_PI / 30;
+    const double omega = c.rpm * M_PI / 30;
     qd[index_of(v0.dof_names, "psi")] = omega;
-    u[index_of(v0.input_names, "V_wind")] = 8.0;
+    u[index_of(v0.input_names, "V_wind")] = c.wind;
+    u[index_of(v0.input_names, "pitch")] = c.pitch_deg * M_PI / 180;
     const std::size_t psi = index_of(v0.dof_names, "psi");
     const std::size_t wind_avg = index_of(v0.output_names, "RtVAvgxh");
 
     // The rotor turned through a third of a revolution (the three blades pass
     // the tower once each), 1 deg apart.
     const int steps = 120;
-    double change = 0;
+    WindChange w;
     for (int k = 0; k < steps; ++k) {
         q[psi] = k * M_PI / 180;
         v0.outputs(0.0, q.data(), qd.data(), u.data(), y0.data());
         v1.outputs(0.0, q.data(), qd.data(), u.data(), y1.data());
-        change += (y1[wind_avg] - y0[wind_avg]) / steps;
+        w.block += (y1[wind_avg] - y0[wind_avg]) / steps;
     }
     // OpenFAST's change over the last 20 s, known to within the spread of its
     // two 10-s halves (test_tower_influence.cpp: rows every 0.1 s sample the
-    // 0.3-s dips unevenly), and the tower functions' own figure on the
-    // rotor's geometry with quadratic deflections, -0.04117 m/s.
-    const double reference = tower_reference::effect(flex, twr, 60.0).rotor_wind_change;
-    const double spread = tower_reference::change_spread(flex, twr, "RtVAvgxh_[m/s]", {60, 70, 81});
-    MESSAGE("RtVAvgxh change: block " << change << " m/s, OpenFAST " << reference << " +- "
-                                      << spread);
-    CHECK(std::abs(change - reference) < spread);
-    CHECK(change == doctest::Approx(-0.04117).epsilon(0.01));
+    // 0.3-s dips unevenly).
+    w.reference = tower_reference::effect(flex, twr, from).rotor_wind_change;
+    w.spread =
+        tower_reference::change_spread(flex, twr, "RtVAvgxh_[m/s]", {from, from + 10, from + 21});
+    MESSAGE("RtVAvgxh change: block " << w.block << " m/s, OpenFAST " << w.reference << " +- "
+                                      << w.spread);
+    return w;
+}
+
+} // namespace
+
+TEST_CASE("the blade-element block's tower: OpenFAST's disk-averaged wind change and the drag") {
+    for (const reference_cases::Case& c : reference_cases::cases(reference_cases::Kind::tower)) {
+        const WindChange w = wind_change(c);
+        CHECK(std::abs(w.block - w.reference) < w.spread);
+        // twr_U8's: the tower functions' own figure on the rotor's geometry with
+        // quadratic deflections (test_tower_influence.cpp), -0.04117 m/s.
+        if (c.file == "twr_U8.csv") CHECK(w.block == doctest::Approx(-0.04117).epsilon(0.01));
+    }
 }
 
 TEST_CASE("the blade-element block's tower drag reaches the tower as its distributed load") {
@@ -142,7 +135,7 @@ TEST_CASE("the blade-element block's tower drag reaches the tower as its distrib
     // mesh inputs (force and moment at its base in its axes) carry the total of
     // the drag per length, linear between AeroDyn's tower nodes, and its moment
     // about the base; 16.85 kN and 683.2 kN m (test_tower_drag.cpp).
-    const std::string drag = deck_copy("block_tower_drag", {{"TwrAero", "True"}});
+    const std::string drag = reference_cases::deck("block_tower_drag", {{"TwrAero", "True"}});
     const yamsc::analysis::Loaded& l = five_mw();
     yamsc::analysis::BlockOptions options;
     options.aero = drag + aerodyn_file;
@@ -201,7 +194,7 @@ TEST_CASE("the blade-element block stops at a tower strike, as AeroDyn does") {
     // Blade 1 pointing down, bent downwind by its first flap mode (1 at the
     // tip) until a node reaches the tower's surface: AeroDyn's "Tower strike".
     const yamsc::analysis::Loaded& l = five_mw();
-    const std::string tower = deck_copy("block_tower_strike", {{"TwrPotent", "1"}});
+    const std::string tower = reference_cases::deck("block_tower_strike", {{"TwrPotent", "1"}});
     yamsc::analysis::BlockOptions options;
     options.aero = tower + aerodyn_file;
     const yamsc::runtime::ModelView v = yamsc::analysis::with_load_blocks(l, options);

@@ -1,7 +1,8 @@
 // The tower inside `load blade_elements` on the flexible NREL 5-MW turbine at
-// fixed speed in 8 m/s (OpenFAST's flex_U8 and twr_U8: GenDOF, DrTrDOF and
-// YawDOF off, 8.9886 rpm, pitch 0): what the tower's potential flow and drag
-// change, yamsc with minus yamsc without against OpenFAST's twr minus flex.
+// fixed speed (every tower run of data/reference/aero/cases.txt and its flexible
+// run; given, OpenFAST's twr_U8 and flex_U8: GenDOF, DrTrDOF and YawDOF off, 8 m/s,
+// 8.9886 rpm, pitch 0): what the tower's potential flow and drag change, yamsc
+// with minus yamsc without against OpenFAST's tower run minus its flexible run.
 // The effects are compared, not the runs: OpenFAST's runs have dynamic inflow
 // and unsteady airfoils, which the block's steady BEM here leaves out, and
 // which move both runs alike.
@@ -9,6 +10,7 @@
 #include "analysis/loaded_model.hpp"
 #include "analysis/sim_case.hpp"
 #include "openfast/from_openfast.hpp"
+#include "reference_cases.hpp"
 #include "test_files.hpp"
 #include "tower_reference.hpp"
 
@@ -20,34 +22,21 @@
 
 namespace {
 
-namespace fs = std::filesystem;
-const std::string data_dir = YAMSC_TEST_DATA_DIR;
-const std::string aerodyn_file = "/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat";
+const std::string aerodyn_file = reference_cases::aerodyn_file;
 
-/// The deck with TwrPotent 1 and TwrAero True (twr_U8's changes).
-std::string tower_deck() {
-    const std::string d = test_support::scratch_dir("aero", "block_tower_flexible_deck");
-    fs::remove_all(d);
-    fs::copy(data_dir + "/reference/operating/deck", d, fs::copy_options::recursive);
-    std::istringstream in(test_support::read_file(d + aerodyn_file));
-    std::string text, line;
-    while (std::getline(in, line)) {
-        std::istringstream words(line);
-        std::string value, key;
-        words >> value >> key;
-        if (key == "TwrPotent") line = "1   TwrPotent";
-        if (key == "TwrAero") line = "True   TwrAero";
-        text += line + "\n";
+void compare(const reference_cases::Case& c) {
+    CAPTURE(c.file);
+    const reference_cases::Case base = reference_cases::base_run(c);
+    reference_cases::Settings settings = c.settings, base_settings = base.settings;
+    for (const char* b : {"BlPitch(1)", "BlPitch(2)", "BlPitch(3)"}) {
+        settings.emplace_back(b, std::to_string(c.pitch_deg));
+        base_settings.emplace_back(b, std::to_string(c.pitch_deg));
     }
-    test_support::write_file(d + aerodyn_file, text);
-    return d;
-}
-
-} // namespace
-
-TEST_CASE("the blade-element block's tower on the flexible turbine: OpenFAST's twr_U8 - flex_U8") {
-    const std::string deck = tower_deck();
-    const std::string dir = test_support::scratch_dir("aero", "block_tower_flexible");
+    const std::string deck = reference_cases::deck("block_tower_flexible_" + c.name(), settings);
+    const std::string base_deck =
+        reference_cases::deck("block_tower_flexible_" + base.name(), base_settings);
+    const std::string dir =
+        test_support::scratch_dir("aero", "block_tower_flexible_run_" + c.name());
     yamsc::driver::FromOpenFastOptions o;
     o.deck = deck + "/NREL-5MW.fst";
     o.output = dir + "/fixed_speed.mbd";
@@ -57,26 +46,26 @@ TEST_CASE("the blade-element block's tower on the flexible turbine: OpenFAST's t
         REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
     }
 
-    // Both runs start from flex_U8's mean deflections (its last 20 s), so
+    // Both runs start from the flexible run's mean deflections (its last 20 s), so
     // that the few seconds simulated are about the tower's effect, not the
     // start from rest.
-    const std::string ref = data_dir + "/reference/aero/";
-    const yamsc::table::Table flex = yamsc::table::read_table(ref + "flex_U8.csv");
+    const double last_20_s = reference_cases::last_20_s(base);
+    const yamsc::table::Table flex = yamsc::table::read_table(base.path());
     auto mean = [&](const char* column) {
-        return tower_reference::statistics(flex, column, 60.0).mean;
+        return tower_reference::statistics(flex, column, last_20_s).mean;
     };
     yamsc::driver::SimOptions s;
     s.model = o.output;
-    // The azimuth at t = 20 s that of OpenFAST's at 60 s, so that the rows of
+    // The azimuth at t = 20 s that of OpenFAST's at 60 s (its last 20 s), so that the rows of
     // the two windows sample the blades' passages at the same azimuths (rows
     // every 0.1 s = 5.4 deg see each 0.3-s passage 2-3 times: the deviations
     // depend on where).
-    const double omega = 0.941288;
-    s.set = {{"Omega0", 0, omega}, {"psi0", 0, std::fmod(omega * 40, 2 * M_PI)}};
+    const double omega = c.rpm * M_PI / 30;
+    s.set = {{"Omega0", 0, omega}, {"psi0", 0, std::fmod(omega * (last_20_s - 20), 2 * M_PI)}};
     s.tmax = 50;
     s.dt = 0.00625;
     s.dt_out = 0.1;
-    s.u = {{"V_wind", 0, 8.0}};
+    s.u = {{"V_wind", 0, c.wind}, {"pitch", 0, c.pitch_deg * M_PI / 180}};
     s.ic = {{"q_fa1", 0, mean("Q_TFA1_[m]")}, {"q_ss1", 0, mean("Q_TSS1_[m]")}};
     for (int k = 1; k <= 3; ++k) {
         const std::string b = "q_b" + std::to_string(k) + "_";
@@ -90,7 +79,7 @@ TEST_CASE("the blade-element block's tower on the flexible turbine: OpenFAST's t
     REQUIRE_MESSAGE(l, err.str());
     std::string csv[2];
     for (int with = 0; with < 2; ++with) {
-        s.aero = (with ? deck : data_dir + "/reference/operating/deck") + aerodyn_file;
+        s.aero = (with ? deck : base_deck) + aerodyn_file;
         std::ostringstream out;
         const yamsc::analysis::SimRun run = yamsc::analysis::simulate_case(*l, s, out, err);
         REQUIRE(run.result.completed);
@@ -101,7 +90,7 @@ TEST_CASE("the blade-element block's tower on the flexible turbine: OpenFAST's t
     const double from = 20;
     const tower_reference::Effect mine = tower_reference::effect(csv[0], csv[1], from);
     const tower_reference::Effect theirs =
-        tower_reference::effect(ref + "flex_U8.csv", ref + "twr_U8.csv", 60.0);
+        tower_reference::effect(base.path(), c.path(), last_20_s);
     MESSAGE("TwrBsMyt change " << mine.tower_base_moment_change << " (OpenFAST "
                                << theirs.tower_base_moment_change << ") kN m");
     MESSAGE("TTDspFA change " << mine.tower_top_change << " (" << theirs.tower_top_change << ") m");
@@ -154,4 +143,12 @@ TEST_CASE("the blade-element block's tower on the flexible turbine: OpenFAST's t
     CHECK(mine.thrust_deviation_with > mine.thrust_deviation_without);
     CHECK(added_mine == doctest::Approx(added_theirs).epsilon(0.25));
     CHECK(mine.root_flap_dip == doctest::Approx(theirs.root_flap_dip).epsilon(0.25));
+}
+
+} // namespace
+
+TEST_CASE("the blade-element block's tower on the flexible turbine: OpenFAST's tower runs less "
+          "their flexible runs (twr_U8 - flex_U8 and those held)") {
+    for (const reference_cases::Case& c : reference_cases::cases(reference_cases::Kind::tower))
+        compare(c);
 }

@@ -7,6 +7,7 @@
 #include "yamsc/aero/airfoil.hpp"
 #include "yamsc/aero/unsteady_airfoil.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -20,14 +21,71 @@ namespace ua_reference {
 constexpr double pi = 3.14159265358979323846;
 constexpr double deg = pi / 180;
 
-// The driver's deck (ua*_DU25_m8_a8_f1.dvr).
+// The driver's deck (a run's .dvr, e.g. ua3_DU25_m8_a8_f1.dvr).
 struct Driver {
     double chord = 3, speed = 60, frequency = 1, amplitude = 8 * deg, mean = 8 * deg;
     int steps_per_cycle = 400, cycles = 6;
     double d_34_to_ac = 0.5; // -Vec_AQ(2) + Vec_AT(2)
+    yamsc::aero::UnsteadyModel model = yamsc::aero::UnsteadyModel::minnema_pierce; // UAMod
+    bool f_lookup = true;                                                          // FLookup
+    double speed_of_sound = 335;                                                   // SpdSound
+    std::string airfoil = "Airfoils/DU25_A17.dat"; // AirFoil, relative to the operating deck
     double dt() const { return 1 / (frequency * steps_per_cycle); }
     int steps() const { return steps_per_cycle * cycles; }
 };
+
+// A driver deck's entries (the words before an entry's name: its value) as the
+// reduced-frequency simulation (SimMod 1) uses them. Throws on what the tests
+// do not model: another SimMod, a phase, UseCm False.
+inline Driver read_driver(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error("cannot open " + path);
+    std::map<std::string, std::vector<std::string>> entries;
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream words(line);
+        std::vector<std::string> value;
+        for (std::string w; words >> w;) {
+            if (!value.empty() && std::isalpha(static_cast<unsigned char>(w.front()))) {
+                entries[w] = value;
+                break;
+            }
+            if (w.back() == ',') w.pop_back();
+            value.push_back(w);
+        }
+    }
+    auto text = [&](const std::string& name, std::size_t i = 0) {
+        const auto it = entries.find(name);
+        if (it == entries.end() || it->second.size() <= i)
+            throw std::runtime_error(path + ": no " + name);
+        return it->second[i];
+    };
+    auto number = [&](const std::string& name, std::size_t i = 0) {
+        return std::stod(text(name, i));
+    };
+    auto flag = [&](const std::string& name) {
+        const std::string v = text(name);
+        return v == "True" || v == "true" || v == "T" || v == "t";
+    };
+    if (number("SimMod") != 1) throw std::runtime_error(path + ": SimMod must be 1");
+    if (number("Phase") != 0) throw std::runtime_error(path + ": Phase must be 0");
+    if (!flag("UseCm")) throw std::runtime_error(path + ": UseCm False is not modelled");
+    Driver d;
+    d.chord = number("Chord");
+    d.speed = number("InflowVel");
+    d.frequency = number("Frequency");
+    d.amplitude = number("Amplitude") * deg;
+    d.mean = number("Mean") * deg;
+    d.steps_per_cycle = static_cast<int>(number("StepsPerCycle"));
+    d.cycles = static_cast<int>(number("NCycles"));
+    d.d_34_to_ac = -number("Vec_AQ", 1) + number("Vec_AT", 1);
+    d.model = static_cast<yamsc::aero::UnsteadyModel>(static_cast<int>(number("UAMod")));
+    d.f_lookup = flag("FLookup");
+    d.speed_of_sound = number("SpdSound");
+    d.airfoil = text("AirFoil");
+    if (d.airfoil.size() >= 2 && d.airfoil.front() == '"')
+        d.airfoil = d.airfoil.substr(1, d.airfoil.size() - 2);
+    return d;
+}
 
 // UA's inputs at step n = 1, 2, ... (setUAinputsAlphaSim: the airfoil pitches about
 // mid-chord, U is the speed at 3/4 chord).
