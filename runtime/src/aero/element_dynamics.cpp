@@ -67,6 +67,11 @@ bool ElementDynamics::ua_node(std::size_t blade, std::size_t node) const {
 
 void ElementDynamics::apply(BemRotor& rotor, const RotorMotion& motion,
                             const std::vector<std::vector<Eigen::Vector3d>>& node_omega) const {
+    omega_key_.clear();
+    for (const auto& blade : node_omega)
+        for (const Eigen::Vector3d& w : blade)
+            omega_key_.insert(omega_key_.end(), w.data(), w.data() + 3);
+    if (rotor.recall_applied(generation_, omega_key_)) return;
     auto& blades = rotor.nodes();
     if (ua_on_ && ua_inner_.empty()) locate_ua_span(rotor.result());
     const double rho = input_.air_density;
@@ -100,6 +105,7 @@ void ElementDynamics::apply(BemRotor& rotor, const RotorMotion& motion,
             set_coefficients(n.bem, {y.cl, y.cd, y.cm}, n.input.chord, rho, options_);
         }
     rotor.integrate(motion);
+    rotor.keep_applied(generation_, omega_key_);
 }
 
 void ElementDynamics::unsteady_inputs(const RotorResult& r,
@@ -146,6 +152,7 @@ void ElementDynamics::sample(const RotorResult& r, DbemtInput& u, bool stale_phi
 
 void ElementDynamics::step_unsteady(double dt) {
     ua_dt_ = dt;
+    ++generation_;
     std::size_t e = 0;
     for (std::size_t k = 0; k < input_.blades.size(); ++k)
         for (std::size_t j = 0; j < input_.blades[k].size(); ++j, ++e) {

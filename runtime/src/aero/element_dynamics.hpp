@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -74,6 +75,9 @@ private:
     std::vector<UnsteadyInput> ua_t_, ua_next_;
     double ua_dt_ = 0;
     long step_ = 0; // AeroDyn's n of the next update
+    // Counts the changes of the states apply reads (RotorCache's generation).
+    std::uint64_t generation_ = 0;
+    mutable std::vector<double> omega_key_;
 };
 
 template <class Solve> void ElementDynamics::update(double dt, bool wind_changes, Solve&& solve) {
@@ -96,6 +100,7 @@ template <class Solve> void ElementDynamics::update(double dt, bool wind_changes
         sample(s.rotor->result(), u_next_, false);
         have_next_ = true;
         dbemt_->update(u_t_, u_next_, x_);
+        ++generation_;
     }
     // ... then UA from its inputs at t (UA_Mod 3) or t and t + dt (UA_Mod 6, whose
     // inputs at t + dt see DBEMT's new output).
