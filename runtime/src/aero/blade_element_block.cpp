@@ -334,7 +334,7 @@ private:
         }
         // Gathered per structural node: the forces, and their moments about it.
         for (const LoadedNode& n : m.loaded) {
-            const Vector3d at = runtime::point_motion(frames_[k], points[n.point]).r;
+            const Vector3d at = runtime::point_position(frames_[k], points[n.point]);
             Vector3d f = Vector3d::Zero(), mo = Vector3d::Zero();
             for (std::size_t j = 0; j < nodes.size(); ++j) {
                 if (m.nearest[j] != n.point) continue;
