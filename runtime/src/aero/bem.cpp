@@ -219,13 +219,21 @@ BemOptions bem_options(const RotorInput& input) {
     return o;
 }
 
-double prandtl_loss(const ElementInput& in, const BemOptions& opt, double phi) {
-    const double s = std::abs(std::sin(phi));
+namespace {
+
+// Prandtl's loss at |sin phi| = s.
+double prandtl_at(const ElementInput& in, const BemOptions& opt, double s) {
     if (nearly_equal(s, 0.0)) return 1.0;
     double F = 1.0;
     if (opt.tip_loss) F *= prandtl(loss_constant_tip(in), s);
     if (opt.hub_loss) F *= prandtl(loss_constant_hub(in), s);
     return F;
+}
+
+} // namespace
+
+double prandtl_loss(const ElementInput& in, const BemOptions& opt, double phi) {
+    return prandtl_at(in, opt, std::abs(std::sin(phi)));
 }
 
 double axial_induction_momentum(double k, double F) {
@@ -260,7 +268,7 @@ Residual bem_residual(const ElementInput& in, const BemOptions& opt, double phi)
     const double sphi = std::sin(phi), cphi = std::cos(phi);
     const double cx = c.cl * cphi + (opt.axial_drag ? c.cd * sphi : 0.0);
     const double cy = c.cl * sphi - (opt.tangential_drag ? c.cd * cphi : 0.0);
-    const double F = std::max(prandtl_loss(in, opt, phi), 1e-4);
+    const double F = std::max(prandtl_at(in, opt, std::abs(sphi)), 1e-4);
     r.F = F;
 
     const double sigma = in.blades * in.chord / (2.0 * pi * in.r);
