@@ -330,6 +330,8 @@ ElementSolution solve_element(const ElementInput& in, const BemOptions& opt, dou
             ap = std::clamp(r.ap, -1.0, 1.0);
         }
     }
+    s.a_bem = a;
+    s.ap_bem = ap;
     // Pitt/Peters: more induction on the downwind side of the skewed wake. At a
     // fixed-induction node (tip or hub) AeroDyn leaves a = 1.
     if (opt.skew_redistribution && !fixed_inductions(in, opt)) {

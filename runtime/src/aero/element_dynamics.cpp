@@ -141,8 +141,11 @@ void ElementDynamics::sample(const RotorResult& r, DbemtInput& u, bool stale_phi
     std::size_t e = 0;
     for (const auto& blade : r.blades)
         for (const auto& node : blade) {
+            // The solve's own inductions at its root, or those of the last step's root.
             if (!stale_phi) phi_[e] = node.bem;
-            const InductionFactors f = quasi_steady_induction(node.input, options_, phi_[e]);
+            const InductionFactors f = stale_phi
+                                           ? quasi_steady_induction(node.input, options_, phi_[e])
+                                           : InductionFactors{node.bem.a_bem, node.bem.ap_bem};
             u.quasi_steady[e] = induced_velocity(f, node.vx, node.vy);
             u.rlocal[e] = node.r_local;
             a_qs_[e++] = f.axial;
