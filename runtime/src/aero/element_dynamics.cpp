@@ -31,6 +31,7 @@ ElementDynamics::ElementDynamics(const RotorInput& input)
         }
     }
     mp_.assign(elements, MinnemaPierceState{});
+    mp_memo_.assign(elements, MinnemaPierceMemo{});
     oye_.assign(elements, OyeState{});
     ua_t_.resize(elements);
     ua_next_.resize(elements);
@@ -101,7 +102,7 @@ void ElementDynamics::apply(BemRotor& rotor, const RotorMotion& motion,
             const UnsteadyOutput y =
                 ua_settings_.model == UnsteadyModel::oye
                     ? evaluate(af, ua_settings_, n.input.chord, u, oye_[e])
-                    : evaluate(af, ua_settings_, n.input.chord, ua_dt_, u, mp_[e]);
+                    : evaluate(af, ua_settings_, n.input.chord, ua_dt_, u, mp_[e], mp_memo_[e]);
             set_coefficients(n.bem, {y.cl, y.cd, y.cm}, n.input.chord, rho, options_);
         }
     rotor.integrate(motion);
@@ -166,7 +167,7 @@ void ElementDynamics::step_unsteady(double dt) {
             if (ua_settings_.model == UnsteadyModel::oye)
                 step(af, ua_settings_, chord, dt, ua_t_[e], ua_next_[e], oye_[e]);
             else if (step_ > 0) // UA_UpdateStates leaves UA_Mod 3 alone at n = 0
-                step(af, ua_settings_, chord, dt, ua_t_[e], mp_[e]);
+                step(af, ua_settings_, chord, dt, ua_t_[e], mp_[e], mp_memo_[e]);
         }
 }
 

@@ -71,6 +71,7 @@ private:
     // Per blade, found at the first evaluation: UA off for nodes <= inner, >= outer (1-based).
     mutable std::vector<int> ua_inner_, ua_outer_;
     std::vector<MinnemaPierceState> mp_;
+    mutable std::vector<MinnemaPierceMemo> mp_memo_; // the chains apply computed
     std::vector<OyeState> oye_;
     std::vector<UnsteadyInput> ua_t_, ua_next_;
     double ua_dt_ = 0;
