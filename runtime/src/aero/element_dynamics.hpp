@@ -27,6 +27,8 @@ public:
 
     /// Whether the rotor input asks for DBEMT or UA at all.
     bool active() const { return dbemt_on_ || ua_on_; }
+    /// Counts the changes of the states (each update changes them).
+    std::uint64_t generation() const { return generation_; }
 
     /// The nodes of `rotor` (just solved quasi-steadily) with the filtered inductions
     /// and the unsteady coefficients of the current states; node_omega: each node's

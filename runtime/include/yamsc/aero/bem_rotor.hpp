@@ -74,6 +74,7 @@ public:
     /// (0 where that is 0), with no skew or low-TSR correction on top.
     void freeze_wake();
     void release_wake() { frozen_.clear(); }
+    bool wake_frozen() const { return !frozen_.empty(); }
     /// The rotor's loads and coefficients (RtFld*) again from the nodes' element
     /// solutions, after a caller replaced them (dynamic inflow, unsteady
     /// airfoil coefficients); `motion` as given to the last evaluate.
