@@ -2,20 +2,26 @@
 """Cost of the blade-element rotor (`load blade_elements`) against the table
 rotor and OpenFAST + AeroDyn + ServoDyn + ROSCO, on the NREL 5-MW deck.
 
-    bem_speed.py YAMSC_EXE [--runs 3] [--tmax 200] [--workdir DIR] [--json PATH]
-                 [--controllers BUILD/controllers]
+    bem_speed.py YAMSC_EXE [--runs 3] [--tmax 200] [--winds 8,16] [--methods abm4]
+                 [--workdir DIR] [--json PATH] [--controllers BUILD/controllers]
+                 [--quiet-controller]
 
 Models: `yamsc from-openfast` of tests/data/reference/operating/deck (all 16
-ElastoDyn DOFs), once with its blade elements (the default) and once with
-`--aero table`. Each runs 8 m/s for --tmax seconds at the deck's DT 0.00625
-under ROSCO (the copy of DISCON.IN that does not log, when ROSCO is built;
-else the NREL baseline controller), with RK4 and with ABM4 (ElastoDyn's), no
-output file. CPU time = user + system of the whole `yamsc sim` process, the JIT
-cache warmed first, minimum of --runs. OpenFAST's CPU time for 200 s of this
-deck on this class of machine is 66-78 s (tests/data/reference/operating);
-ratios use 66 s scaled to --tmax. The block's cost per call and per node is
-the difference of the two rotors' costs over the right-hand-side evaluations
-(4 per step with RK4, 2 with ABM4: predictor and corrector).
+ElastoDyn DOFs), once with its blade elements (the default: BEM, UA_Mod 3,
+DBEMT_Mod 2 as the deck says) and once with `--aero table`. Each runs as the
+model's header writes the command: the deck's DT 0.00625 s, ElastoDyn's ABM4
+(--methods abm4,rk4 adds RK4), ROSCO with the deck's DISCON.IN (it logs, as
+the header's run does; --quiet-controller: a copy that does not log), rows
+every 0.025 s with OpenFAST's channel names written to a CSV file. When ROSCO
+is not built, the NREL baseline controller. CPU time = user + system of the
+whole `yamsc sim` process, the JIT cache warmed first, minimum of --runs.
+OpenFAST's CPU time for 200 s of this deck on this class of machine is 66-78 s
+(tests/data/reference/operating); ratios are against both ends, scaled to
+--tmax. The block's cost per step is the difference of the two rotors' costs
+over the steps; per right-hand side, that over the integrator's evaluations
+(4 per step with RK4, 2 with ABM4: predictor and corrector), though a step
+also evaluates the block for the controller's measurement and twice in its
+discrete update (the rotor keeps the solutions it can reuse: rotor_cache.hpp).
 """
 
 from __future__ import annotations
@@ -32,7 +38,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 DECK = ROOT / "tests/data/reference/operating/deck"
-OPENFAST_CPU_200S = 66.0
+OPENFAST_CPU_200S = (66.0, 78.0)
 AERODYN_NODES = 3 * 19
 
 
@@ -48,17 +54,24 @@ def main() -> int:
     ap.add_argument("yamsc")
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--tmax", type=float, default=200.0)
+    ap.add_argument("--winds", default="8,16")
+    ap.add_argument("--methods", default="abm4")
     ap.add_argument("--workdir")
     ap.add_argument("--json")
     ap.add_argument("--controllers", default=str(ROOT / "build/controllers"))
+    ap.add_argument("--quiet-controller", action="store_true")
     a = ap.parse_args()
+    if Path(a.yamsc).exists():
+        a.yamsc = str(Path(a.yamsc).resolve())  # the runs' working directory is --workdir
     work = Path(a.workdir or tempfile.mkdtemp(prefix="bem_speed_"))
     work.mkdir(parents=True, exist_ok=True)
     rosco = Path(a.controllers) / "librosco_discon.so"
     baseline = Path(a.controllers) / "libnrel5mw_baseline_discon.so"
     discon = work / "DISCON.IN"
     text = (DECK / "DISCON.IN").read_text()
-    discon.write_text(re.sub(r"\n\s*\d+(\s+! LoggingLevel)", r"\n0\1", text))
+    if a.quiet_controller:
+        text = re.sub(r"\n\s*\d+(\s+! LoggingLevel)", r"\n0\1", text)
+    discon.write_text(text)
     (work / "Cp_Ct_Cq.NREL5MW.txt").write_text((DECK / "Cp_Ct_Cq.NREL5MW.txt").read_text())
     controller = (["--controller", str(rosco), "--controller-input", str(discon)] if rosco.exists()
                   else ["--controller", str(baseline)])
@@ -72,23 +85,35 @@ def main() -> int:
             "table": str(work / "Cp_Ct_Cq.NREL5MW.txt")}
     dt = 0.00625
     results = {"load_average": os.getloadavg()[0], "tmax": a.tmax,
-               "controller": "ROSCO" if rosco.exists() else "baseline", "cases": {}}
+               "controller": ("ROSCO" if rosco.exists() else "baseline") +
+                             (", not logging" if a.quiet_controller else ", logging as the deck says"),
+               "cases": {}}
     steps = a.tmax / dt
-    for method, evaluations in (("rk4", 4), ("abm4", 2)):
-        times = {}
-        for rotor, mbd in models.items():
-            cmd = [a.yamsc, "sim", str(mbd), "--aero", aero[rotor], "--wind", "8", "--tmax",
-                   str(a.tmax), "--dt", str(dt), "--method", method] + controller
-            cpu(cmd, work)  # the JIT cache
-            times[rotor] = min(cpu(cmd, work) for _ in range(a.runs))
-            ratio = OPENFAST_CPU_200S * a.tmax / 200 / times[rotor]
-            results["cases"][f"{rotor}_{method}"] = {"cpu_s": times[rotor], "openfast_ratio": ratio}
-            print(f"{rotor:15s} {method:5s} {times[rotor]:7.2f} s CPU  OpenFAST/yamsc {ratio:6.1f}")
-        per_call = (times["blade_elements"] - times["table"]) / (steps * evaluations)
-        results["cases"][f"block_{method}"] = {"us_per_call": per_call * 1e6,
-                                                "ns_per_node": per_call * 1e9 / AERODYN_NODES}
-        print(f"block cost ({method}): {per_call * 1e6:.1f} us per call, "
-              f"{per_call * 1e9 / AERODYN_NODES:.0f} ns per AeroDyn node")
+    openfast = [c * a.tmax / 200 for c in OPENFAST_CPU_200S]
+    for wind in a.winds.split(","):
+        for method in a.methods.split(","):
+            evaluations = {"rk4": 4, "abm4": 2}[method]
+            times = {}
+            for rotor, mbd in models.items():
+                cmd = [a.yamsc, "sim", str(mbd), "--aero", aero[rotor], "--wind", wind, "--tmax",
+                       str(a.tmax), "--dt", str(dt), "--method", method, "--dt-out", "0.025",
+                       "--channels", "openfast", "-o", str(work / f"{rotor}_{wind}_{method}.csv")
+                       ] + controller
+                cpu(cmd, work)  # the JIT cache
+                times[rotor] = min(cpu(cmd, work) for _ in range(a.runs))
+                ratios = [o / times[rotor] for o in openfast]
+                results["cases"][f"{rotor}_{method}_{wind}"] = {"cpu_s": times[rotor],
+                                                               "openfast_ratio": ratios}
+                print(f"{wind:>3} m/s {rotor:15s} {method:5s} {times[rotor]:7.2f} s CPU  "
+                      f"OpenFAST/yamsc {ratios[0]:5.1f}-{ratios[1]:5.1f}")
+            per_step = (times["blade_elements"] - times["table"]) / steps
+            per_call = per_step / evaluations
+            results["cases"][f"block_{method}_{wind}"] = {
+                "us_per_step": per_step * 1e6, "us_per_rhs": per_call * 1e6,
+                "ns_per_node_per_rhs": per_call * 1e9 / AERODYN_NODES}
+            print(f"{wind:>3} m/s block cost ({method}): {per_step * 1e6:.0f} us per step, "
+                  f"{per_call * 1e6:.0f} us per right-hand side, "
+                  f"{per_call * 1e9 / AERODYN_NODES:.0f} ns per AeroDyn node")
     print(f"load average {results['load_average']:.1f}")
     if a.json:
         Path(a.json).write_text(json.dumps(results, indent=2) + "\n")

@@ -44,18 +44,17 @@ Vector3d elastic_angles(const BodyFrame& f, const BodyPoint& pt) {
     return th;
 }
 
-Matrix3d about(int axis, double angle) {
-    return Eigen::AngleAxisd(angle, Vector3d::Unit(axis)).toRotationMatrix();
-}
-
 /// Body-axes angular velocity of the node per unit rate of each angle, for the
-/// rotations about x, then y, then z: the columns e_x, Rx e_y, Rx Ry e_z.
+/// rotations about x, then y, then z: the columns e_x, Rx e_y, Rx Ry e_z
+/// (written out; (1 - cx) + cx is Rx's first diagonal term as a rotation about
+/// an axis forms it).
 Matrix3d angle_rates(const Vector3d& th) {
-    const Matrix3d rx = about(0, th.x()), rxy = rx * about(1, th.y());
+    const double cx = std::cos(th.x()), sx = std::sin(th.x());
+    const double cy = std::cos(th.y()), sy = std::sin(th.y());
     Matrix3d W;
     W.col(0) = Vector3d::UnitX();
-    W.col(1) = rx.col(1);
-    W.col(2) = rxy.col(2);
+    W.col(1) = Vector3d(0, cx, sx);
+    W.col(2) = Vector3d(((1 - cx) + cx) * sy, -sx * cy, cx * cy);
     return W;
 }
 
@@ -93,6 +92,10 @@ BodyPoint blend(const BodyPoint& a, const BodyPoint& b, double s) {
     if (!a.phi1.empty() && !b.phi1.empty()) p.phi1 = mix(a.phi1, b.phi1);
     p.orientation = s < 0.5 ? a.orientation : b.orientation;
     return p;
+}
+
+Vector3d point_position(const BodyFrame& f, const BodyPoint& pt) {
+    return f.r + f.R * (pt.origin + displacement(f, pt));
 }
 
 PointMotion point_motion(const BodyFrame& f, const BodyPoint& pt) {

@@ -54,6 +54,8 @@ struct PointMotion {
 };
 
 PointMotion point_motion(const BodyFrame& f, const BodyPoint& p);
+/// Its position alone (point_motion's r).
+Eigen::Vector3d point_position(const BodyFrame& f, const BodyPoint& p);
 
 /// The loads a block sets on a body through its mesh channels: force and moment
 /// at the body's origin in body axes, generalized force per mode.

@@ -58,17 +58,20 @@ double inflow_angle(double vx, double vy, double a, double ap) {
 
 // Brent's method on [lo, hi] with f(lo), f(hi) of opposite signs: stops when the
 // bracket is below opt.angle_tolerance or |f| below opt.tolerance (AeroDyn's sub_brent).
+// `at_b`: the residual at the returned root, when the search evaluated it there.
 struct BrentResult {
     double x;
     bool valid;
+    const Residual* at_b;
 };
 BrentResult brent(const ElementInput& in, const BemOptions& opt, double lo, double hi, double flo,
-                  double fhi, bool hi_valid) {
+                  double fhi, bool hi_valid, Residual& rb) {
     const double x_tolerance = opt.angle_tolerance;
     const double eps = std::numeric_limits<double>::epsilon();
     double a = lo, b = hi, fa = flo, fb = fhi;
     double c = a, fc = fa, d = b - a, e = d;
     bool valid = hi_valid;
+    bool b_known = false; // rb holds the residual at b
     for (int iter = 1; iter <= opt.max_iterations; ++iter) {
         if (iter == 1 || (fb > 0 && fc > 0) || (fb <= 0 && fc <= 0)) {
             c = a;
@@ -83,10 +86,11 @@ BrentResult brent(const ElementInput& in, const BemOptions& opt, double lo, doub
             fa = fb;
             fb = fc;
             fc = fa;
+            b_known = false;
         }
         const double tol = 2.0 * eps * std::abs(b) + x_tolerance;
         const double m = 0.5 * (c - b);
-        if (std::abs(m) <= tol || fb == 0.0) return {b, valid};
+        if (std::abs(m) <= tol || fb == 0.0) return {b, valid, b_known ? &rb : nullptr};
         if (std::abs(e) >= tol && std::abs(fa) > std::abs(fb)) {
             double s = fb / fa, p, q;
             if (a != c) {
@@ -117,22 +121,26 @@ BrentResult brent(const ElementInput& in, const BemOptions& opt, double lo, doub
         a = b;
         fa = fb;
         b += std::abs(d) <= tol ? (m > 0 ? tol : -tol) : d;
-        const Residual rb = bem_residual(in, opt, b);
+        rb = bem_residual(in, opt, b);
+        b_known = true;
         fb = rb.f;
         valid = rb.valid;
-        if (std::abs(fb) < opt.tolerance) return {b, valid};
+        if (std::abs(fb) < opt.tolerance) return {b, valid, &rb};
     }
-    return {b, valid};
+    return {b, valid, b_known ? &rb : nullptr};
 }
 
+// The root and, when the search evaluated it there, the residual at it (the
+// same numbers bem_residual gives again).
 struct SolvedPhi {
     double phi;
     bool valid;
+    const Residual* residual = nullptr;
 };
 
 // AeroDyn's BEMT_UnCoupledSolve: the guess if it is still a root, else the
 // three regions in AeroDyn's order, the first bracketed valid root.
-SolvedPhi solve_phi(const ElementInput& in, const BemOptions& opt) {
+SolvedPhi solve_phi(const ElementInput& in, const BemOptions& opt, Residual (&scratch)[4]) {
     if (velocity_is_zero(in.vx)) return {0.0, true};
     if (velocity_is_zero(in.vy)) return {in.vx > 0 ? pi / 2 : -pi / 2, true};
 
@@ -140,8 +148,8 @@ SolvedPhi solve_phi(const ElementInput& in, const BemOptions& opt) {
     bool guess_is_valid = false;
     double f_guess = 0;
     if (in.guess_valid && !nearly_equal(guess, 0.0) && !nearly_equal(std::abs(guess), pi / 2)) {
-        const Residual r = bem_residual(in, opt, guess);
-        if (std::abs(r.f) < opt.tolerance && r.valid) return {guess, true};
+        const Residual& r = scratch[0] = bem_residual(in, opt, guess);
+        if (std::abs(r.f) < opt.tolerance && r.valid) return {guess, true, &r};
         guess_is_valid = r.valid;
         f_guess = r.f;
     }
@@ -161,17 +169,18 @@ SolvedPhi solve_phi(const ElementInput& in, const BemOptions& opt) {
 
     for (int i = 0; i < 3; ++i) {
         double lo = lower[i], hi = upper[i];
-        const Residual r1 = bem_residual(in, opt, lo);
-        const Residual r2 = bem_residual(in, opt, hi);
+        const Residual& r1 = scratch[1] = bem_residual(in, opt, lo);
+        const Residual& r2 = scratch[2] = bem_residual(in, opt, hi);
         double f1 = r1.f, f2 = r2.f;
         bool hi_valid = r2.valid;
         if (nearly_equal(f1, 0.0) && nearly_equal(f2, 0.0) && r1.valid && r2.valid)
-            return {lo > 0 ? lo : hi, true}; // every phi is a root: the one nearer 0
+            return {lo > 0 ? lo : hi, true,
+                    lo > 0 ? &r1 : &r2}; // every phi is a root: the one nearer 0
         if (std::abs(f1) < opt.tolerance) {
-            if (std::abs(f2) < std::abs(f1) && r2.valid) return {hi, true};
-            if (r1.valid) return {lo, true};
+            if (std::abs(f2) < std::abs(f1) && r2.valid) return {hi, true, &r2};
+            if (r1.valid) return {lo, true, &r1};
         } else if (std::abs(f2) < opt.tolerance && r2.valid) {
-            return {hi, true};
+            return {hi, true, &r2};
         }
         if ((f1 >= 0) == (f2 >= 0)) continue; // no sign change in this region
         if (guess_is_valid && ((lo < guess && guess < hi) || (hi < guess && guess < lo))) {
@@ -185,8 +194,8 @@ SolvedPhi solve_phi(const ElementInput& in, const BemOptions& opt) {
                 f1 = f_guess;
             }
         }
-        const BrentResult root = brent(in, opt, lo, hi, f1, f2, hi_valid);
-        if (root.valid) return {root.x, true};
+        const BrentResult root = brent(in, opt, lo, hi, f1, f2, hi_valid, scratch[3]);
+        if (root.valid) return {root.x, true, root.at_b};
         guess_is_valid = false; // AeroDyn carries Brent's last validity on
     }
     return {inflow_angle(in.vx, in.vy, 0.0, 0.0), false};
@@ -211,13 +220,21 @@ BemOptions bem_options(const RotorInput& input) {
     return o;
 }
 
-double prandtl_loss(const ElementInput& in, const BemOptions& opt, double phi) {
-    const double s = std::abs(std::sin(phi));
+namespace {
+
+// Prandtl's loss at |sin phi| = s.
+double prandtl_at(const ElementInput& in, const BemOptions& opt, double s) {
     if (nearly_equal(s, 0.0)) return 1.0;
     double F = 1.0;
     if (opt.tip_loss) F *= prandtl(loss_constant_tip(in), s);
     if (opt.hub_loss) F *= prandtl(loss_constant_hub(in), s);
     return F;
+}
+
+} // namespace
+
+double prandtl_loss(const ElementInput& in, const BemOptions& opt, double phi) {
+    return prandtl_at(in, opt, std::abs(std::sin(phi)));
 }
 
 double axial_induction_momentum(double k, double F) {
@@ -252,7 +269,7 @@ Residual bem_residual(const ElementInput& in, const BemOptions& opt, double phi)
     const double sphi = std::sin(phi), cphi = std::cos(phi);
     const double cx = c.cl * cphi + (opt.axial_drag ? c.cd * sphi : 0.0);
     const double cy = c.cl * sphi - (opt.tangential_drag ? c.cd * cphi : 0.0);
-    const double F = std::max(prandtl_loss(in, opt, phi), 1e-4);
+    const double F = std::max(prandtl_at(in, opt, std::abs(sphi)), 1e-4);
     r.F = F;
 
     const double sigma = in.blades * in.chord / (2.0 * pi * in.r);
@@ -300,19 +317,22 @@ Residual bem_residual(const ElementInput& in, const BemOptions& opt, double phi)
 
 ElementSolution solve_element(const ElementInput& in, const BemOptions& opt, double rho) {
     ElementSolution s;
-    const SolvedPhi solved = solve_phi(in, opt);
+    Residual scratch[4];
+    const SolvedPhi solved = solve_phi(in, opt, scratch);
     s.phi_bem = solved.phi;
     s.valid = solved.valid;
 
     double a = 0, ap = 0;
     if (solved.valid) {
-        const Residual r = bem_residual(in, opt, solved.phi);
+        const Residual r = solved.residual ? *solved.residual : bem_residual(in, opt, solved.phi);
         s.F = r.F;
         if (r.valid) {
             a = std::clamp(r.a, -1.0, 1.5);
             ap = std::clamp(r.ap, -1.0, 1.0);
         }
     }
+    s.a_bem = a;
+    s.ap_bem = ap;
     // Pitt/Peters: more induction on the downwind side of the skewed wake. At a
     // fixed-induction node (tip or hub) AeroDyn leaves a = 1.
     if (opt.skew_redistribution && !fixed_inductions(in, opt)) {

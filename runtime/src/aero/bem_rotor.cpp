@@ -52,6 +52,9 @@ BemRotor::BemRotor(const RotorInput& input, double hub_radius)
 const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind, bool warm_start) {
     const std::size_t nb = std::min(motion.blades.size(), input_.blades.size());
     if (nb == 0) throw std::invalid_argument("blade elements: no blade in motion");
+    const bool cached = warm_start && solved_ && frozen_.empty();
+    if (cached && cache_.recall(motion, wind, result_)) return result_;
+    if (!cached) cache_.clear();
     const Vec x_disk = motion.hub_axes.col(0);
     const Mat hub = motion.hub_axes.transpose(); // AeroDyn's orientation: global to local
     const double omega = motion.hub_angular_velocity.dot(x_disk);
@@ -142,6 +145,7 @@ const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind
     r.skew = chi0;
     r.v_avg_xh = v_dot_x;
     integrate(motion);
+    if (cached) cache_.keep(r);
     solved_ = true;
     return r;
 }

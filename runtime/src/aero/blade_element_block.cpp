@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <optional>
 #include <stdexcept>
 
@@ -170,11 +171,30 @@ public:
 
     void evaluate(double t, const double*, const double* r, double* loads, double*,
                   double* out) const override {
+        // The time, values read, states and wake of the last evaluation again (the
+        // controller's measurement and the integrator's first stage at a step's
+        // start): its loads and outputs stand.
+        const std::size_t nr = ports_.outputs_read.size() + ports_.inputs_read.size();
+        const std::size_t nl = ports_.loads.size();
+        const double tag[] = {t, static_cast<double>(dynamics_->generation()),
+                              rotor_ && rotor_->wake_frozen() ? 1.0 : 0.0};
+        if (evaluated_key_.size() == 3 + nr &&
+            std::memcmp(evaluated_key_.data(), tag, sizeof tag) == 0 &&
+            std::memcmp(evaluated_key_.data() + 3, r, nr * sizeof(double)) == 0) {
+            std::copy(evaluated_.begin(), evaluated_.begin() + nl, loads);
+            std::copy(evaluated_.begin() + nl, evaluated_.end(), out);
+            return;
+        }
+        evaluated_key_.clear();
         const RotorResult* res = &solve(r, t, wind(r));
         if (dynamics_->active()) res = &apply_dynamics();
         write_loads(*res, loads);
         tower_->write_loads(loads + ports_.loads.size() - tower_->loads().size());
         write_outputs(*res, out);
+        evaluated_key_.assign(std::begin(tag), std::end(tag));
+        evaluated_key_.insert(evaluated_key_.end(), r, r + nr);
+        evaluated_.assign(loads, loads + nl);
+        evaluated_.insert(evaluated_.end(), out, out + names_.size());
     }
 
     bool has_discrete_states() const override { return dynamics_->active(); }
@@ -201,6 +221,15 @@ private:
     /// of time `wind_time` with V_wind `wind_speed` (the steady BEM, AeroDyn's
     /// element solves and integrals).
     const RotorResult& solve(const double* r, double wind_time, double wind_speed) const {
+        // The values and wind of the last call again (a step's measurement, first
+        // stage and update read the same): its motion stands (every input of it is
+        // in the key; the wind field's time too).
+        const std::size_t nr = ports_.outputs_read.size() + ports_.inputs_read.size();
+        if (rotor_ && motion_key_.size() == nr + 2 && motion_key_[nr] == wind_speed &&
+            motion_key_[nr + 1] == wind_time &&
+            std::memcmp(r, motion_key_.data(), nr * sizeof(double)) == 0)
+            return rotor_->evaluate(motion_, Vector3d(wind_speed, 0, 0), true);
+        motion_key_.clear();
         const std::size_t hub_n = s_.channels.hub_outputs.size();
         const double* blade_values = r + hub_n;
         const double* inputs = r + ports_.outputs_read.size();
@@ -244,6 +273,9 @@ private:
             for (std::size_t j = 0; j < b.position.size(); ++j) b.wind[j] = free.at(b.position[j]);
         tower_->read(blade_values, free);
         tower_->disturb(motion_);
+        motion_key_.assign(r, r + nr);
+        motion_key_.push_back(wind_speed);
+        motion_key_.push_back(wind_time);
         return rotor_->evaluate(motion_, Vector3d(wind_speed, 0, 0), true);
     }
 
@@ -347,7 +379,7 @@ private:
         }
         // Gathered per structural node: the forces, and their moments about it.
         for (const LoadedNode& n : m.loaded) {
-            const Vector3d at = runtime::point_motion(frames_[k], points[n.point]).r;
+            const Vector3d at = runtime::point_position(frames_[k], points[n.point]);
             Vector3d f = Vector3d::Zero(), mo = Vector3d::Zero();
             for (std::size_t j = 0; j < nodes.size(); ++j) {
                 if (m.nearest[j] != n.point) continue;
@@ -383,6 +415,8 @@ private:
     mutable std::optional<BemRotor> rotor_;
     mutable std::optional<BlockTower> tower_;
     mutable RotorMotion motion_;
+    mutable std::vector<double> motion_key_; // the values read and the wind motion_ is of
+    mutable std::vector<double> evaluated_key_, evaluated_; // the last evaluation's key, results
     mutable std::vector<runtime::BodyFrame> frames_;
     mutable std::vector<runtime::BodyLoad> body_loads_;
     mutable std::vector<std::vector<Vector3d>> lumped_force_, lumped_moment_; // per blade, node

@@ -16,6 +16,11 @@ constexpr double pi = 3.14159265358979323846;
 bool fixed_induction(const ElementInput& in, const BemOptions& opt) {
     // A zero loss constant makes Prandtl's factor zero; at any other node it is well
     // above this bound (0.1 or more at the NREL 5-MW's node next to the tip).
+    // Each factor is 2/pi acos(exp(-c)) at sin phi = 1, above 0.028 for c >= 1e-3:
+    // then the product is above the bound without its exponentials.
+    const double c_tip = in.blades * (in.z_tip - in.z) / (2.0 * in.z);
+    const double c_hub = in.blades * (in.z - in.z_hub) / (2.0 * in.z_hub);
+    if ((!opt.tip_loss || c_tip >= 1e-3) && (!opt.hub_loss || c_hub >= 1e-3)) return false;
     return prandtl_loss(in, opt, pi / 2) < 1e-6;
 }
 

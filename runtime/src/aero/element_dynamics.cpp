@@ -31,6 +31,7 @@ ElementDynamics::ElementDynamics(const RotorInput& input)
         }
     }
     mp_.assign(elements, MinnemaPierceState{});
+    mp_memo_.assign(elements, MinnemaPierceMemo{});
     oye_.assign(elements, OyeState{});
     ua_t_.resize(elements);
     ua_next_.resize(elements);
@@ -45,9 +46,11 @@ void ElementDynamics::reset() {
     a_qs_.clear();
     have_next_ = false;
     mp_.assign(mp_.size(), MinnemaPierceState{});
+    mp_memo_.assign(mp_memo_.size(), MinnemaPierceMemo{});
     oye_.assign(oye_.size(), OyeState{});
     ua_dt_ = 0;
     step_ = 0;
+    ++generation_; // what apply kept belongs to the old states
 }
 
 void ElementDynamics::locate_ua_span(const RotorResult& r) const {
@@ -81,6 +84,11 @@ bool ElementDynamics::ua_node(std::size_t blade, std::size_t node) const {
 
 void ElementDynamics::apply(BemRotor& rotor, const RotorMotion& motion,
                             const std::vector<std::vector<Eigen::Vector3d>>& node_omega) const {
+    omega_key_.clear();
+    for (const auto& blade : node_omega)
+        for (const Eigen::Vector3d& w : blade)
+            omega_key_.insert(omega_key_.end(), w.data(), w.data() + 3);
+    if (rotor.recall_applied(generation_, omega_key_)) return;
     auto& blades = rotor.nodes();
     if (ua_on_ && ua_inner_.empty()) locate_ua_span(rotor.result());
     const double rho = input_.air_density;
@@ -110,10 +118,11 @@ void ElementDynamics::apply(BemRotor& rotor, const RotorMotion& motion,
             const UnsteadyOutput y =
                 ua_settings_.model == UnsteadyModel::oye
                     ? evaluate(af, ua_settings_, n.input.chord, u, oye_[e])
-                    : evaluate(af, ua_settings_, n.input.chord, ua_dt_, u, mp_[e]);
+                    : evaluate(af, ua_settings_, n.input.chord, ua_dt_, u, mp_[e], mp_memo_[e]);
             set_coefficients(n.bem, {y.cl, y.cd, y.cm}, n.input.chord, rho, options_);
         }
     rotor.integrate(motion);
+    rotor.keep_applied(generation_, omega_key_);
 }
 
 void ElementDynamics::unsteady_inputs(const RotorResult& r,
@@ -149,8 +158,11 @@ void ElementDynamics::sample(const RotorResult& r, DbemtInput& u, bool stale_phi
     std::size_t e = 0;
     for (const auto& blade : r.blades)
         for (const auto& node : blade) {
+            // The solve's own inductions at its root, or those of the last step's root.
             if (!stale_phi) phi_[e] = node.bem;
-            const InductionFactors f = quasi_steady_induction(node.input, options_, phi_[e]);
+            const InductionFactors f = stale_phi
+                                           ? quasi_steady_induction(node.input, options_, phi_[e])
+                                           : InductionFactors{node.bem.a_bem, node.bem.ap_bem};
             u.quasi_steady[e] = induced_velocity(f, node.vx, node.vy);
             u.rlocal[e] = node.r_local;
             a_qs_[e++] = f.axial;
@@ -160,6 +172,7 @@ void ElementDynamics::sample(const RotorResult& r, DbemtInput& u, bool stale_phi
 
 void ElementDynamics::step_unsteady(double dt) {
     ua_dt_ = dt;
+    ++generation_;
     std::size_t e = 0;
     for (std::size_t k = 0; k < input_.blades.size(); ++k)
         for (std::size_t j = 0; j < input_.blades[k].size(); ++j, ++e) {
@@ -170,7 +183,7 @@ void ElementDynamics::step_unsteady(double dt) {
             if (ua_settings_.model == UnsteadyModel::oye)
                 step(af, ua_settings_, chord, dt, ua_t_[e], ua_next_[e], oye_[e]);
             else if (step_ > 0) // UA_UpdateStates leaves UA_Mod 3 alone at n = 0
-                step(af, ua_settings_, chord, dt, ua_t_[e], mp_[e]);
+                step(af, ua_settings_, chord, dt, ua_t_[e], mp_[e], mp_memo_[e]);
         }
 }
 

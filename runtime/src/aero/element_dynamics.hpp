@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -26,6 +27,8 @@ public:
 
     /// Whether the rotor input asks for DBEMT or UA at all.
     bool active() const { return dbemt_on_ || ua_on_; }
+    /// Counts the changes of the states (each update changes them).
+    std::uint64_t generation() const { return generation_; }
 
     /// The nodes of `rotor` (just solved quasi-steadily) with the filtered inductions
     /// and the unsteady coefficients of the current states; node_omega: each node's
@@ -74,10 +77,14 @@ private:
     // Per blade, found at the first evaluation: UA off for nodes <= inner, >= outer (1-based).
     mutable std::vector<int> ua_inner_, ua_outer_;
     std::vector<MinnemaPierceState> mp_;
+    mutable std::vector<MinnemaPierceMemo> mp_memo_; // the chains apply computed
     std::vector<OyeState> oye_;
     std::vector<UnsteadyInput> ua_t_, ua_next_;
     double ua_dt_ = 0;
     long step_ = 0; // AeroDyn's n of the next update
+    // Counts the changes of the states apply reads (RotorCache's generation).
+    std::uint64_t generation_ = 0;
+    mutable std::vector<double> omega_key_;
 };
 
 template <class Solve> void ElementDynamics::update(double dt, bool wind_changes, Solve&& solve) {
@@ -100,6 +107,7 @@ template <class Solve> void ElementDynamics::update(double dt, bool wind_changes
         sample(s.rotor->result(), u_next_, false);
         have_next_ = true;
         dbemt_->update(u_t_, u_next_, x_);
+        ++generation_;
     }
     // ... then UA from its inputs at t (UA_Mod 3) or t and t + dt (UA_Mod 6, whose
     // inputs at t + dt see DBEMT's new output).

@@ -9,7 +9,9 @@ namespace {
 
 double wrap_to_pi(double a) {
     constexpr double pi = 3.14159265358979323846;
-    a = std::fmod(a + pi, 2 * pi);
+    a += pi;
+    if (a >= 0 && a < 2 * pi) return a - pi; // fmod would return a itself
+    a = std::fmod(a, 2 * pi);
     if (a < 0) a += 2 * pi;
     return a - pi;
 }

@@ -81,16 +81,7 @@ double f_c_from_lookup(const UnsteadyAirfoil& af, const PolarAt& at, double alph
     return std::min(limit, square(cc / denom + gonzalez_factor));
 }
 
-// Everything ComputeKelvinChain gives.
-struct Chain {
-    double ds, alpha_filt, dalpha0, q, q_f, Kalpha_f, Kq, Kq_f;
-    double k_alpha, T_alpha, T_q, T_f, T_V;
-    double Kprime_alpha, cn_alpha_nc, Kprime_q, cn_q_nc, cn_aq_nc;
-    double X1, X2, alpha_e, cn_aq_circ, K3prime_q, cm_q_circ, cn_pot, Kprimeprime_q, cm_q_nc;
-    double cc_pot, Dp, cn_prime, alpha_f, fprime, Df, fprimeprime;
-    double fprime_c, Df_c, fprimeprime_c, cn_fs, Dalphaf, C_V, cn_v;
-    double cna_circ, T_I;
-};
+using Chain = MinnemaPierceChain;
 
 Chain kelvin_chain(const UnsteadyAirfoil& af, const UnsteadySettings& s, double c, double dt,
                    const UnsteadyInput& u, const MinnemaPierceState& x) {
@@ -311,18 +302,49 @@ void require_model(const UnsteadySettings& s) {
 
 UnsteadyOutput evaluate(const UnsteadyAirfoil& af, const UnsteadySettings& s, double chord,
                         double dt, const UnsteadyInput& in, const MinnemaPierceState& x) {
-    require_model(s);
-    const UnsteadyInput u = fixed(in);
-    if (x.first_pass) return outputs(af, s, chord, u, x, nullptr);
-    const Chain kc = kelvin_chain(af, s, chord, dt, u, x);
-    return outputs(af, s, chord, u, x, &kc);
+    MinnemaPierceMemo none;
+    return evaluate(af, s, chord, dt, in, x, none);
 }
 
 UnsteadyOutput step(const UnsteadyAirfoil& af, const UnsteadySettings& s, double chord, double dt,
                     const UnsteadyInput& in, MinnemaPierceState& x) {
+    MinnemaPierceMemo none;
+    return step(af, s, chord, dt, in, x, none);
+}
+
+namespace {
+
+bool same_input(const MinnemaPierceMemo::Entry& e, const UnsteadyInput& u, double dt) {
+    return e.valid && e.dt == dt && e.u.U == u.U && e.u.alpha == u.alpha && e.u.omega == u.omega &&
+           e.u.v_ac_n == u.v_ac_n && e.u.v_ac_c == u.v_ac_c;
+}
+
+} // namespace
+
+UnsteadyOutput evaluate(const UnsteadyAirfoil& af, const UnsteadySettings& s, double chord,
+                        double dt, const UnsteadyInput& in, const MinnemaPierceState& x,
+                        MinnemaPierceMemo& memo) {
     require_model(s);
     const UnsteadyInput u = fixed(in);
-    const Chain kc = kelvin_chain(af, s, chord, dt, u, x);
+    if (x.first_pass) return outputs(af, s, chord, u, x, nullptr);
+    MinnemaPierceMemo::Entry& e = memo.entries[memo.next];
+    memo.next = 1 - memo.next;
+    e.chain = kelvin_chain(af, s, chord, dt, u, x);
+    e.u = u;
+    e.dt = dt;
+    e.valid = true;
+    return outputs(af, s, chord, u, x, &e.chain);
+}
+
+UnsteadyOutput step(const UnsteadyAirfoil& af, const UnsteadySettings& s, double chord, double dt,
+                    const UnsteadyInput& in, MinnemaPierceState& x, MinnemaPierceMemo& memo) {
+    require_model(s);
+    const UnsteadyInput u = fixed(in);
+    const Chain* kept = nullptr;
+    for (const auto& e : memo.entries)
+        if (same_input(e, u, dt)) kept = &e.chain;
+    const Chain kc = kept ? *kept : kelvin_chain(af, s, chord, dt, u, x);
+    memo = MinnemaPierceMemo{}; // the state changes
     const UnsteadyOutput y = outputs(af, s, chord, u, x, x.first_pass ? nullptr : &kc);
     update(af.constants(), kc, x);
     return y;

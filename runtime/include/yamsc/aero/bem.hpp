@@ -64,7 +64,10 @@ struct ElementSolution {
     double fx = 0, fy = 0; // force per length along x and along the motion (BkNjFx, BkNjFy) [N/m]
     double mz = 0;         // pitching moment per length about z [N m/m]
     double phi_bem = 0;    // root of the residual, before the corrections (the state)
-    bool valid = false;    // a BEM root was found (else the wake-free phi)
+    // The inductions at phi_bem before the skew and low-TSR corrections (limited
+    // to [-1, 1.5] and [-1, 1]; 0 without a root): DBEMT's quasi-steady input.
+    double a_bem = 0, ap_bem = 0;
+    bool valid = false; // a BEM root was found (else the wake-free phi)
 };
 
 // The residual of Ning's equation at phi and the inductions it implies (before

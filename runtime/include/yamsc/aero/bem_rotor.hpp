@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "yamsc/aero/bem.hpp"
+#include "yamsc/aero/rotor_cache.hpp"
 #include "yamsc/aero/rotor_input.hpp"
 
 namespace yamsc::aero {
@@ -73,12 +74,25 @@ public:
     /// (0 where that is 0), with no skew or low-TSR correction on top.
     void freeze_wake();
     void release_wake() { frozen_.clear(); }
+    bool wake_frozen() const { return !frozen_.empty(); }
     /// The rotor's loads and coefficients (RtFld*) again from the nodes' element
     /// solutions, after a caller replaced them (dynamic inflow, unsteady
     /// airfoil coefficients); `motion` as given to the last evaluate.
     const RotorResult& integrate(const RotorMotion& motion);
     /// The nodes' results, for such a replacement.
     std::vector<std::vector<NodeResult>>& nodes() { return result_.blades; }
+    /// A caller replacing the nodes keeps its result with the solution just
+    /// evaluated (rotor_cache.hpp: `generation` and `omega` are what that result
+    /// depends on besides the solution) and recalls it instead of replacing
+    /// them again. A warm-started evaluate at a motion and wind the cache holds
+    /// returns the kept solution (its roots within the solver's tolerance of a
+    /// new solve's).
+    bool recall_applied(std::uint64_t generation, const std::vector<double>& omega) {
+        return cache_.recall_applied(generation, omega, result_);
+    }
+    void keep_applied(std::uint64_t generation, const std::vector<double>& omega) {
+        cache_.keep_applied(generation, omega, result_);
+    }
 
     /// A node's orientation relative to its blade's root, from the blade file:
     /// curve angle about y, then the twist about -z (AeroDyn's EulerConstruct(0, crv, -twist)).
@@ -95,6 +109,7 @@ private:
         double axial = 0, tangential = 0; // a Vx, a' Vy [m/s]
     };
     std::vector<std::vector<Induced>> frozen_; // [blade][node]; empty: the BEM is solved
+    RotorCache cache_;
     void frozen_element(NodeResult& n, const Induced& induced) const;
 };
 

@@ -112,6 +112,37 @@ UnsteadyOutput evaluate(const UnsteadyAirfoil& airfoil, const UnsteadySettings& 
                         double chord, double dt, const UnsteadyInput& u,
                         const MinnemaPierceState& state);
 
+// Everything UnsteadyAero's ComputeKelvinChain gives (UA_Mod 3).
+struct MinnemaPierceChain {
+    double ds, alpha_filt, dalpha0, q, q_f, Kalpha_f, Kq, Kq_f;
+    double k_alpha, T_alpha, T_q, T_f, T_V;
+    double Kprime_alpha, cn_alpha_nc, Kprime_q, cn_q_nc, cn_aq_nc;
+    double X1, X2, alpha_e, cn_aq_circ, K3prime_q, cm_q_circ, cn_pot, Kprimeprime_q, cm_q_nc;
+    double cc_pot, Dp, cn_prime, alpha_f, fprime, Df, fprimeprime;
+    double fprime_c, Df_c, fprimeprime_c, cn_fs, Dalphaf, C_V, cn_v;
+    double cna_circ, T_I;
+};
+// The chains of one element's last two evaluations and their inputs (after UA's
+// fixes) and dt: a step from the same state, input and dt (a simulation step's
+// start is evaluated and then updated) takes its chain instead of computing it
+// again; the step empties it, as the state changes.
+struct MinnemaPierceMemo {
+    struct Entry {
+        UnsteadyInput u;
+        double dt = 0;
+        MinnemaPierceChain chain{};
+        bool valid = false;
+    };
+    Entry entries[2];
+    int next = 0;
+};
+UnsteadyOutput evaluate(const UnsteadyAirfoil& airfoil, const UnsteadySettings& settings,
+                        double chord, double dt, const UnsteadyInput& u,
+                        const MinnemaPierceState& state, MinnemaPierceMemo& memo);
+UnsteadyOutput step(const UnsteadyAirfoil& airfoil, const UnsteadySettings& settings, double chord,
+                    double dt, const UnsteadyInput& u, MinnemaPierceState& state,
+                    MinnemaPierceMemo& memo);
+
 // UA_Mod 6 state of one element: x4 (f, the separation point), FirstPass, and the
 // derivative history of the multistep integrators (OtherState%xdot, %n).
 struct OyeState {
