@@ -223,10 +223,11 @@ private:
     const RotorResult& solve(const double* r, double wind_time, double wind_speed) const {
         // The values and wind of the last call again (a step's measurement, first
         // stage and update read the same): its motion stands (every input of it is
-        // in the key; the wind field's time too).
+        // in the key; the wind field's time too, unless the field is steady).
         const std::size_t nr = ports_.outputs_read.size() + ports_.inputs_read.size();
+        const double key_time = s_.wind_field && !s_.wind_field->steady() ? wind_time : 0.0;
         if (rotor_ && motion_key_.size() == nr + 2 && motion_key_[nr] == wind_speed &&
-            motion_key_[nr + 1] == wind_time &&
+            motion_key_[nr + 1] == key_time &&
             std::memcmp(r, motion_key_.data(), nr * sizeof(double)) == 0)
             return rotor_->evaluate(motion_, Vector3d(wind_speed, 0, 0), true);
         motion_key_.clear();
@@ -270,12 +271,12 @@ private:
         // disturbance on top (AeroDyn's InflowOnBlade, DisturbedInflow).
         const FreeWind free{s_.wind_field.get(), wind_time, wind_speed};
         for (RotorMotion::Blade& b : motion_.blades)
-            for (std::size_t j = 0; j < b.position.size(); ++j) b.wind[j] = free.at(b.position[j]);
+            free.at(b.position.data(), b.position.size(), b.wind.data());
         tower_->read(blade_values, free);
         tower_->disturb(motion_);
         motion_key_.assign(r, r + nr);
         motion_key_.push_back(wind_speed);
-        motion_key_.push_back(wind_time);
+        motion_key_.push_back(key_time);
         return rotor_->evaluate(motion_, Vector3d(wind_speed, 0, 0), true);
     }
 

@@ -23,6 +23,13 @@ struct FreeWind {
     Eigen::Vector3d at(const Eigen::Vector3d& p) const {
         return field ? field->velocity(time, p, speed) : Eigen::Vector3d(speed, 0, 0);
     }
+    /// at() of n points, into `out`.
+    void at(const Eigen::Vector3d* p, std::size_t n, Eigen::Vector3d* out) const {
+        if (field)
+            field->velocities(time, p, n, speed, out);
+        else
+            for (std::size_t i = 0; i < n; ++i) out[i] = Eigen::Vector3d(speed, 0, 0);
+    }
 };
 
 class BlockTower {

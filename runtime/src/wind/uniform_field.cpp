@@ -89,27 +89,45 @@ double UniformField::reference_speed(double t) const {
     return p.speed + p.gust;
 }
 
-Eigen::Vector3d UniformField::velocity(double t, const Eigen::Vector3d& position,
-                                       double reference_speed) const {
+UniformField::Instant UniformField::instant(double t, double reference_speed) const {
+    const Point p = at(t);
+    // The reference speed V + Gust given: V replaced, the gust kept.
+    return {p,
+            reference_speed - p.gust,
+            std::cos(p.direction),
+            std::sin(p.direction),
+            std::cos(p.upflow),
+            std::sin(p.upflow)};
+}
+
+Eigen::Vector3d UniformField::velocity(const Instant& at, const Eigen::Vector3d& position) const {
     const double h = s_.reference_height;
     const Eigen::Vector3d ref(0, 0, h);
     const Eigen::Vector3d p =
         rotated_ ? Eigen::Vector3d(to_wind_ * (position - ref) + ref) : position;
     if (!(p.z() > 0)) return Eigen::Vector3d::Zero(); // at or below the ground
-    const Point op = at(t);
-    // The reference speed V + Gust given: V replaced, the gust kept.
-    const double v = reference_speed - op.gust;
-    const double ch = std::cos(op.direction), sh = std::sin(op.direction);
-    const double v1 =
-        v * (std::pow(p.z() / h, op.power_law) + (op.horizontal_shear * (p.y() * ch + p.x() * sh) +
-                                                  op.linear_vertical_shear * (p.z() - h)) /
-                                                     s_.reference_length) +
-        op.gust;
-    const double cv = std::cos(op.upflow), sv = std::sin(op.upflow);
-    const double u = cv * v1 - sv * op.vertical;
-    const double w = sv * v1 + cv * op.vertical;
+    const Point& op = at.p;
+    const double ch = at.cos_dir, sh = at.sin_dir;
+    const double profile = op.power_law == 0 ? 1.0 : std::pow(p.z() / h, op.power_law);
+    const double v1 = at.v * (profile + (op.horizontal_shear * (p.y() * ch + p.x() * sh) +
+                                         op.linear_vertical_shear * (p.z() - h)) /
+                                            s_.reference_length) +
+                      op.gust;
+    const double u = at.cos_up * v1 - at.sin_up * op.vertical;
+    const double w = at.sin_up * v1 + at.cos_up * op.vertical;
     const Eigen::Vector3d vel(u * ch, -u * sh, w);
     return rotated_ ? Eigen::Vector3d(to_wind_.transpose() * vel) : vel;
+}
+
+Eigen::Vector3d UniformField::velocity(double t, const Eigen::Vector3d& position,
+                                       double reference_speed) const {
+    return velocity(instant(t, reference_speed), position);
+}
+
+void UniformField::velocities(double t, const Eigen::Vector3d* positions, std::size_t n,
+                              double reference_speed, Eigen::Vector3d* out) const {
+    const Instant at = instant(t, reference_speed);
+    for (std::size_t i = 0; i < n; ++i) out[i] = velocity(at, positions[i]);
 }
 
 } // namespace yamsc::runtime

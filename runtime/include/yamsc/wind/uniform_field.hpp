@@ -46,6 +46,8 @@ public:
     Eigen::Vector3d velocity(double t, const Eigen::Vector3d& position,
                              double reference_speed) const override;
     bool steady() const override { return s_.samples.time.size() == 1; }
+    void velocities(double t, const Eigen::Vector3d* positions, std::size_t n,
+                    double reference_speed, Eigen::Vector3d* out) const override;
     const UniformWindSetup& setup() const { return s_; }
 
     /// The columns at time t (InflowWind's UniformField_Interp operating point).
@@ -56,6 +58,14 @@ public:
     Point at(double t) const;
 
 private:
+    /// What velocity() needs of time t: the columns and their sines and cosines.
+    struct Instant {
+        Point p;
+        double v, cos_dir, sin_dir, cos_up, sin_up;
+    };
+    Instant instant(double t, double reference_speed) const;
+    Eigen::Vector3d velocity(const Instant& at, const Eigen::Vector3d& position) const;
+
     UniformWindSetup s_;
     Eigen::Matrix3d to_wind_; // M: ground axes to the wind's
     bool rotated_ = false;

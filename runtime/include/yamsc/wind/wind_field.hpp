@@ -17,6 +17,8 @@
 // the field from the InflowWind file's entries.
 #include <Eigen/Core>
 
+#include <cstddef>
+
 namespace yamsc::runtime {
 
 class WindField {
@@ -31,6 +33,12 @@ public:
                                      double reference_speed) const = 0;
     /// Whether the field is the same at every time (steady wind).
     virtual bool steady() const = 0;
+    /// velocity() at n points at one time (a block's nodes), into `out`; a field
+    /// with work per time (interpolating its samples) overrides it to do that once.
+    virtual void velocities(double t, const Eigen::Vector3d* positions, std::size_t n,
+                            double reference_speed, Eigen::Vector3d* out) const {
+        for (std::size_t i = 0; i < n; ++i) out[i] = velocity(t, positions[i], reference_speed);
+    }
 };
 
 } // namespace yamsc::runtime
