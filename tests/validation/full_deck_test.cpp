@@ -197,27 +197,6 @@ TEST_CASE("a full deck's sheared steady wind: InflowWind's file, or the hub heig
 
 namespace {
 
-/// The column `name` of a table (the test fails without it).
-const std::vector<double>& column(const Table& t, const std::string& name) {
-    const int j = t.find(name);
-    REQUIRE_MESSAGE(j >= 0, "no column " << name);
-    return t.data[static_cast<std::size_t>(j)];
-}
-
-double mean_after(const Table& t, const std::string& name, double from) {
-    const std::vector<double>& time = t.data.front();
-    const std::vector<double>& v = column(t, name);
-    double sum = 0;
-    int n = 0;
-    for (std::size_t i = 0; i < time.size(); ++i)
-        if (time[i] >= from) {
-            sum += v[i];
-            ++n;
-        }
-    REQUIRE(n > 0);
-    return sum / n;
-}
-
 /// The deck copied to `folder`, its ServoDyn file edited by `edits` (regex -> text).
 std::string deck_copy(const std::string& folder,
                       const std::vector<std::pair<std::string, std::string>>& edits) {

@@ -20,25 +20,9 @@ namespace {
 
 const fs::path operating = fs::path(reference_dir) / "operating";
 
-const std::vector<double>& column(const Table& t, const std::string& name) {
-    const int j = t.find(name);
-    REQUIRE_MESSAGE(j >= 0, "no column " << name);
-    return t.data[static_cast<std::size_t>(j)];
-}
-
-/// Mean of the rows with time in (t_end - window, t_end].
+/// The mean over the last `window` seconds of the run.
 double tail_mean(const Table& t, const std::string& name, double window) {
-    const std::vector<double>& time = t.data.front();
-    const std::vector<double>& v = column(t, name);
-    double sum = 0;
-    int n = 0;
-    for (std::size_t i = 0; i < time.size(); ++i)
-        if (time[i] > time.back() - window + 1e-9) {
-            sum += v[i];
-            ++n;
-        }
-    REQUIRE(n > 0);
-    return sum / n;
+    return mean_after(t, name, t.data.front().back() - window);
 }
 
 /// Sets ElastoDyn/InflowWind entry `key` of `text` (value first, then the key) to `value`.

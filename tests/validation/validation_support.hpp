@@ -52,6 +52,28 @@ inline std::string read(const std::string& path) {
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
+/// The column `name` of a table (the test fails without it).
+inline const std::vector<double>& column(const yamsc::analysis::Table& t, const std::string& name) {
+    const int j = t.find(name);
+    REQUIRE_MESSAGE(j >= 0, "no column " << name);
+    return t.data[static_cast<std::size_t>(j)];
+}
+
+/// The mean of a column over the rows with time at least `from`.
+inline double mean_after(const yamsc::analysis::Table& t, const std::string& name, double from) {
+    const std::vector<double>& time = t.data.front();
+    const std::vector<double>& v = column(t, name);
+    double sum = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < time.size(); ++i)
+        if (time[i] >= from) {
+            sum += v[i];
+            ++n;
+        }
+    REQUIRE(n > 0);
+    return sum / n;
+}
+
 inline std::string model_path(const Case& c) {
     return work_dir + "/" + c.model + ".mbd";
 }
