@@ -14,9 +14,13 @@ inline bool euler_nearly_zero(double x) {
 
 /// NWTC's EulerConstruct: the change of basis (global to local) of the rotations
 /// about x, y, z by theta (intrinsic z-y-x), M = R(z) R(y) R(x).
+/// A zero angle (the BEM's annulus and root frames have two or one) takes no
+/// trigonometry: cos(+-0) = 1 and sin(+-0) = +-0 exactly.
 inline Eigen::Matrix3d euler_construct(const Eigen::Vector3d& t) {
-    const double cx = std::cos(t[0]), sx = std::sin(t[0]), cy = std::cos(t[1]), sy = std::sin(t[1]),
-                 cz = std::cos(t[2]), sz = std::sin(t[2]);
+    const auto cos_of = [](double a) { return a == 0 ? 1.0 : std::cos(a); };
+    const auto sin_of = [](double a) { return a == 0 ? a : std::sin(a); };
+    const double cx = cos_of(t[0]), sx = sin_of(t[0]), cy = cos_of(t[1]), sy = sin_of(t[1]),
+                 cz = cos_of(t[2]), sz = sin_of(t[2]);
     Eigen::Matrix3d m;
     m << cy * cz, cx * sz + sx * sy * cz, sx * sz - cx * sy * cz, //
         -cy * sz, cx * cz - sx * sy * sz, sx * cz + cx * sy * sz, //
