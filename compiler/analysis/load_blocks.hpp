@@ -79,10 +79,11 @@ runtime::ModelView with_load_blocks(const Loaded& l, const runtime::ModelView& v
                                     const std::vector<double>& params, const BlockOptions& b);
 
 /// The trim's settings with the blocks the options supply closed around `l`:
-/// the default, or with blade elements a relative tolerance of 1e-6, as far as
-/// their loads are exact (AeroDyn's BEM solve stops within 1e-6 rad of the
-/// inflow angle's root, Brent's bracket; the loads are then exact to about 1e-6
-/// of their size, and Newton can get no nearer).
+/// the default, or with blade elements a relative tolerance of 1e-6: their loads
+/// are smooth only piecewise (the airfoil tables' linear interpolation, the
+/// unsteady airfoils' settled states), and Newton on the 16-DOF NREL 5-MW stops
+/// at 1e-7 to 1e-6 of the starting residual even with the inflow angle solved
+/// to round-off (trim_block_options).
 runtime::TrimSettings trim_settings(const Loaded& l, const BlockOptions& b);
 
 /// The input `--wind` drives: the wind role of the model's first load block
