@@ -162,10 +162,18 @@ runtime::ModelView with_load_blocks(const Loaded& l, const runtime::ModelView& v
     if (!any_blocks(b)) return v;
     const runtime::LoadBlocks blocks = load_blocks(l, v, params, b);
     try {
-        return runtime::close_blocks(v, blocks);
+        return runtime::close_blocks(v, blocks, b.coupling);
     } catch (const std::invalid_argument& e) {
         throw UserError(std::string("load blocks: ") + e.what());
     }
+}
+
+BlockOptions sim_block_options(const driver::SimOptions& o) {
+    BlockOptions b = block_options(o);
+    b.coupling.mode = o.coupling == driver::SimCoupling::loose ? runtime::Coupling::loose
+                                                               : runtime::Coupling::tight;
+    b.coupling.interp_order = o.interp_order;
+    return b;
 }
 
 BlockOptions linear_block_options(const driver::LinOptions& o) {

@@ -36,6 +36,8 @@ struct BlockOptions {
     /// 1e-6, as sim runs it); trim and lin solve it to round-off, so that their
     /// Newton steps and difference quotients see smooth loads.
     double inflow_angle_tolerance = 0;
+    /// How the blocks meet the structure within a step (sim's --coupling).
+    runtime::BlockCoupling coupling{};
 };
 
 /// The block options of a command's options (sim, lin, trim: each has --aero).
@@ -45,6 +47,9 @@ template <class Options> BlockOptions block_options(const Options& o) {
     b.wind = o.wind;
     return b;
 }
+
+/// The block options of `sim`: its --coupling too.
+BlockOptions sim_block_options(const driver::SimOptions& o);
 
 /// The block options of `lin`: its --wake too.
 BlockOptions linear_block_options(const driver::LinOptions& o);

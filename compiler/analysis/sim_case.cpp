@@ -54,7 +54,7 @@ SimRun simulate_case(const Loaded& l, const SimOptions& o, std::ostream& out, st
     std::vector<double> q, qd;
     initial_state(l, o.ic, q, qd);
     SimRun run;
-    run.view = o.linear ? linear_model(l, o, out) : with_load_blocks(l, block_options(o));
+    run.view = o.linear ? linear_model(l, o, out) : with_load_blocks(l, sim_block_options(o));
     const runtime::ModelView& v = run.view;
     runtime::SimulationOptions s;
     s.t_end = o.tmax;

@@ -35,6 +35,10 @@ enum class Derivatives { automatic, unrolled, tangent };
 inline constexpr std::size_t tangent_form_min_dofs = 25;
 
 enum class SimMethod { rk4, abm4, cvode };
+/// How `sim` couples the load blocks to the structure within a step
+/// (runtime::Coupling): at every stage, or once per step with the loads
+/// extrapolated, as OpenFAST's ModCoupling 1.
+enum class SimCoupling { tight, loose };
 /// --channels: outputs as the model names them, or as OpenFAST's channels.
 enum class Channels { all, openfast };
 
@@ -132,7 +136,9 @@ struct SimOptions {
     std::string aero;       // --aero TABLE: the quasi-steady rotor block (Cp/Ct/Cq table)
     std::string wind;       // --wind SPEC: V_wind steady, step:V0:V1:t=T or a CSV (time, speed)
     std::string controller; // --controller LIB: a DISCON library in the loop
-    std::string controller_input; // --controller-input FILE: its accINFILE
+    std::string controller_input;              // --controller-input FILE: its accINFILE
+    SimCoupling coupling = SimCoupling::tight; // --coupling tight|loose
+    int interp_order = 2;                      // --interp-order: loose coupling's extrapolation
 };
 
 /// `yamsc batch MANIFEST` (docs/batch.md): one `sim` per manifest row.

@@ -922,6 +922,14 @@ private:
             options.push_back("--tmax " + mbd_number(*d_.tmax) + " --dt " + mbd_number(*d_.dt));
         // ElastoDyn's own integrator, where the deck runs it (Method 3).
         if (op.blade_elements && d_.method == 3) options.push_back("--method abm4");
+        // The glue's loose coupling (ModCoupling 1): AeroDyn once per step, its loads
+        // extrapolated within the next (docs/aerodynamics.md, "Coupling").
+        if (op.blade_elements && d_.mod_coupling == 1) {
+            std::string coupling = "--coupling loose";
+            if (d_.interp_order && *d_.interp_order >= 0 && *d_.interp_order <= 2)
+                coupling += " --interp-order " + std::to_string(*d_.interp_order);
+            options.push_back(coupling);
+        }
         if (v("BlPitch1") != 0)
             options.push_back("--u pitch=" + mbd_number(v("BlPitch1") * std::acos(-1.0) / 180));
         // One option a line, as a shell command continued with backslashes.

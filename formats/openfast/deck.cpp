@@ -174,6 +174,12 @@ private:
                 if (auto v = elastodyn::parse_number(e.value))
                     (key == "tmax" ? deck_.tmax : deck_.dt) = v;
                 ignore(f, e.key, e.line);
+            } else if (key == "modcoupling" || key == "interporder") {
+                // The run command's --coupling and --interp-order.
+                if (auto v = elastodyn::parse_number(e.value); v && *v == static_cast<int>(*v))
+                    (key == "modcoupling" ? deck_.mod_coupling : deck_.interp_order) =
+                        static_cast<int>(*v);
+                ignore(f, e.key, e.line);
             } else if (key == "airdens") {
                 deck_.fst_air_density = elastodyn::parse_number(e.value);
                 deck_.fst_air_density_at = file_line(f, e.line);

@@ -42,6 +42,8 @@ struct OpenFastDeck {
     std::vector<std::string> blade_files;  ///< one per blade
     std::optional<double> tmax, dt;        ///< the `.fst` run, for the model's comment
     std::optional<int> method;             ///< ElastoDyn's integrator (1 RK4, 2 AB4, 3 ABM4)
+    std::optional<int> mod_coupling;       ///< the glue's coupling (1 loose, 2 and 3 tight)
+    std::optional<int> interp_order;       ///< its extrapolation of inputs (1 linear, 2 quadratic)
     std::optional<double> fst_gravity;     ///< newer decks give gravity in the `.fst`
     std::optional<double> fst_air_density; ///< likewise the air density (AirDens)
     std::string fst_air_density_at;        ///< "file:line" of it

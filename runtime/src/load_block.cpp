@@ -1,5 +1,7 @@
 #include "yamsc/load_block.hpp"
 
+#include "held_loads.hpp"
+
 #include <Eigen/Dense>
 
 #include <cmath>
@@ -67,9 +69,38 @@ struct Closed {
     /// The block's states: after the base's states, which follow q' (ModelView::nz).
     const double* states(const double* qd) const { return nz ? qd + nq + base->nz : nullptr; }
 
-    Point evaluate(double t, const double* q, const double* qd, const double* u) const {
+    /// Loose coupling's history (null: tight).
+    std::shared_ptr<detail::HeldLoads> held;
+
+    /// The block evaluated at this point.
+    Point evaluate_here(double t, const double* q, const double* qd, const double* u) const {
         Point p{reads(t, q, qd, u), Vec(at(nl)), Vec(at(nz)), Vec(at(nout))};
         block->evaluate(t, states(qd), p.r.data(), p.loads.data(), p.rates.data(), p.out.data());
+        return p;
+    }
+
+    void hold(double t, const Point& p) const {
+        Vec values = p.loads;
+        values.insert(values.end(), p.out.begin(), p.out.end());
+        held->push(t, values.data(), values.size(), p.r);
+    }
+
+    /// The block's loads and outputs at this point: evaluated here, or with loose
+    /// coupling those of the history at t (a point before it starts it anew:
+    /// the run's start, or a new run).
+    Point evaluate(double t, const double* q, const double* qd, const double* u) const {
+        if (!held) return evaluate_here(t, q, qd, u);
+        if (held->empty() || t < held->newest_time()) {
+            held->clear();
+            Point p = evaluate_here(t, q, qd, u);
+            hold(t, p);
+            return p;
+        }
+        Point p{{}, Vec(at(nl)), {}, Vec(at(nout))};
+        Vec values(at(nl + nout));
+        held->at(t, values.data());
+        std::copy(values.begin(), values.begin() + nl, p.loads.begin());
+        std::copy(values.begin() + nl, values.end(), p.out.begin());
         return p;
     }
 
@@ -150,7 +181,7 @@ struct Closed {
 
 void Closed::jacobians(double t, const double* q, const double* qd, const double* u, double* dF_dq,
                        double* dF_dqd, double* dF_du) const {
-    const Point p = evaluate(t, q, qd, u);
+    const Point p = evaluate_here(t, q, qd, u);
     const Vec ue = effective_inputs(p, u);
     base->jacobians(t, q, qd, ue.data(), dF_dq, dF_dqd, dF_du);
     Vec x(q, q + nq);
@@ -186,7 +217,7 @@ void Closed::jacobians(double t, const double* q, const double* qd, const double
 }
 
 void Closed::rhs_jacobian(double t, const double* x, const double* u, double* J) const {
-    const Point p = evaluate(t, x, x + nq, u);
+    const Point p = evaluate_here(t, x, x + nq, u);
     const Vec ue = effective_inputs(p, u);
     const int n = nxb + nz, nu = base->nu;
     Vec Jb(at(nxb * nxb));
@@ -238,7 +269,8 @@ void Closed::rhs_jacobian(double t, const double* x, const double* u, double* J)
     }
 }
 
-ModelView close_one(const ModelView& base_view, const std::shared_ptr<const LoadBlock>& block) {
+ModelView close_one(const ModelView& base_view, const std::shared_ptr<const LoadBlock>& block,
+                    const BlockCoupling& coupling) {
     if (!base_view.outputs)
         throw std::invalid_argument("load block: the model view has no outputs");
     const BlockPorts& ports = block->ports();
@@ -263,6 +295,12 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
     c.nl = static_cast<int>(ports.loads.size());
     const std::vector<std::string> out_names = block->output_names();
     c.nout = static_cast<int>(out_names.size());
+    if (coupling.mode == Coupling::loose) {
+        if (c.nz > 0)
+            throw std::invalid_argument("load block: a block with continuous states couples "
+                                        "tightly only (its states are integrated at every stage)");
+        c.held = std::make_shared<detail::HeldLoads>(coupling.interp_order);
+    }
 
     ModelView v;
     v.nq = base->nq;
@@ -324,20 +362,26 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
         v.rhs_jacobian = [c](double t, const double* x, const double* u, double* J) {
             c.rhs_jacobian(t, x, u, J);
         };
-    if (base->update_discrete || block->has_discrete_states())
+    if (base->update_discrete || block->has_discrete_states() || c.held)
         v.update_discrete = [c](double t, const double* x, const double* u, double t_next,
                                 const double* x_next, const double* u_next) {
             if (c.base->update_discrete) c.base->update_discrete(t, x, u, t_next, x_next, u_next);
-            if (!c.block->has_discrete_states()) return;
-            const Vec r = c.reads(t, x, x + c.nq, u);
-            const Vec r_next = c.reads(t_next, x_next, x_next + c.nq, u_next);
-            c.block->update_discrete_states(t, c.states(x + c.nq), r.data(), t_next,
-                                            c.states(x_next + c.nq), r_next.data());
+            if (c.block->has_discrete_states()) {
+                const Vec* held_r = c.held ? c.held->reads_at(t) : nullptr;
+                const Vec r = held_r ? *held_r : c.reads(t, x, x + c.nq, u);
+                const Vec r_next = c.reads(t_next, x_next, x_next + c.nq, u_next);
+                c.block->update_discrete_states(t, c.states(x + c.nq), r.data(), t_next,
+                                                c.states(x_next + c.nq), r_next.data());
+            }
+            // The step's end, with the new discrete states (CalcOutput after
+            // UpdateStates): what the next step's stages extrapolate.
+            if (c.held) c.hold(t_next, c.evaluate_here(t_next, x_next, x_next + c.nq, u_next));
         };
     if (v.update_discrete)
         v.reset_discrete = [c] {
             if (c.base->reset_discrete) c.base->reset_discrete();
             c.block->reset_discrete_states();
+            if (c.held) c.held->clear();
         };
     return v;
 }
@@ -379,9 +423,9 @@ void central_differences(const LoadBlock& block, double t, const double* z, cons
     for (int i = 0; i < nr; ++i) column(rv, i, j.loads_r, j.rates_r, nr);
 }
 
-ModelView close_blocks(const ModelView& base, const LoadBlocks& blocks) {
+ModelView close_blocks(const ModelView& base, const LoadBlocks& blocks, BlockCoupling coupling) {
     ModelView v = base;
-    for (const auto& b : blocks) v = close_one(v, b);
+    for (const auto& b : blocks) v = close_one(v, b, coupling);
     return v;
 }
 

@@ -4,7 +4,7 @@
 // Each run's deck is the folder's deck with the run's own start (ElastoDyn's initial
 // state from its first row) and wind (steady at its first Wind1VelX, or the deck's
 // uniform wind file `<case>.wnd`); `from-openfast` writes the model, which runs as its
-// header says (ABM4, DT 0.00625 s, as long as the run) under ROSCO.
+// header says (ABM4 coupled loosely, DT 0.00625 s, as long as the run) under ROSCO.
 #include "validation_support.hpp"
 
 #include <algorithm>
@@ -141,13 +141,14 @@ void check_run(const fs::path& reference) {
     std::ostringstream out, err;
     REQUIRE_MESSAGE(yamsc::openfast::from_openfast(f, out, err) == 0, err.str());
     const std::string model = read(f.output);
-    // The header's command: blade elements, ABM4, the deck's TMax and DT.
+    // The header's command: blade elements, ABM4 coupled loosely, the deck's TMax and DT.
     REQUIRE(model.find("#     --aero NRELOffshrBsline5MW_Onshore_AeroDyn15.dat \\\n") !=
             std::string::npos);
     REQUIRE(model.find(" --dt 0.00625 ") != std::string::npos);
     REQUIRE(model.find("#     --wind NRELOffshrBsline5MW_InflowWind.dat \\\n") !=
             std::string::npos);
     REQUIRE(model.find("#     --method abm4") != std::string::npos);
+    REQUIRE(model.find("#     --coupling loose --interp-order 2") != std::string::npos);
     // The blades turn with the controller's pitch, as ElastoDyn's do.
     REQUIRE(model.find("rotate z -pitch }") != std::string::npos);
 
@@ -161,6 +162,8 @@ void check_run(const fs::path& reference) {
     o.dt = 0.00625;
     o.dt_out = 0.025;
     o.method = yamsc::driver::SimMethod::abm4;
+    o.coupling = yamsc::driver::SimCoupling::loose;
+    o.interp_order = 2;
     const double pitch0 = column(openfast, "BlPitch1_[deg]").front();
     if (pitch0 != 0) o.u = {{"pitch", 0, pitch0 * M_PI / 180}};
     o.channels = yamsc::driver::Channels::openfast;

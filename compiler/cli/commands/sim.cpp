@@ -55,6 +55,17 @@ SimOptions parse_sim(const Args& a) {
         throw UsageError("--controller-input needs --controller");
     if (!o.controller.empty() && (o.linear || o.method == SimMethod::cvode))
         throw UsageError("--controller runs with RK4 or ABM4 on the nonlinear model");
+    o.coupling =
+        choice(a, "--coupling", driver::SimCoupling::tight,
+               {{"tight", driver::SimCoupling::tight}, {"loose", driver::SimCoupling::loose}});
+    if (o.coupling == driver::SimCoupling::loose && o.method == SimMethod::cvode)
+        throw UsageError("--coupling loose steps with RK4 or ABM4 (CVODE couples tightly)");
+    o.interp_order = static_cast<int>(a.number("--interp-order", 2));
+    if (a.has("--interp-order") && o.coupling != driver::SimCoupling::loose)
+        throw UsageError("--interp-order needs --coupling loose");
+    if (o.interp_order < 0 || o.interp_order > 2 ||
+        a.number("--interp-order", 2) != static_cast<double>(o.interp_order))
+        throw UsageError("--interp-order must be 0, 1 or 2");
     return o;
 }
 
@@ -70,6 +81,7 @@ Command sim_command() {
                     [--plot-channels a,b,..] [--linear [--at name=v,..]]
                     [--aero Cp_Ct_Cq.txt] [--wind V|step:V0:V1:t=T|wind.csv]
                     [--controller libdiscon.so [--controller-input DISCON.IN]]
+                    [--coupling tight|loose [--interp-order 0|1|2]]
                     [--sid body=file.sid,..] [--external lib.so|file.c|file.cpp])",
         R"(  --tmax T            the end time [s] (required)
   --dt DT             the step (RK4, ABM4) or the output step (CVODE) [s] (required)
@@ -95,13 +107,18 @@ Command sim_command() {
                       or a CSV of time and speed
   --controller LIB    a DISCON controller library called at every step (RK4, ABM4)
   --controller-input F  its input file (accINFILE)
+  --coupling C        how load blocks meet the structure in a step: tight (default,
+                      evaluated at every stage) or loose (once per step at its end,
+                      extrapolated within the next, as OpenFAST's ModCoupling 1)
+  --interp-order N    loose coupling's extrapolation: 0 held, 1 linear, 2 quadratic
+                      (default, OpenFAST's InterpOrder)
 Details: docs/cli.md.
 )",
-        {{"--tmax",    "--dt",       "--dt-out",  "--ic",         "--u",
-          "--set",     "--sid",      "--method",  "-o",           "--rtol",
-          "--atol",    "--channels", "--compare", "--plot",       "--plot-channels",
-          "--at",      "--aero",     "--wind",    "--controller", "--controller-input",
-          "--external"},
+        {{"--tmax",     "--dt",       "--dt-out",      "--ic",         "--u",
+          "--set",      "--sid",      "--method",      "-o",           "--rtol",
+          "--atol",     "--channels", "--compare",     "--plot",       "--plot-channels",
+          "--at",       "--aero",     "--wind",        "--controller", "--controller-input",
+          "--external", "--coupling", "--interp-order"},
          {"-v", "--linear"}},
         parse_sim, analysis::sim);
 }

@@ -77,6 +77,24 @@ void central_differences(const LoadBlock& block, double t, const double* z, cons
 
 using LoadBlocks = std::vector<std::shared_ptr<const LoadBlock>>;
 
+/// How a closed view meets its blocks within a step of a fixed-step integrator.
+/// - tight: every stage evaluates the blocks at its own state (the integrator's
+///   order holds for the loads too); `lin`, `trim` and CVODE always couple so.
+/// - loose: OpenFAST's glue code with ModCoupling 1. The blocks are evaluated once
+///   per accepted step, at its end (after their discrete update, as AeroDyn's
+///   CalcOutput follows its UpdateStates), and a stage within the next step takes
+///   their loads and outputs extrapolated from the last interp_order + 1 steps'
+///   (InterpOrder: 0 holds them, 1 linear, 2 quadratic), as ElastoDyn takes
+///   AeroDyn's loads through ED_Input_ExtrapInterp. A stage at a step's own time
+///   (ABM4's and RK4's first) takes that step's values. Only for blocks without
+///   continuous states; the history belongs to the view, so a loosely coupled
+///   view runs one simulation at a time (as its blocks' discrete states do).
+enum class Coupling { tight, loose };
+struct BlockCoupling {
+    Coupling mode = Coupling::tight;
+    int interp_order = 2;
+};
+
 /// `base` with the blocks closed around it, in order: each around the view
 /// closed by those before it (its ports are indices of that view, whose outputs
 /// end with theirs). Same DOFs and inputs; outputs followed by each block's;
@@ -89,6 +107,9 @@ using LoadBlocks = std::vector<std::shared_ptr<const LoadBlock>>;
 /// update_discrete: the blocks' in order (inner first), each reading the view
 /// it is closed around with the model's inputs (not the loads of the blocks
 /// closed after it); set when any block has discrete states.
-ModelView close_blocks(const ModelView& base, const LoadBlocks& blocks);
+/// coupling: loose (above) for a simulation with RK4 or ABM4; the Jacobians of
+/// a loosely coupled view are still those of the tight one.
+ModelView close_blocks(const ModelView& base, const LoadBlocks& blocks,
+                       BlockCoupling coupling = {});
 
 } // namespace yamsc::runtime
