@@ -103,6 +103,11 @@ Table parse_openfast_binary(const std::string& bytes, const std::string& name) {
         in.fail(time_at, "the time scaling is not usable (" + std::to_string(time_a) + ", " +
                              std::to_string(time_b) + ")");
 
+    // What the channel count announces must be there before anything is allocated for it.
+    const std::uint64_t scaling_bytes =
+        id == FormatId::uncompressed ? 0 : 8 * static_cast<std::uint64_t>(nc);
+    in.need(scaling_bytes + 2 * static_cast<std::uint64_t>(nc + 1) * name_length, 1,
+            "channel scaling, names and units");
     std::vector<float> slope(nc, 1.0f), offset(nc, 0.0f);
     const std::size_t scaling_at = in.offset();
     if (id != FormatId::uncompressed) {
@@ -121,7 +126,7 @@ Table parse_openfast_binary(const std::string& bytes, const std::string& name) {
     for (std::string& n : names) n = in.text(name_length, "channel names");
     for (std::string& u : units) u = in.text(name_length, "channel units");
 
-    // The whole size is checked before anything is allocated for it.
+    // The whole size is checked before anything is allocated for the samples.
     const std::size_t value_size =
         id == FormatId::uncompressed ? sizeof(double) : sizeof(std::int16_t);
     const std::uint64_t time_bytes =
