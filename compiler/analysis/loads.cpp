@@ -114,7 +114,8 @@ RunLoads reduce_run(const std::string& path, RunSet set, const LoadsOptions& o,
         c.statistics = channel_statistics(y);
         const std::vector<double> ms = exponents_of(o, c.channel);
         if (!ms.empty()) {
-            const std::vector<Cycle> cycles = rainflow(y);
+            const std::vector<Cycle> cycles =
+                o.counting == Counting::windap ? rainflow_windap(y) : rainflow(y);
             for (double m : ms)
                 c.dels.emplace_back(m, equivalent_load(cycles, m, duration, del_options));
         }
@@ -175,6 +176,7 @@ LoadsReport reduce_loads(const LoadsOptions& o) {
     report.life_cycles = o.life_cycles;
     report.frequency = o.frequency;
     report.bins = o.bins;
+    report.counting = o.counting;
     const std::map<std::string, double> speeds =
         o.speeds.empty() ? std::map<std::string, double>{} : read_speeds(o.speeds);
     for (const std::string& p : o.runs)

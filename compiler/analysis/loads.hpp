@@ -6,6 +6,7 @@
 // loads_plot.cpp.
 #include "analysis/loads_lifetime.hpp"
 #include "analysis/loads_statistics.hpp"
+#include "analysis/rainflow.hpp"
 
 #include <iosfwd>
 #include <optional>
@@ -27,6 +28,7 @@ struct LoadsOptions {
     std::vector<std::pair<std::string, double>> del; ///< --del NAME:m
     std::optional<double> from, to;                  ///< the window [s], both ends included
     int bins = 100;                                  ///< --bins; 0: no binning
+    Counting counting = Counting::astm;              ///< --counting
     double frequency = 1.0;                          ///< --frequency f_eq [Hz]
     std::optional<Weibull> weibull;                  ///< --class or --weibull: lifetime DELs
     double life_years = 20;                          ///< --life
@@ -62,6 +64,7 @@ struct LoadsReport {
     std::optional<Weibull> weibull;
     double life_years = 0, life_cycles = 0, frequency = 1;
     int bins = 100;
+    Counting counting = Counting::astm;
 };
 
 /// The reduction of every run (a located UserError on a bad file or an unknown channel).

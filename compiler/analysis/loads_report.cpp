@@ -106,7 +106,8 @@ std::string loads_text(const LoadsReport& r) {
         }
     }
     out << "(std: population; kurtosis: Pearson's, 3 for a normal distribution; DEL at "
-        << g(r.frequency) << " Hz, "
+        << g(r.frequency) << " Hz, " << (r.counting == Counting::windap ? "windap" : "ASTM E1049")
+        << " counting, "
         << (r.bins > 0 ? std::to_string(r.bins) + " range bins" : std::string("no range bins"))
         << "; docs/loads.md)\n";
     return out.str();
@@ -145,6 +146,7 @@ std::string loads_json(const LoadsReport& r) {
     using driver::json::quote;
     std::ostringstream out;
     out << "{\n  \"frequency\": " << number(r.frequency) << ",\n  \"bins\": " << r.bins
+        << ",\n  \"counting\": " << quote(r.counting == Counting::windap ? "windap" : "astm")
         << ",\n  \"runs\": [";
     for (std::size_t i = 0; i < r.runs.size(); ++i) {
         const RunLoads& run = r.runs[i];

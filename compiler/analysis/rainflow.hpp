@@ -35,6 +35,18 @@ std::vector<double> turning_points(const std::vector<double>& y);
 /// cycles as they close, then the residue's half cycles). Ranges of 0 are dropped.
 std::vector<Cycle> rainflow(const std::vector<double>& y);
 
+/// openfast_toolbox's default counting, `rainflow_windap` (after DTU's wetb; the
+/// IEA "Recommended Practices for Wind Turbine Testing - 3. Fatigue Loads", 2nd
+/// ed. 1990, Appendix A), for comparison with its numbers: the series is shifted
+/// to start at its minimum, rounded to 255 levels (half to even), reduced to the
+/// peaks and troughs at least 255/50 levels apart, counted by pair ranges (full
+/// cycles twice as half cycles, the residue as half cycles), and each range
+/// rounded to a multiple of 255/50 levels. Not ASTM E1049: ranges are those of
+/// the rounded series. A constant series has no cycles.
+std::vector<Cycle> rainflow_windap(const std::vector<double>& y);
+
+enum class Counting { astm, windap };
+
 struct EquivalentLoadOptions {
     double frequency = 1.0; ///< f_eq [Hz]
     int bins = 100;         ///< 0: every range as it is

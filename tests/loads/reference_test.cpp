@@ -115,6 +115,30 @@ TEST_CASE("DELs equal openfast_toolbox's equivalent_load (rainflow_astm, 100 bin
     }
 }
 
+TEST_CASE(
+    "DELs with openfast_toolbox's default counting (rainflow_windap) equal its numbers to 1e-6") {
+    // Example_EquivalentLoad.py's own number, 284.30398 at m = 1, is the first.
+    const table::Table t = table::read_time_series(data_dir + "fastout_allnodes.outb");
+    const double duration = t.data[0].back() - t.data[0].front();
+    struct Case {
+        const char* channel;
+        double m, del;
+    };
+    const Case cases[] = {
+        {"RootMyc1_[kN-m]", 1, 284.30398434633946}, {"RootMyc1_[kN-m]", 4, 533.765971012729},
+        {"RootMyc1_[kN-m]", 10, 740.005713625985},  {"TwrBsMyt_[kN-m]", 1, 2412.735699247691},
+        {"TwrBsMyt_[kN-m]", 4, 5214.199900144531},  {"TwrBsMyt_[kN-m]", 10, 6560.850860802779},
+        {"RotSpeed_[rpm]", 1, 0.0244231055678117},  {"RotSpeed_[rpm]", 10, 0.362016097809619},
+    };
+    for (const Case& c : cases) {
+        CAPTURE(c.channel);
+        CAPTURE(c.m);
+        const auto cycles = analysis::rainflow_windap(column(t, c.channel));
+        CHECK(analysis::equivalent_load(cycles, c.m, duration, {}) ==
+              doctest::Approx(c.del).epsilon(1e-6));
+    }
+}
+
 TEST_CASE("outb formats 1 and 3, and located errors") {
     // Format 3: float64 samples; 2 channels, 3 steps from t = 1 s every 0.5 s.
     std::string f3;

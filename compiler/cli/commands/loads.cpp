@@ -104,6 +104,9 @@ LoadsOptions parse_loads(const Args& a) {
     if (bins != std::floor(bins) || bins < 0 || bins > 1e6)
         throw UsageError("--bins must be a whole number >= 0");
     o.bins = static_cast<int>(bins);
+    o.counting =
+        choice(a, "--counting", analysis::Counting::astm,
+               {{"astm", analysis::Counting::astm}, {"windap", analysis::Counting::windap}});
     o.frequency = a.number("--frequency", 1.0);
     if (!(o.frequency > 0) || !std::isfinite(o.frequency))
         throw UsageError("--frequency must be > 0");
@@ -133,7 +136,8 @@ Command loads_command() {
         "loads", "statistics, rainflow counts and damage-equivalent loads of time series",
         "yamsc loads RUN.csv|RUN.out|RUN.outb... [--runs LIST] [--reference LIST] [--batch DIR]\n"
         "             [--channels NAMES] [--wohler M,...] [--del NAME:M,...] [--from T] [--to T]\n"
-        "             [--bins N] [--frequency F] [--class I|II|III | --weibull A,k] [--life "
+        "             [--bins N] [--frequency F] [--counting astm|windap] [--class I|II|III | "
+        "--weibull A,k] [--life "
         "YEARS]\n"
         "             [--life-cycles N] [--wind-channel NAME | --speeds FILE] [-o OUT.csv]\n"
         "             [--json OUT.json] [--plot OUT.svg]",
@@ -148,6 +152,8 @@ Command loads_command() {
   --bins N            rainflow ranges in N bins, each at its mean range (default 100, as
                       openfast_toolbox; 0: every range as counted)
   --frequency F       the DELs' equivalent frequency [Hz] (default 1)
+  --counting astm|windap  ASTM E1049 rainflow counting (default), or openfast_toolbox's default
+                      `rainflow_windap` (the signal rounded to 255 levels first) to compare with it
   --class I|II|III    lifetime DELs, the speeds Rayleigh-distributed with mean 0.2 V_ref (IEC 61400-1)
   --weibull A,k       lifetime DELs with this Weibull distribution of the mean speed
   --life YEARS        the life of the lifetime DELs (default 20)
@@ -159,9 +165,10 @@ Command loads_command() {
   --json OUT.json     the same as JSON
   --plot OUT.svg      statistics and DELs against the mean wind speed, the reference dashed
 )",
-        {{"--runs", "--reference", "--batch", "--channels", "--wohler", "--del", "--from", "--to",
-          "--bins", "--frequency", "--class", "--weibull", "--life", "--life-cycles",
-          "--wind-channel", "--speeds", "-o", "--json", "--plot"},
+        {{"--runs",         "--reference", "--batch",   "--channels", "--wohler",
+          "--del",          "--from",      "--to",      "--bins",     "--frequency",
+          "--counting",     "--class",     "--weibull", "--life",     "--life-cycles",
+          "--wind-channel", "--speeds",    "-o",        "--json",     "--plot"},
          {}},
         parse_loads, analysis::loads);
 }

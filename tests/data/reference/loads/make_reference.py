@@ -18,7 +18,7 @@ from openfast_toolbox.tools.fatigue import equivalent_load
 df = FASTOutputFile('fastout_allnodes.outb').toDataFrame()
 t = df['Time_[s]']
 print('rows', len(t), 'columns', df.shape[1], 't0', repr(t.iloc[0]), 't1', repr(t.iloc[-1]))
-for ch in ['RootMyc1_[kN-m]', 'TwrBsMyt_[kN-m]']:
+for ch in ['RootMyc1_[kN-m]', 'TwrBsMyt_[kN-m]', 'RotSpeed_[rpm]']:
     y = df[ch].values
     print(ch, 'y[0]', repr(y[0]), 'y[50]', repr(y[50]), 'y[-1]', repr(y[-1]))
     # pCrunch's AeroelasticOutput statistics (np.std, scipy.stats.moment).
