@@ -171,12 +171,7 @@ std::vector<driver::NamedFile> named(const std::vector<std::string>& paths,
 
 LoadsReport reduce_loads(const LoadsOptions& o) {
     LoadsReport report;
-    report.weibull = o.weibull;
-    report.life_years = o.life_years;
-    report.life_cycles = o.life_cycles;
-    report.frequency = o.frequency;
-    report.bins = o.bins;
-    report.counting = o.counting;
+    report.options = o;
     const std::map<std::string, double> speeds =
         o.speeds.empty() ? std::map<std::string, double>{} : read_speeds(o.speeds);
     for (const std::string& p : o.runs)

@@ -61,10 +61,7 @@ struct LifetimeLoad {
 struct LoadsReport {
     std::vector<RunLoads> runs;
     std::vector<LifetimeLoad> lifetime;
-    std::optional<Weibull> weibull;
-    double life_years = 0, life_cycles = 0, frequency = 1;
-    int bins = 100;
-    Counting counting = Counting::astm;
+    LoadsOptions options; ///< what the runs were reduced with
 };
 
 /// The reduction of every run (a located UserError on a bad file or an unknown channel).

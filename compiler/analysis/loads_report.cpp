@@ -95,9 +95,10 @@ std::string loads_text(const LoadsReport& r) {
         std::snprintf(
             line, sizeof line,
             "lifetime DELs: Weibull A = %.4g m/s, k = %.4g; %g years; %s equivalent cycles\n",
-            r.weibull->scale, r.weibull->shape, r.life_years,
-            r.life_cycles > 0 ? g(r.life_cycles).c_str()
-                              : ("f_eq T_life = " + g(r.frequency) + " Hz x life").c_str());
+            r.options.weibull->scale, r.options.weibull->shape, r.options.life_years,
+            r.options.life_cycles > 0
+                ? g(r.options.life_cycles).c_str()
+                : ("f_eq T_life = " + g(r.options.frequency) + " Hz x life").c_str());
         out << line;
         for (const LifetimeLoad& l : r.lifetime) {
             std::snprintf(line, sizeof line, "  %-9s %-*s m=%-4s %12.5g\n", set_name(l.set), w,
@@ -106,9 +107,10 @@ std::string loads_text(const LoadsReport& r) {
         }
     }
     out << "(std: population; kurtosis: Pearson's, 3 for a normal distribution; DEL at "
-        << g(r.frequency) << " Hz, " << (r.counting == Counting::windap ? "windap" : "ASTM E1049")
-        << " counting, "
-        << (r.bins > 0 ? std::to_string(r.bins) + " range bins" : std::string("no range bins"))
+        << g(r.options.frequency) << " Hz, "
+        << (r.options.counting == Counting::windap ? "windap" : "ASTM E1049") << " counting, "
+        << (r.options.bins > 0 ? std::to_string(r.options.bins) + " range bins"
+                               : std::string("no range bins"))
         << "; docs/loads.md)\n";
     return out.str();
 }
@@ -145,9 +147,9 @@ std::string loads_json(const LoadsReport& r) {
     using driver::json::number;
     using driver::json::quote;
     std::ostringstream out;
-    out << "{\n  \"frequency\": " << number(r.frequency) << ",\n  \"bins\": " << r.bins
-        << ",\n  \"counting\": " << quote(r.counting == Counting::windap ? "windap" : "astm")
-        << ",\n  \"runs\": [";
+    out << "{\n  \"frequency\": " << number(r.options.frequency)
+        << ",\n  \"bins\": " << r.options.bins << ",\n  \"counting\": "
+        << quote(r.options.counting == Counting::windap ? "windap" : "astm") << ",\n  \"runs\": [";
     for (std::size_t i = 0; i < r.runs.size(); ++i) {
         const RunLoads& run = r.runs[i];
         out << (i ? "," : "") << "\n    {\"set\": " << quote(set_name(run.set))
@@ -178,10 +180,10 @@ std::string loads_json(const LoadsReport& r) {
             << ", \"del\": " << number(l.del) << "}";
     }
     out << "\n  ]";
-    if (r.weibull)
-        out << ",\n  \"weibull\": {\"A\": " << number(r.weibull->scale)
-            << ", \"k\": " << number(r.weibull->shape)
-            << "},\n  \"life_years\": " << number(r.life_years);
+    if (r.options.weibull)
+        out << ",\n  \"weibull\": {\"A\": " << number(r.options.weibull->scale)
+            << ", \"k\": " << number(r.options.weibull->shape)
+            << "},\n  \"life_years\": " << number(r.options.life_years);
     out << "\n}\n";
     return out.str();
 }
