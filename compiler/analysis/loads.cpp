@@ -80,10 +80,9 @@ RunLoads reduce_run(const std::string& path, RunSet set, const LoadsOptions& o,
                                    t.data[column].begin() + static_cast<std::ptrdiff_t>(w.last) +
                                        1);
     };
-    if (!o.speeds.empty()) {
-        const auto it = speeds.find(r.name);
-        if (it == speeds.end())
-            throw UserError(o.speeds + ": no row with the id '" + r.name + "' (of " + path + ")");
+    // The run's row in --speeds, else the mean of its wind channel (a reference
+    // set named otherwise than the manifest's ids still has its Wind1VelX).
+    if (const auto it = speeds.find(r.name); it != speeds.end()) {
         r.wind_speed = it->second;
     } else {
         const std::vector<std::string> candidates =
@@ -93,7 +92,9 @@ RunLoads reduce_run(const std::string& path, RunSet set, const LoadsOptions& o,
             if (const int j = find_channel(t, c); j > 0 && !r.wind_speed)
                 r.wind_speed = channel_statistics(rows(static_cast<std::size_t>(j))).mean;
         if (!o.wind_channel.empty() && !r.wind_speed)
-            throw UserError(path + ": no channel '" + o.wind_channel + "' (--wind-channel)");
+            throw UserError(
+                path + ": no channel '" + o.wind_channel + "' (--wind-channel)" +
+                (o.speeds.empty() ? "" : " and no row '" + r.name + "' in " + o.speeds));
     }
     std::vector<std::size_t> columns;
     if (o.channels.empty()) {
@@ -132,9 +133,10 @@ void add_lifetime(LoadsReport& report, RunSet set, const Weibull& w, const Loads
     for (const RunLoads& r : report.runs)
         if (r.set == set) {
             if (!r.wind_speed)
-                throw UserError(r.path +
-                                ": no mean wind speed for the lifetime DELs (no Wind1VelX or "
-                                "RtVAvgxh channel: give --wind-channel or --speeds)");
+                throw UserError(
+                    r.path +
+                    ": no mean wind speed for the lifetime DELs (no Wind1VelX or "
+                    "RtVAvgxh channel, no row in --speeds: give --wind-channel or --speeds)");
             runs.push_back(&r);
             speeds.push_back(*r.wind_speed);
         }

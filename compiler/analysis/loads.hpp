@@ -34,8 +34,8 @@ struct LoadsOptions {
     double life_years = 20;                          ///< --life
     double life_cycles = 0;                          ///< --life-cycles; 0: f_eq T_life
     std::string wind_channel;                        ///< --wind-channel; empty: Wind1VelX, RtVAvgxh
-    std::string speeds;                              ///< --speeds: a CSV of id, speed
-    std::string csv, json, plot;                     ///< -o, --json, --plot
+    std::string speeds;          ///< --speeds: a CSV of id, speed (before the wind channel)
+    std::string csv, json, plot; ///< -o, --json, --plot
 };
 
 struct ChannelLoads {

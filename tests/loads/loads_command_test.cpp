@@ -92,8 +92,8 @@ TEST_CASE("yamsc loads --batch: a batch folder's finished cases, lifetime DELs, 
         failed{3, "v16", false, "", "cases.csv:4:1: error: it broke", 0.0};
     write_file(out + "/summary.csv", yamsc::analysis::summary_text({ok8, ok12, failed}));
     std::filesystem::create_directories(dir + "/openfast");
-    write_run(dir + "/openfast/v8.csv", 1.1, 8);
-    write_run(dir + "/openfast/v12.csv", 2.1, 12);
+    write_run(dir + "/openfast/of8.csv", 1.1, 8);
+    write_run(dir + "/openfast/of12.csv", 2.1, 12);
 
     REQUIRE(
         run_loads(dir,
@@ -123,10 +123,19 @@ TEST_CASE("yamsc loads --batch: a batch folder's finished cases, lifetime DELs, 
     CHECK(svg.find("DEL m=4 TwrBsMyt") != std::string::npos);
     CHECK(svg.find("reference") != std::string::npos);
 
-    // The wind speeds from a manifest's wind column instead of a channel.
+    // The wind speeds from a manifest's wind column instead of a channel; runs
+    // without a row (the reference's) take their Wind1VelX.
     write_file(dir + "/cases.csv",
                "id,model,tmax,dt,wind\nv8,m.mbd,20,0.05,9\nv12,m.mbd,20,0.05,13\n");
-    REQUIRE(run_loads(dir, "--batch cases.out --speeds cases.csv --channels TwrBsMyt -o s.csv") ==
-            0);
-    CHECK(read_file(dir + "/s.csv").find("runs,v12,cases.out/v12.csv,13,") != std::string::npos);
+    REQUIRE(run_loads(dir, "--batch cases.out --speeds cases.csv --reference openfast "
+                           "--channels TwrBsMyt -o s.csv") == 0);
+    const std::string speeds = read_file(dir + "/s.csv");
+    CHECK(speeds.find("runs,v12,cases.out/v12.csv,13,") != std::string::npos);
+    CHECK(speeds.find("reference,of12,openfast/of12.csv,12,") != std::string::npos);
+    CHECK(run_loads(dir, "--batch cases.out --speeds cases.csv --wind-channel NoWind") == 0);
+    CHECK(run_loads(dir, "openfast/of8.csv --speeds cases.csv --wind-channel NoWind") == 1);
+    CHECK(
+        read_file(dir + "/err.txt")
+            .find("of8.csv: no channel 'NoWind' (--wind-channel) and no row 'of8' in cases.csv") !=
+        std::string::npos);
 }

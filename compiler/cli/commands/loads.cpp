@@ -121,8 +121,6 @@ LoadsOptions parse_loads(const Args& a) {
         throw UsageError("--life and --life-cycles need --class or --weibull (the lifetime DELs)");
     o.wind_channel = a.get("--wind-channel");
     o.speeds = a.get("--speeds");
-    if (!o.speeds.empty() && !o.wind_channel.empty())
-        throw UsageError("--speeds and --wind-channel exclude each other");
     o.csv = a.get("-o");
     o.json = a.get("--json");
     o.plot = a.get("--plot");
@@ -139,7 +137,7 @@ Command loads_command() {
         "             [--bins N] [--frequency F] [--counting astm|windap] [--class I|II|III | "
         "--weibull A,k] [--life "
         "YEARS]\n"
-        "             [--life-cycles N] [--wind-channel NAME | --speeds FILE] [-o OUT.csv]\n"
+        "             [--life-cycles N] [--wind-channel NAME] [--speeds FILE] [-o OUT.csv]\n"
         "             [--json OUT.json] [--plot OUT.svg]",
         R"(  RUN...              time series: yamsc's CSV, OpenFAST's .out or binary .outb (docs/loads.md)
   --runs LIST         more runs: files, folders (their .csv/.out/.outb) or quoted patterns, comma-separated
@@ -160,7 +158,8 @@ Command loads_command() {
   --life-cycles N     the lifetime DELs' equivalent cycles (default: F x the life in seconds)
   --wind-channel NAME the channel whose mean is a run's wind speed (default: Wind1VelX, else RtVAvgxh)
   --speeds FILE       each run's wind speed from a CSV with columns id and speed (or wind: a
-                      batch manifest), id = the run's file name without extension
+                      batch manifest), id = the run's file name without extension; a run
+                      without a row takes its wind channel's mean
   -o OUT.csv          the table as CSV: one row per run and channel, lifetime rows last
   --json OUT.json     the same as JSON
   --plot OUT.svg      statistics and DELs against the mean wind speed, the reference dashed
