@@ -132,6 +132,14 @@ TEST_CASE("yamsc loads --batch: a batch folder's finished cases, lifetime DELs, 
     const std::string speeds = read_file(dir + "/s.csv");
     CHECK(speeds.find("runs,v12,cases.out/v12.csv,13,") != std::string::npos);
     CHECK(speeds.find("reference,of12,openfast/of12.csv,12,") != std::string::npos);
+    // Patterns and folders in --runs and --reference, expanded by yamsc, sorted.
+    REQUIRE(run_loads(dir, "--runs 'cases.out/v*.csv' --reference openfast --channels TwrBsMyt "
+                           "--wohler 4 -o g.csv") == 0);
+    const std::string globbed = read_file(dir + "/g.csv");
+    CHECK(globbed.find("runs,v12,cases.out/v12.csv,12,") <
+          globbed.find("runs,v8,cases.out/v8.csv,8,"));
+    CHECK(globbed.find("reference,of12,openfast/of12.csv,12,") != std::string::npos);
+    CHECK(run_loads(dir, "--runs 'nothing/*.csv'") == 2);
     CHECK(run_loads(dir, "--batch cases.out --speeds cases.csv --wind-channel NoWind") == 0);
     CHECK(run_loads(dir, "openfast/of8.csv --speeds cases.csv --wind-channel NoWind") == 1);
     CHECK(
