@@ -11,11 +11,9 @@
 #include <yamsc/atomic_file.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <map>
 #include <ostream>
-#include <set>
 #include <sstream>
 
 namespace yamsc::analysis {
