@@ -18,4 +18,8 @@ struct Table {
 /// Throws diag::UserError with the file and line on bad input.
 Table read_table(const std::string& path);
 
+/// An OpenFAST binary file when the name ends in `.outb` (openfast_binary.hpp),
+/// else a text table as read_table reads it.
+Table read_time_series(const std::string& path);
+
 } // namespace yamsc::table
