@@ -1,14 +1,15 @@
 // `yamsc batch`: the rows of a manifest run as `yamsc sim` runs them
-// (sim_case.hpp), on a pool of threads in one process. Each distinct model
-// is loaded once and its compiled library shared by every thread: the
-// generated routines keep no state of their own (pure functions of their
-// arguments), and each thread binds each case's parameters in its own copy.
-// The jobs (batch_jobs.hpp), their models (batch_models.hpp), one case
-// (batch_case.hpp), the threads (batch_pool.hpp), the progress
+// (sim_case.hpp), each in a process forked from this one (batch_isolation.hpp),
+// N at a time. Each distinct model is loaded once, before any case starts, and
+// its compiled library inherited by every case; each binds its parameters in
+// its own copy. The jobs (batch_jobs.hpp), their models (batch_models.hpp),
+// one case (batch_case.hpp), the processes (batch_isolation.hpp), the stop on
+// a signal (batch_pool.hpp), the progress
 // (batch_progress.hpp) and the output folder (batch_files.hpp) each have
 // their file; this one runs them in order and writes the summary.
 #include "analysis/batch_case.hpp"
 #include "analysis/batch_files.hpp"
+#include "analysis/batch_isolation.hpp"
 #include "analysis/batch_jobs.hpp"
 #include "analysis/batch_models.hpp"
 #include "analysis/batch_pool.hpp"
@@ -84,10 +85,10 @@ int batch(const BatchOptions& o, std::ostream& out, std::ostream& err) {
 
     Progress progress(err, pending.size(), o.quiet);
     const StopOnSignal signals(o.stop_on_signal);
-    run_on_threads(pending, threads, signals, [&](Job& job, Loaded& model) {
-        run_job(job, model, dir);
-        progress.finished(job.summary.ok);
-    });
+    run_isolated(
+        pending, threads, o.case_time_limit, dir, signals,
+        [&](Job& job, Loaded& model) { run_job(job, model, dir); },
+        [&](const Job& job) { progress.finished(job.summary.ok); });
     if (signals.stopped()) {
         // The summary is written by the run that finishes; the results and
         // records written so far are kept for it.

@@ -48,14 +48,17 @@ CaseSummary run_case(const BatchCase& c, Loaded& l, const std::string& result_pa
     }
     std::ostringstream quiet;
     SimRun run;
+    // The controller names its own files after the result, as `sim -o` has it.
+    driver::SimOptions sim = c.sim;
+    sim.output = result_path;
     try {
-        run = simulate_case(l, c.sim, quiet, quiet);
+        run = simulate_case(l, sim, quiet, quiet);
     } catch (const CaseError&) {
         throw;
     } catch (const std::exception& e) {
         throw CaseError(c.row_at, e.what());
     }
-    write_sim_csv(run, driver::Channels::all, result_path);
+    write_sim_csv(run, c.sim.channels, result_path);
     CaseSummary s;
     s.ok = true;
     const runtime::SimulationResult& r = run.result;

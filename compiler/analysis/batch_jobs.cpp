@@ -76,6 +76,7 @@ std::set<std::string> batch_inputs(const std::string& manifest, const std::vecto
         if (job.c) {
             inputs.insert(real_path(job.c->sim.model));
             if (!job.c->sim.wind.empty()) inputs.insert(real_path(job.c->sim.wind));
+            for (const std::string& file : job.c->files) inputs.insert(real_path(file));
             for (const driver::NamedFile& f : block_files(block_options(job.c->sim)))
                 inputs.insert(real_path(f.path));
         }

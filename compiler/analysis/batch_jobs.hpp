@@ -30,8 +30,8 @@ struct Job {
 /// malformed row is a job done, failed with its located error.
 std::vector<Job> shard_jobs(const Manifest& m, int shard, int shards);
 
-/// What no result may replace: the manifest and the models, wind files and
-/// rotor tables of the jobs (real paths).
+/// What no result may replace: the manifest and the models, wind files,
+/// rotor tables, controller libraries and their input files of the jobs (real paths).
 std::set<std::string> batch_inputs(const std::string& manifest, const std::vector<Job>& jobs);
 
 /// Gives each job its model; fails the jobs whose model has errors or whose

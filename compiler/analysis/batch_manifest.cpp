@@ -7,6 +7,7 @@
 #include <yamsc/wind.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
@@ -20,8 +21,16 @@ using driver::SimMethod;
 
 namespace {
 
-const std::vector<std::string> plain_columns{"id",   "model", "tmax", "dt", "method", "rtol",
-                                             "atol", "set",   "ic",   "u",  "wind",   "aero"};
+const std::vector<std::string> plain_columns{"id",         "model",
+                                             "tmax",       "dt",
+                                             "method",     "rtol",
+                                             "atol",       "set",
+                                             "ic",         "u",
+                                             "wind",       "aero",
+                                             "dt_out",     "channels",
+                                             "controller", "controller_input",
+                                             "coupling",   "interp_order",
+                                             "time_limit"};
 const std::vector<std::string> required_columns{"id", "model", "tmax", "dt"};
 const std::vector<std::string> prefixes{"set:", "ic:", "u:"};
 
@@ -107,6 +116,28 @@ std::string channel(const Assignment& a) {
     return a.name + std::string(static_cast<std::size_t>(a.primes), '\'');
 }
 
+/// The checks `yamsc sim` makes of its options together (cli/commands/sim.cpp),
+/// located at the row or the field concerned.
+void check_combination(const BatchCase& c) {
+    const driver::SimOptions& o = c.sim;
+    if (!o.controller_input.empty() && o.controller.empty())
+        throw CaseError(c.row_at, "controller_input needs controller");
+    if (!o.controller.empty() && o.method == SimMethod::cvode)
+        throw CaseError(c.row_at, "controller runs with rk4 or abm4");
+    if (o.coupling == driver::SimCoupling::loose && o.method == SimMethod::cvode)
+        throw CaseError(c.coupling_at, "coupling loose steps with rk4 or abm4 (cvode couples "
+                                       "tightly)");
+    if (!c.interp_order_at.empty() && o.coupling != driver::SimCoupling::loose)
+        throw CaseError(c.interp_order_at, "interp_order needs coupling loose");
+    if (o.dt_out != 0) {
+        // As runtime::output_stride checks it.
+        const double steps = o.dt_out / o.dt;
+        if (!(o.dt_out > 0) || std::round(steps) < 1 ||
+            std::fabs(steps - std::round(steps)) > 1e-9 * std::round(steps))
+            throw CaseError(c.dt_out_at, "dt_out must be a positive multiple of dt");
+    }
+}
+
 } // namespace
 
 std::string Manifest::where(int line, int col) const {
@@ -143,7 +174,9 @@ Manifest read_manifest(const std::string& path) {
                     throw diag::UserError(m.where(line_no, f.col) + ": error: unknown column '" +
                                           f.text + "'" + diag::did_you_mean(f.text, plain_columns) +
                                           " (columns: id, model, tmax, dt, method, rtol, atol, "
-                                          "set, ic, u, wind, aero, "
+                                          "set, ic, u, wind, aero, dt_out, channels, "
+                                          "controller, controller_input, coupling, "
+                                          "interp_order, time_limit, "
                                           "set:NAME, ic:NAME, u:NAME)");
                 if (std::find(m.columns.begin(), m.columns.end(), f.text) != m.columns.end())
                     throw diag::UserError(m.where(line_no, f.col) + ": error: column '" + f.text +
@@ -209,7 +242,8 @@ BatchCase case_of(const Manifest& m, const ManifestRow& row) {
     for (std::size_t i = 0; i < m.columns.size(); ++i) {
         const std::string& column = m.columns[i];
         const ManifestField& f = row.fields[i];
-        if (!f.text.empty()) c.text += column + "=" + f.text + "\n";
+        // The time limit decides whether a case may finish, not what it computes.
+        if (!f.text.empty() && column != "time_limit") c.text += column + "=" + f.text + "\n";
         if (column == "id") {
             if (!valid_id(f.text))
                 throw CaseError(at(f), "the id '" + f.text +
@@ -245,6 +279,49 @@ BatchCase case_of(const Manifest& m, const ManifestRow& row) {
                 if (!readable(c.sim.aero))
                     throw CaseError(at(f), "cannot read the rotor table '" + c.sim.aero + "'");
                 c.files.push_back(c.sim.aero);
+            }
+        } else if (column == "controller" || column == "controller_input") {
+            if (!f.text.empty()) {
+                // A path, never a bare name: dlopen would search the library path for one.
+                std::string path = resolved(m, f.text);
+                if (path.find('/') == std::string::npos) path = "./" + path;
+                if (!readable(path))
+                    throw CaseError(at(f), "cannot read the " +
+                                               std::string(column == "controller"
+                                                               ? "controller library"
+                                                               : "controller's input file") +
+                                               " '" + path + "'");
+                (column == "controller" ? c.sim.controller : c.sim.controller_input) = path;
+                c.files.push_back(path);
+            }
+        } else if (column == "dt_out") {
+            if (!f.text.empty()) {
+                c.sim.dt_out = number(f, column);
+                c.dt_out_at = at(f);
+            }
+        } else if (column == "time_limit") {
+            if (!f.text.empty()) {
+                c.time_limit = number(f, column);
+                if (!(c.time_limit > 0)) throw CaseError(at(f), "time_limit must be positive [s]");
+            }
+        } else if (column == "channels") {
+            if (f.text == "openfast")
+                c.sim.channels = driver::Channels::openfast;
+            else if (!f.text.empty() && f.text != "all")
+                throw CaseError(at(f), "channels must be all or openfast, not '" + f.text + "'");
+        } else if (column == "coupling") {
+            c.coupling_at = at(f);
+            if (f.text == "loose")
+                c.sim.coupling = driver::SimCoupling::loose;
+            else if (!f.text.empty() && f.text != "tight")
+                throw CaseError(at(f), "coupling must be tight or loose, not '" + f.text + "'");
+        } else if (column == "interp_order") {
+            if (!f.text.empty()) {
+                const double v = number(f, column);
+                if (v != 0 && v != 1 && v != 2)
+                    throw CaseError(at(f), "interp_order must be 0, 1 or 2");
+                c.sim.interp_order = static_cast<int>(v);
+                c.interp_order_at = at(f);
             }
         } else if (column == "wind") {
             c.sim.wind = f.text;
@@ -294,6 +371,7 @@ BatchCase case_of(const Manifest& m, const ManifestRow& row) {
             to.push_back(one.front());
         }
     }
+    check_combination(c);
     return c;
 }
 

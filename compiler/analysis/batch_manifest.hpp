@@ -53,8 +53,14 @@ struct BatchCase {
     /// Where each --set/--ic/--u name was given, to locate an unknown name.
     std::map<std::string, std::string> set_at, ic_at, u_at;
     std::string model_at, row_at;
-    std::string text;               // the row's content as name=value lines: what its digest covers
-    std::vector<std::string> files; // the wind file and rotor table read (their content too)
+    std::string coupling_at, interp_order_at, dt_out_at; // where given ("" when not)
+    /// time_limit: the wall time after which the case is stopped [s]; 0: the
+    /// batch's --case-time-limit (not in `text`: it does not change a result).
+    double time_limit = 0;
+    std::string text; // the row's content as name=value lines: what its digest covers
+    /// The files read (their content too): the wind files, the rotor table,
+    /// the controller library and its input file.
+    std::vector<std::string> files;
 };
 
 /// The case of a well-formed row; throws CaseError at the offending field.

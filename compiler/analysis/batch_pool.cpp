@@ -1,8 +1,6 @@
 #include "analysis/batch_pool.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <map>
 #include <sched.h>
 #include <thread>
 
@@ -45,24 +43,6 @@ StopOnSignal::~StopOnSignal() {
 
 bool StopOnSignal::stopped() const {
     return stop_requested != 0;
-}
-
-void run_on_threads(const std::vector<Job*>& jobs, std::size_t threads, const StopOnSignal& stop,
-                    const std::function<void(Job&, Loaded&)>& run) {
-    std::atomic<std::size_t> next{0};
-    auto worker = [&]() {
-        std::map<const Loaded*, Loaded> mine;
-        for (std::size_t i = next++; i < jobs.size() && !stop.stopped(); i = next++) {
-            Job& job = *jobs[i];
-            auto model = mine.find(job.model);
-            if (model == mine.end()) model = mine.emplace(job.model, *job.model).first;
-            run(job, model->second);
-        }
-    };
-    std::vector<std::thread> pool;
-    for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (std::thread& t : pool) t.join();
 }
 
 } // namespace yamsc::analysis

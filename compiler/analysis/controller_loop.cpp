@@ -7,6 +7,7 @@
 #include <yamsc/stepper.hpp>
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace yamsc::analysis {
@@ -148,6 +149,14 @@ simulate_with_controller(const runtime::ModelView& v, const runtime::SimulationO
             demand = controller->call(m);
         } catch (const std::runtime_error& e) {
             throw diag::UserError(e.what());
+        }
+        // A demand that is not a number would poison the state a step later,
+        // where the controller would no longer be named.
+        if (!std::isfinite(demand.pitch) || !std::isfinite(demand.gen_torque)) {
+            std::ostringstream msg;
+            msg << "the controller demanded a pitch of " << demand.pitch << " rad and a generator "
+                << "torque of " << demand.gen_torque << " N m at t = " << t << " s: not a number";
+            throw diag::UserError(msg.str());
         }
         // One step with the demands held, through the actuators.
         from = applied;

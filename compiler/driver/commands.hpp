@@ -144,10 +144,11 @@ struct SimOptions {
 /// `yamsc batch MANIFEST` (docs/batch.md): one `sim` per manifest row.
 struct BatchOptions {
     std::string manifest;
-    std::string output_dir;    // -o; empty: the manifest's name without .csv, plus ".out"
-    int threads = 0;           // --threads; 0: one per core
-    int shard = 1, shards = 1; // --shard k/N: the rows whose index mod N is k - 1
-    bool quiet = false;        // -q: no progress on stderr
+    std::string output_dir;     // -o; empty: the manifest's name without .csv, plus ".out"
+    int threads = 0;            // --threads; 0: one per core
+    int shard = 1, shards = 1;  // --shard k/N: the rows whose index mod N is k - 1
+    bool quiet = false;         // -q: no progress on stderr
+    double case_time_limit = 0; // --case-time-limit [s]; 0: none (a row's time_limit wins)
     /// SIGINT/SIGTERM stop the run after the cases in progress (the command
     /// line; not a library caller such as a Python worker, whose signals are
     /// its own).

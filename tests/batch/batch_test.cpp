@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <dirent.h>
 #include <random>
 #include <string>
@@ -129,6 +130,129 @@ TEST_CASE("a batch case writes the file `yamsc sim` writes with the same options
     // The summary: one line per case with the final values of the run.
     const std::string summary = read_file(dir + "/out/summary.csv");
     CHECK(summary.rfind("row,id,status,final,message,wall_s\n1,plain,ok,\"time=3,x=", 0) == 0);
+}
+
+TEST_CASE("a turbine case with a controller, loose coupling, OpenFAST's channels and dt_out is "
+          "the `yamsc sim` run") {
+    const std::string dir = scratch_dir("batch", "turbine_options");
+    const std::string operating = source_dir + "/models/nrel5mw_land_operating.mbd";
+    const std::string table = source_dir + "/models/data/Cp_Ct_Cq.NREL5MW.txt";
+    run_in(dir, "mkdir -p in && cp '" + table + "' in/table.txt && cp '" +
+                    YAMSC_MISBEHAVING_DISCON + "' in/discon.so");
+    write_file(dir + "/in/hold.in", "hold 20000\n");
+    write_file(dir + "/in/cases.csv",
+               "id,model,tmax,dt,method,aero,wind,controller,controller_input,coupling,"
+               "interp_order,channels,dt_out\n"
+               "loose," +
+                   operating +
+                   ",2,0.01,abm4,table.txt,9,discon.so,hold.in,loose,1,openfast,0.05\n"
+                   "tight," +
+                   operating + ",2,0.01,,table.txt,9,discon.so,hold.in,,,,\n");
+    const Run b = run_in(dir, "$Y batch in/cases.csv -o out --threads 2");
+    INFO(b.err);
+    REQUIRE(b.status == 0);
+    const Run s = run_in(dir, "cd in && $Y sim " + operating +
+                                  " --tmax 2 --dt 0.01 --method abm4 --aero table.txt --wind 9 "
+                                  "--controller ./discon.so --controller-input hold.in --coupling "
+                                  "loose --interp-order 1 --channels openfast --dt-out 0.05 -o "
+                                  "../loose.csv && $Y sim " +
+                                  operating +
+                                  " --tmax 2 --dt 0.01 --aero table.txt --wind 9 --controller "
+                                  "./discon.so --controller-input hold.in -o ../tight.csv");
+    INFO(s.err);
+    REQUIRE(s.status == 0);
+    for (const char* id : {"loose", "tight"}) {
+        INFO(id);
+        CHECK(read_file(dir + "/" + id + ".csv").size() > 1000);
+        CHECK(read_file(dir + "/out/" + id + ".csv") == read_file(dir + "/" + id + ".csv"));
+    }
+    CHECK(read_file(dir + "/out/loose.csv").rfind("Time_[s],", 0) == 0); // OpenFAST's names
+    // The controller and its input are inputs of the case: a changed input runs it again.
+    write_file(dir + "/in/hold.in", "hold 21000\n");
+    const Run again = run_in(dir, "$Y batch in/cases.csv -o out");
+    CHECK(has(again.err, "2 cases, 0 done before, 2 to run"));
+    // A result may not replace the controller.
+    write_file(dir + "/in/own.csv",
+               "id,model,tmax,dt,controller\ndiscon.so," + operating + ",1,0.01,discon.so.csv\n");
+    run_in(dir, "cp in/discon.so in/discon.so.csv");
+    const Run own = run_in(dir, "$Y batch in/own.csv -o in");
+    CHECK(own.status == 1);
+    CHECK(has(own.err, "would replace"));
+    // Combinations sim refuses are refused at their place.
+    write_file(dir + "/in/bad.csv", "id,model,tmax,dt,method,coupling,interp_order,dt_out\n"
+                                    "a," +
+                                        operating +
+                                        ",1,0.01,cvode,loose,,\n"
+                                        "b," +
+                                        operating +
+                                        ",1,0.01,,,1,\n"
+                                        "c," +
+                                        operating + ",1,0.01,,,,0.015\n");
+    const Run bad = run_in(dir, "$Y batch in/bad.csv -o bad");
+    CHECK(bad.status == 1);
+    const std::size_t coupling_col = 3 + operating.size() + std::string(",1,0.01,cvode,").size();
+    CHECK(has(bad.err, "in/bad.csv:2:" + std::to_string(coupling_col) +
+                           ": error: coupling loose steps with rk4 or abm4"));
+    CHECK(has(bad.err, ": error: interp_order needs coupling loose"));
+    CHECK(has(bad.err, ": error: dt_out must be a positive multiple of dt"));
+}
+
+TEST_CASE("a case that crashes, hangs, exits or diverges fails alone, with its reason") {
+    const std::string dir = scratch_dir("batch", "isolation");
+    const std::string operating = source_dir + "/models/nrel5mw_land_operating.mbd";
+    const std::string table = source_dir + "/models/data/Cp_Ct_Cq.NREL5MW.txt";
+    run_in(dir, "cp '" + table + "' table.txt && cp '" + YAMSC_MISBEHAVING_DISCON + "' discon.so");
+    std::string manifest = "id,model,tmax,dt,aero,wind,controller,controller_input\n";
+    for (const char* mode : {"hold 20000", "segv", "loop", "nan", "exit", "hold 30000"}) {
+        std::string id = mode;
+        id = id.substr(0, id.find(' ')) + (id.size() > 5 ? id.substr(5, 2) : "");
+        write_file(dir + "/" + id + ".in", std::string(mode) + "\n");
+        manifest += id + "," + operating + ",2,0.01,table.txt,9,discon.so," + id + ".in\n";
+    }
+    write_file(dir + "/cases.csv", manifest);
+    const auto start = std::chrono::steady_clock::now();
+    const Run b = run_in(dir, "$Y batch cases.csv -o out --threads 2 --case-time-limit 2");
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    INFO(b.err);
+    CHECK(b.status == 1);
+    CHECK(has(b.out, "6 cases, 2 ok, 4 failed"));
+    // The hanging case is stopped at its limit; the others take milliseconds.
+    MESSAGE("wall time " << wall << " s");
+    CHECK(wall < 8);
+    const std::string summary = read_file(dir + "/out/summary.csv");
+    INFO(summary);
+    CHECK(has(summary, "2,segv,error,,\"cases.csv:3:1: error: killed by SIGSEGV"));
+    CHECK(has(summary, "3,loop,error,,cases.csv:4:1: error: time limit of 2 s exceeded"));
+    CHECK(has(summary, "4,nan,error,,cases.csv:5:1: error: the controller demanded a pitch of "
+                       "nan rad"));
+    CHECK(has(summary, "5,exit,error,,cases.csv:6:1: error: the case's process exited with "
+                       "status 3"));
+    CHECK(has(b.err, "cases.csv:3:1: error: killed by SIGSEGV"));
+    // The diverged case says when.
+    const std::size_t nan_at = summary.find("4,nan,error");
+    CHECK(has(summary.substr(nan_at, summary.find('\n', nan_at) - nan_at), "at t = 0.5"));
+    // No result of a failed case, nothing half-written.
+    CHECK(files_of(dir + "/out", ".csv") == std::vector<std::string>{"hold20.csv", "hold30.csv"});
+    CHECK(temporaries(dir + "/out").empty());
+    const Run s = run_in(dir, "$Y sim " + operating +
+                                  " --tmax 2 --dt 0.01 --aero table.txt --wind 9 --controller "
+                                  "./discon.so --controller-input hold20.in -o hold20.csv && $Y "
+                                  "sim " +
+                                  operating +
+                                  " --tmax 2 --dt 0.01 --aero table.txt --wind 9 --controller "
+                                  "./discon.so --controller-input hold30.in -o hold30.csv");
+    REQUIRE(s.status == 0);
+    for (const char* id : {"hold20", "hold30"}) {
+        INFO(id);
+        CHECK(read_file(dir + "/out/" + id + ".csv") == read_file(dir + "/" + id + ".csv"));
+    }
+    // A time_limit column wins over --case-time-limit, row by row.
+    write_file(dir + "/limit.csv", "id,model,tmax,dt,aero,wind,controller,controller_input,"
+                                   "time_limit\nloop," +
+                                       operating + ",2,0.01,table.txt,9,discon.so,loop.in,1\n");
+    const Run limited = run_in(dir, "$Y batch limit.csv -o limited --case-time-limit 100");
+    CHECK(has(limited.err, "limit.csv:2:1: error: time limit of 1 s exceeded"));
 }
 
 TEST_CASE("wind and rotor table files are relative to the manifest; a missing one is located") {

@@ -37,6 +37,9 @@ BatchOptions parse_batch(const Args& a) {
         if (a.has("--threads")) throw UsageError("--threads must be a whole number >= 1");
     o.threads = static_cast<int>(threads);
     if (a.has("--shard")) parse_shard(a.get("--shard"), o);
+    o.case_time_limit = a.number("--case-time-limit", 0);
+    if (a.has("--case-time-limit") && !(o.case_time_limit > 0))
+        throw UsageError("--case-time-limit must be positive [s]");
     o.quiet = a.has("-q");
     o.stop_on_signal = true;
     return o;
@@ -53,17 +56,20 @@ BatchMergeOptions parse_batch_merge(const Args& a) {
 
 Command batch_command() {
     return make_command(
-        "batch", "one sim per row of a manifest, on a pool of threads, restartable",
-        "yamsc batch CASES.csv [-o OUTDIR] [--threads N] [--shard k/N] [-q]",
+        "batch", "one sim per row of a manifest, each case in its own process, restartable",
+        "yamsc batch CASES.csv [-o OUTDIR] [--threads N] [--shard k/N] [--case-time-limit S] [-q]",
         R"(  CASES.csv           columns id,model,tmax,dt and optionally method,rtol,atol,set,ic,u,
-                      wind,aero,set:NAME,ic:NAME,u:NAME (docs/batch.md)
+                      wind,aero,dt_out,channels,controller,controller_input,coupling,
+                      interp_order,time_limit,set:NAME,ic:NAME,u:NAME (docs/batch.md)
   -o OUTDIR           where <id>.csv and summary.csv go (default: CASES.out)
-  --threads N         threads (default: one per core)
+  --threads N         cases at a time (default: one per core)
+  --case-time-limit S a case still running after S seconds is stopped and failed
   --shard k/N         only the rows whose index mod N is k - 1 (yamsc batch merge --help)
   -q                  no progress on stderr
 A rerun runs only the cases not finished yet (or edited).
 )",
-        {{"-o", "--threads", "--shard"}, {"-q"}}, parse_batch, analysis::batch);
+        {{"-o", "--threads", "--shard", "--case-time-limit"}, {"-q"}}, parse_batch,
+        analysis::batch);
 }
 
 Command batch_merge_command() {
