@@ -13,7 +13,7 @@ const std::vector<Command>& command_table() {
     static const std::vector<Command> table = {
         compile_command(),       check_command(),       eval_command(), sim_command(),
         batch_command(),         batch_merge_command(), lin_command(),  trim_command(),
-        from_openfast_command(), rotor_table_command(), sid_command(),
+        from_openfast_command(), rotor_table_command(), sid_command(),  turbulence_command(),
     };
     return table;
 }

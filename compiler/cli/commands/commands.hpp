@@ -16,5 +16,6 @@ Command trim_command();          // lin_trim.cpp
 Command from_openfast_command(); // from_openfast.cpp
 Command rotor_table_command();   // rotor_table.cpp
 Command sid_command();           // sid.cpp
+Command turbulence_command();    // turbulence.cpp
 
 } // namespace yamsc::cli
