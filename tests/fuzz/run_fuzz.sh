@@ -58,6 +58,9 @@ case $target in
   fuzz_performance_table)
     seeds=("$root"/models/data/Cp_Ct_Cq.*.txt)
     dict= ;;
+  fuzz_turbsim_input)
+    seeds=("$root"/tests/data/reference/turbulence/*.inp)
+    dict= ;;
   *)
     echo "run_fuzz.sh: unknown target '$target'" >&2
     exit 2 ;;

@@ -190,12 +190,13 @@ TEST_CASE("over 20 seeds: the u coherence within 0.05 of the IEC curve at 36, 72
 
 TEST_CASE("over 20 seeds: the hub's sigma_u against the IEC value and the discrete spectrum's") {
     // Unscaled (ScaleIEC 0), the field carries the discrete Kaimal spectrum's
-    // variance, sum S(f_k) df over k = 1 .. N/2 - 1: a record of length T holds no
-    // frequency below 1/T, and for L_u / V_hub = 18.9 s that part is 7.5 % of the
-    // variance at T = 600 s (sigma 3.8 % low) and 1.3 % at T = 3600 s. The IEC
-    // target is checked on hour-long records (3 x 3 points, the hub in the middle);
-    // 10-minute records against the discrete spectrum's sigma, and ScaleIEC 1 and 2
-    // against the target exactly.
+    // variance, sum S(f_k) df over k = 1 .. N/2 - 1: a record of length T at dt
+    // holds no frequency below 1/T nor above the Nyquist frequency, and for
+    // L_u / V_hub = 18.9 s and dt = 0.1 s those are 7.4 % of the variance at
+    // T = 600 s (sigma 3.8 % low) and 2.5 % at T = 3600 s. The IEC target is
+    // checked on hour-long records (3 x 3 points, the hub in the middle),
+    // 10-minute ones against the discrete spectrum's sigma; ScaleIEC 1 puts the
+    // hub on the target exactly (the next test case).
     for (const double hours : {1.0 / 6, 1.0}) {
         TurbulenceSpec s = small_case(0);
         s.ny = s.nz = 3;
