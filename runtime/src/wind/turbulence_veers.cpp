@@ -128,7 +128,7 @@ TurbulenceField generate_turbulence(const TurbulenceSpec& s,
             }
             const double done = (c * nf + k) / work_total;
             if (progress && done - last_report >= 0.01) {
-                progress(0.9 * done);
+                progress(done);
                 last_report = done;
             }
         }
