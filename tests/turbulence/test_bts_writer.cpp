@@ -1,12 +1,14 @@
 // The .bts writer (formats/wind/turbsim_bts_writer.cpp) against TurbSim's
 // WrBinTURBSIM: the header's bytes as TurbSim wrote them for the reference file
 // (U18_s1.bts), the per-component scaling and Fortran's NINT rounding.
+#include "analysis/turbulence_spec.hpp"
 #include "wind/turbsim_bts.hpp"
 
 #include <doctest/doctest.h>
 
 #include <cstdint>
 #include <cstring>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -57,13 +59,23 @@ constexpr std::size_t data_start = 2 + 4 * 4 + 6 * 4 + 6 * 4 + 4;
 
 } // namespace
 
+// xxd of TurbSim's U18_s1.bts: id 7, nz 15, ny 15, no tower, 7362 steps, dz = dy =
+// 145/14, 0.05 s, 18 m/s, 90 m, bottom 17.5 m.
+const unsigned char turbsim[42] = {0x07, 0x00, 0x0f, 0x00, 0x00, 0x00, 0x0f, 0x00, 0x00, 0x00, 0x00,
+                                   0x00, 0x00, 0x00, 0xc2, 0x1c, 0x00, 0x00, 0xdb, 0xb6, 0x25, 0x41,
+                                   0xdb, 0xb6, 0x25, 0x41, 0xcd, 0xcc, 0x4c, 0x3d, 0x00, 0x00, 0x90,
+                                   0x41, 0x00, 0x00, 0xb4, 0x42, 0x00, 0x00, 0x8c, 0x41};
+
 TEST_CASE("the header's first 42 bytes as TurbSim wrote U18_s1.bts") {
-    // xxd of TurbSim's file: id 7, nz 15, ny 15, no tower, 7362 steps, dz = dy =
-    // 145/14, 0.05 s, 18 m/s, 90 m, bottom 17.5 m.
-    const unsigned char turbsim[42] = {
-        0x07, 0x00, 0x0f, 0x00, 0x00, 0x00, 0x0f, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
-        0xc2, 0x1c, 0x00, 0x00, 0xdb, 0xb6, 0x25, 0x41, 0xdb, 0xb6, 0x25, 0x41, 0xcd, 0xcc,
-        0x4c, 0x3d, 0x00, 0x00, 0x90, 0x41, 0x00, 0x00, 0xb4, 0x42, 0x00, 0x00, 0x8c, 0x41};
+    // The bytes above are the file's, where the file is (the full-field reader's
+    // tests keep it beside U18_s1.inp).
+    std::ifstream file(std::string(YAMSC_TEST_DATA_DIR) + "/reference/turbulence/U18_s1.bts",
+                       std::ios::binary);
+    if (file) {
+        char head[sizeof turbsim] = {};
+        file.read(head, sizeof head);
+        CHECK(std::memcmp(head, turbsim, sizeof turbsim) == 0);
+    }
     FullFieldGrid g = grid_of(15, 15, 7362);
     g.dy = g.dz = 145.0 / 14;
     g.u_hub = 18;
@@ -72,6 +84,23 @@ TEST_CASE("the header's first 42 bytes as TurbSim wrote U18_s1.bts") {
     const std::string s = written(g);
     CHECK(std::memcmp(s.data(), turbsim, sizeof turbsim) == 0);
     CHECK(s.size() == data_start + 15u * 15 * 7362 * 3 * 2);
+}
+
+TEST_CASE("U18_s1.inp's layout, written, gives the header TurbSim wrote from it") {
+    yamsc::driver::TurbulenceOptions o;
+    o.input = std::string(YAMSC_TEST_DATA_DIR) + "/reference/turbulence/U18_s1.inp";
+    std::vector<std::string> warnings;
+    const yamsc::runtime::TurbulenceSpec s = yamsc::analysis::turbulence_spec(o, warnings);
+    const yamsc::runtime::TurbulenceLayout l = yamsc::runtime::turbulence_layout(s);
+    FullFieldGrid g = grid_of(s.ny, s.nz, l.steps_written);
+    g.dy = l.dy;
+    g.dz = l.dz;
+    g.dt = s.time_step;
+    g.u_hub = yamsc::runtime::iec_parameters(s).u_hub;
+    g.z_hub = s.hub_height;
+    g.z_bottom = l.z_bottom;
+    g.periodic = s.periodic;
+    CHECK(std::memcmp(written(g).data(), turbsim, sizeof turbsim) == 0);
 }
 
 TEST_CASE("per component IntRng / (max - min) and IntMin - slope min; NINT halves away from 0") {
