@@ -265,3 +265,31 @@ TEST_CASE("a seed gives one field; another seed another; ScaleIEC 1 hits the tar
               doctest::Approx(d.iec.sigma[comp]).epsilon(1e-9));
     }
 }
+
+TEST_CASE(
+    "an even grid: the hub an extra point, not written; ScaleIEC 2 puts every point on target") {
+    TurbulenceSpec s = small_case(11);
+    s.ny = 4;
+    s.nz = 3;
+    s.scaling = SigmaScaling::each_point;
+    const TurbulenceField f = generate_turbulence(s);
+    CHECK(!f.layout.hub_on_grid);
+    const std::size_t n = static_cast<std::size_t>(f.layout.steps_written), ng = 12;
+    REQUIRE(f.grid.size() == n * ng * 3);
+    REQUIRE(f.hub.size() == n * 3);
+    auto sigma = [&](auto value) {
+        double sum = 0, sum2 = 0;
+        for (std::size_t it = 0; it < n; ++it) {
+            sum += value(it);
+            sum2 += value(it) * value(it);
+        }
+        return std::sqrt(sum2 / static_cast<double>(n) - sum * sum / static_cast<double>(n * n));
+    };
+    for (std::size_t c = 0; c < 3; ++c) {
+        CHECK(sigma([&](std::size_t it) { return f.hub[it * 3 + c]; }) ==
+              doctest::Approx(f.iec.sigma[c]).epsilon(1e-9));
+        for (std::size_t i = 0; i < ng; ++i)
+            CHECK(sigma([&](std::size_t it) { return double(f.grid[(it * ng + i) * 3 + c]); }) ==
+                  doctest::Approx(f.iec.sigma[c]).epsilon(1e-5));
+    }
+}
