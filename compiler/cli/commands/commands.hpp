@@ -18,5 +18,6 @@ Command rotor_table_command();   // rotor_table.cpp
 Command sid_command();           // sid.cpp
 Command loads_command();         // loads.cpp
 Command turbulence_command();    // turbulence.cpp
+Command dlc_command();           // dlc.cpp
 
 } // namespace yamsc::cli
