@@ -74,8 +74,9 @@ struct Child {
     // A controller's chatter goes to stderr: stdout is the batch's result line.
     ::dup2(STDERR_FILENO, STDOUT_FILENO);
     try {
-        Loaded model = *job.model;
-        run(job, model);
+        // This process's copy of the batch's memory is its own: the case binds
+        // its parameters in the loaded model itself, with no copy of it.
+        run(job, const_cast<Loaded&>(*job.model));
     } catch (const std::exception& e) {
         job.summary.ok = false;
         job.summary.message = e.what();
