@@ -6,12 +6,19 @@
 
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 namespace yamsc::analysis {
 
 int dlc(const DlcOptions& o, std::ostream& out, std::ostream& err);
 
-/// Writes the .bts of a TurbSim input (`yamsc turbulence INPUT -o BTS`).
-void generate_bts(const std::string& turbsim_input, const std::string& bts);
+/// A field to make: its TurbSim input and the .bts.
+struct WindFile {
+    std::string input, bts;
+};
+
+/// Writes each .bts from its input as `yamsc turbulence INPUT -o BTS` does,
+/// `threads` at a time (0: one per core), a line on `err` as each starts.
+void generate_winds(const std::vector<WindFile>& winds, int threads, std::ostream& err);
 
 } // namespace yamsc::analysis

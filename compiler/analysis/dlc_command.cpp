@@ -5,6 +5,7 @@
 
 #include <yamsc/atomic_file.hpp>
 
+#include <cstdio>
 #include <filesystem>
 #include <ostream>
 #include <set>
@@ -58,18 +59,23 @@ int dlc(const DlcOptions& o, std::ostream& out, std::ostream& err) {
         return path;
     };
 
-    std::size_t generated = 0;
-    for (std::size_t i = 0; i < t.winds.size(); ++i) {
-        const DlcWind& w = t.winds[i];
+    // A field whose input changed is removed before the input is written: a
+    // run stopped in between leaves no field that another input made.
+    std::vector<WindFile> to_make;
+    for (const DlcWind& w : t.winds) {
         const std::string stem = o.output_dir + "/wind/" + w.name;
-        const bool changed = write_if_changed(output(stem + ".inp"), turbsim_input_text(o, w));
-        if (o.write_bts && (changed || ::access((stem + ".bts").c_str(), R_OK) != 0)) {
-            err << "yamsc: dlc: wind " << i + 1 << "/" << t.winds.size() << ": " << stem << ".bts\n"
-                << std::flush;
-            generate_bts(stem + ".inp", output(stem + ".bts"));
-            ++generated;
+        const std::string text = turbsim_input_text(o, w);
+        const bool changed =
+            ::access((stem + ".inp").c_str(), R_OK) != 0 || read_all(stem + ".inp") != text;
+        if (changed) {
+            std::remove(output(stem + ".bts").c_str());
+            runtime::write_file_atomically(output(stem + ".inp"), text);
         }
+        if (o.write_bts && ::access((stem + ".bts").c_str(), R_OK) != 0)
+            to_make.push_back({stem + ".inp", output(stem + ".bts")});
     }
+    generate_winds(to_make, o.threads, err);
+    const std::size_t generated = to_make.size();
     std::set<std::string> inflows;
     for (const DlcCase& c : t.cases)
         if (inflows.insert(c.inflow).second)

@@ -41,6 +41,7 @@ struct DlcOptions {
     double wind_dt = 0.05;             // the wind field's time step [s]
     double shear = 0.2;                // the NTM and ETM power law (EWM: 0.11, IEC (16))
     bool write_bts = true;             // --no-bts: the TurbSim inputs only
+    int threads = 0;                   // --threads: fields made at a time; 0: one per core
 };
 
 /// One distinct turbulent wind field.

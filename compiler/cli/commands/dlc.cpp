@@ -97,6 +97,10 @@ DlcOptions parse_dlc(const Args& a) {
     o.wind_dt = a.number("--wind-dt", o.wind_dt);
     o.shear = a.number("--shear", o.shear);
     o.write_bts = !a.has("--no-bts");
+    const double threads = a.number("--threads", 0);
+    if (a.has("--threads") && (threads != std::floor(threads) || threads < 1 || threads > 4096))
+        throw UsageError("--threads must be a whole number >= 1");
+    o.threads = static_cast<int>(threads);
     return o;
 }
 
@@ -118,7 +122,7 @@ Command dlc_command() {
         "name=v,..]\n"
         "             [--dt DT] [--dt-out DT] [--time T] [--transient T] [--grid "
         "N] [--grid-size M]\n"
-        "             [--wind-dt DT] [--shear A] [--no-bts]",
+        "             [--wind-dt DT] [--shear A] [--no-bts] [--threads N]",
         R"(  MODEL.mbd           the operating turbine (its controller's inputs pitch and gen_torque)
   -o FOLDER           the batch folder: cases.csv, table.csv, wind/ (docs/dlc.md)
   --hub-height H      [m] (required)
@@ -147,6 +151,7 @@ Command dlc_command() {
   --wind-dt DT        the wind field's time step (default 0.05 s)
   --shear A           the power law of NTM and ETM (default 0.2; EWM: 0.11)
   --no-bts            the TurbSim inputs only, not the .bts files
+  --threads N         fields made at a time (default: one per core)
 )",
         {{"-o",           "--hub-height",   "--rotor-diameter", "--dlc",
           "--class",      "--cut-in",       "--cut-out",        "--bin",
