@@ -159,7 +159,7 @@ Command dlc_command() {
           "--parked-yaw", "--yaw-step",     "--controller",     "--controller-input",
           "--aero",       "--parked-model", "--parked-u",       "--dt",
           "--dt-out",     "--time",         "--transient",      "--grid",
-          "--grid-size",  "--wind-dt",      "--shear"},
+          "--grid-size",  "--wind-dt",      "--shear",          "--threads"},
          {"--no-bts"}},
         parse_dlc, analysis::dlc);
 }
