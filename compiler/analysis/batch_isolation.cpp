@@ -7,6 +7,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <fcntl.h>
 #include <iostream>
 #include <poll.h>
@@ -96,7 +97,9 @@ Child start(Job& job, double default_limit, const std::function<void(Job&, Loade
     std::cerr.flush();
     std::fflush(nullptr);
     int fds[2];
-    if (::pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error("cannot create a pipe");
+    if (::pipe2(fds, O_CLOEXEC) != 0)
+        throw std::runtime_error(std::string("cannot create a pipe for the case: ") +
+                                 std::strerror(errno));
     Child c;
     c.job = &job;
     c.start = Clock::now();
@@ -106,9 +109,11 @@ Child start(Job& job, double default_limit, const std::function<void(Job&, Loade
     const pid_t parent = ::getpid();
     c.pid = ::fork();
     if (c.pid < 0) {
+        const int error = errno;
         ::close(fds[0]);
         ::close(fds[1]);
-        throw std::runtime_error("cannot start a process for a case");
+        throw std::runtime_error(std::string("cannot start a process for the case: ") +
+                                 std::strerror(error));
     }
     if (c.pid == 0) {
         ::close(fds[0]);
@@ -193,7 +198,16 @@ void run_isolated(const std::vector<Job*>& jobs, std::size_t at_once, double def
     std::vector<Child> running;
     while (true) {
         while (running.size() < at_once && next < jobs.size() && !stop.stopped()) {
-            running.push_back(start(*jobs[next++], default_limit, run));
+            Job& job = *jobs[next++];
+            try {
+                running.push_back(start(job, default_limit, run));
+            } catch (const std::exception& e) {
+                // No process (too many, no memory): this case fails, the others may start.
+                job.summary.ok = false;
+                job.summary.message = job.c->row_at + ": error: " + e.what();
+                finished(job);
+                continue;
+            }
             ::fcntl(running.back().fd, F_SETFL, O_NONBLOCK);
         }
         if (running.empty()) break;

@@ -22,7 +22,8 @@ namespace {
 /// exits with its message.
 std::tuple<int, std::string, std::string> batch(const std::string& manifest,
                                                 const std::string& output_dir, int shard,
-                                                int shards, int threads, bool quiet) {
+                                                int shards, int threads, bool quiet,
+                                                double case_time_limit) {
     driver::BatchOptions o;
     o.manifest = manifest;
     o.output_dir = output_dir;
@@ -30,6 +31,7 @@ std::tuple<int, std::string, std::string> batch(const std::string& manifest,
     o.shards = shards;
     o.threads = threads;
     o.quiet = quiet;
+    o.case_time_limit = case_time_limit;
     std::ostringstream out, err;
     py::gil_scoped_release released; // the cases run for seconds to hours
     const int status = analysis::batch(o, out, err);
@@ -66,7 +68,8 @@ py::list read_batch_summary(const std::string& path) {
 
 void add_batch_functions(py::module_& mod) {
     mod.def("batch", &batch, py::arg("manifest"), py::arg("output_dir"), py::arg("shard"),
-            py::arg("shards"), py::arg("threads"), py::arg("quiet"));
+            py::arg("shards"), py::arg("threads"), py::arg("quiet"),
+            py::arg("case_time_limit") = 0.0);
     mod.def("batch_merge", &batch_merge, py::arg("dirs"), py::arg("output"));
     mod.def("read_batch_summary", &read_batch_summary, py::arg("path"));
 }

@@ -133,3 +133,18 @@ def test_an_unusable_manifest_raises_the_located_error(client, tmp_path):
         yamsc.dask.run(bad, client)
     done = subprocess.run([os.environ["YAMSC_EXE"], "batch", bad], capture_output=True, text=True)
     assert f"{bad}:1:18: error: unknown column 'colour'" in done.stderr
+
+
+def test_a_case_over_its_time_limit_fails_alone(client, models, tmp_path):
+    # 10^8 steps: far beyond a second; the other case takes milliseconds.
+    model = models / "nrel5mw_floating_3dof.mbd"
+    path = tmp_path / "limit.csv"
+    path.write_text(f"id,model,tmax,dt\nlong,{model},1e5,0.001\nshort,{model},2,0.05\n")
+    start = time.perf_counter()
+    summary = yamsc.dask.run(path, client, shards=2, frame=False, case_time_limit=1)
+    assert time.perf_counter() - start < 30
+    by_id = {row["id"]: row for row in summary}
+    assert by_id["short"]["status"] == "ok"
+    assert by_id["long"]["status"] == "error"
+    assert by_id["long"]["message"] == f"{path}:2:1: error: time limit of 1 s exceeded"
+    assert not (tmp_path / "limit.out" / "long.csv").exists()

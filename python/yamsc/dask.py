@@ -43,11 +43,14 @@ def read_summary(path, frame=None):
     return rows
 
 
-def _run_shard(manifest, outdir, shard, shards):
-    """The task of shard k/N: `yamsc batch MANIFEST -o OUTDIR --shard k/N --threads 1 -q`.
-    One thread: the cluster's threads are the parallelism. A failure of the
-    whole shard raises yamsc.Error with the CLI's message."""
-    status, out, err = _yamsc.batch(manifest, outdir, shard, shards, 1, True)
+def _run_shard(manifest, outdir, shard, shards, case_time_limit=0.0):
+    """The task of shard k/N: `yamsc batch MANIFEST -o OUTDIR --shard k/N --threads 1 -q
+    [--case-time-limit S]`. One case at a time: the cluster's threads are the
+    parallelism; each case in a process forked from the worker's, so a case that
+    crashes fails alone. A failure of the whole shard raises yamsc.Error with the
+    CLI's message."""
+    status, out, err = _yamsc.batch(manifest, outdir, shard, shards, 1, True,
+                                    case_time_limit)
     if err:
         # A model's compile notice and diagnostics, the failed rows: the worker's log.
         sys.stderr.write(err)
@@ -74,14 +77,16 @@ def _remove_other_summaries(outdir, shards):
             os.remove(os.path.join(outdir, name))
 
 
-def run(manifest, client=None, outdir=None, shards=None, frame=None):
+def run(manifest, client=None, outdir=None, shards=None, frame=None, case_time_limit=None):
     """Runs a `yamsc batch` manifest on a Dask cluster and returns its summary.
 
     client: a distributed.Client (default: the current one). outdir: the output
     folder (default: as `yamsc batch`, the manifest without .csv plus .out).
     shards: the number of tasks N (default: the workers' threads at the call;
-    give it for an adaptive cluster). A task that was run before in the same
-    folder reuses its finished cases, as `yamsc batch` does.
+    give it for an adaptive cluster). case_time_limit: seconds after which a
+    case is stopped and failed (`--case-time-limit`; a row's time_limit wins).
+    A task that was run before in the same folder reuses its finished cases,
+    as `yamsc batch` does.
 
     Returns the merged summary (OUTDIR/summary.csv, see read_summary); a row
     that failed has status "error" and its located message, as in `yamsc
@@ -100,7 +105,8 @@ def run(manifest, client=None, outdir=None, shards=None, frame=None):
         raise ValueError(f"shards must be at least 1, not {n}")
     _remove_other_summaries(outdir, n)
     tag = uuid.uuid4().hex[:8]
-    futures = [client.submit(_run_shard, manifest, outdir, k, n, pure=False,
+    limit = float(case_time_limit) if case_time_limit is not None else 0.0
+    futures = [client.submit(_run_shard, manifest, outdir, k, n, limit, pure=False,
                              key=f"yamsc-batch-{k}-of-{n}-{tag}")
                for k in range(1, n + 1)]
     try:
