@@ -131,6 +131,7 @@ TEST_CASE("a DLC 1.2 table: 2 speeds x 2 seeds x 2 yaw misalignments") {
         CHECK(g.dy == doctest::Approx(145.0 / 4));
         CHECK(g.dt == doctest::Approx(0.1));
         CHECK(g.z_hub == doctest::Approx(90));
+        CHECK(g.u_hub == doctest::Approx(name[6] == '8' ? 8.0 : 14.0)); // NTM_U08.0, NTM_U14.0
         CHECK(g.z_bottom == doctest::Approx(90 - 145.0 / 2));
         CHECK((g.nt - 1) * g.dt >= 25);
     }
