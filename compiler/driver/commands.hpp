@@ -11,6 +11,7 @@
 // option once; the commands never compare option strings.
 #include "driver/values.hpp"
 
+#include <cstdint>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -188,6 +189,28 @@ struct RotorTableOptions {
     std::vector<double> tsr, pitch_deg; // --tsr, --pitch
     double wind = 11.4;                 // --wind [m/s]
     int azimuths = 6;                   // --azimuths per blade passage
+};
+
+/// `yamsc turbulence`: IEC Kaimal turbulence as a TurbSim .bts file. Each option
+/// given replaces the input file's entry (without a file, the options are all).
+enum class TurbulenceCharacteristicOption { A, B, C, percent };
+enum class TurbulenceModelOption { ntm, etm1, etm2, etm3 }; // NTM, 1ETM, 2ETM, 3ETM
+enum class TurbulenceProfileOption { power_law, logarithmic };
+struct TurbulenceOptions {
+    std::string input;                                            // a TurbSim input file, or empty
+    std::string output;                                           // -o FILE.bts
+    std::optional<TurbulenceCharacteristicOption> characteristic; // --class
+    double intensity_percent = 0;                                 // --class 12.5
+    std::optional<TurbulenceModelOption> model;                   // --model
+    std::optional<TurbulenceProfileOption> profile;               // --profile
+    std::optional<double> speed, hub_height, ref_height; // --speed, --hub-height, --ref-height
+    std::optional<int> ny, nz;                           // --grid NYxNZ
+    std::optional<double> width, height;                 // --size W[xH]
+    std::optional<double> time_step, time;               // --dt, --time
+    std::optional<std::int64_t> seed;                    // --seed
+    std::optional<double> shear, roughness;              // --shear, --roughness
+    std::optional<int> scale;                            // --scale 0|1|2
+    bool periodic = false;                               // --periodic
 };
 
 int compile(const CompileOptions& o, std::ostream& out, std::ostream& err);

@@ -61,6 +61,9 @@ case $target in
   fuzz_openfast_outb)
     seeds=("$root"/tests/data/reference/loads/FASTOutBin.outb "$here"/seeds/openfast_outb/*)
     dict= ;;
+  fuzz_turbsim_input)
+    seeds=("$root"/tests/data/reference/turbulence/*.inp)
+    dict= ;;
   *)
     echo "run_fuzz.sh: unknown target '$target'" >&2
     exit 2 ;;

@@ -17,5 +17,6 @@ Command from_openfast_command(); // from_openfast.cpp
 Command rotor_table_command();   // rotor_table.cpp
 Command sid_command();           // sid.cpp
 Command loads_command();         // loads.cpp
+Command turbulence_command();    // turbulence.cpp
 
 } // namespace yamsc::cli
