@@ -68,6 +68,8 @@ public:
     }
 
     std::uint64_t offset() const { return offset_; }
+    /// Whether the stream told its size (require() then checks).
+    bool sized() const { return size_ != unknown; }
 
 private:
     static constexpr std::uint64_t unknown = std::numeric_limits<std::uint64_t>::max();

@@ -89,8 +89,12 @@ FullFieldGrid read_turbsim_bts(std::istream& in, const std::string& source) {
         b.fail(at_chars, std::to_string(g.nt) + " times of " + std::to_string(g.ny) + " x " +
                              std::to_string(g.nz) + " points are too many");
     b.require(2 * static_cast<std::uint64_t>(grid_values + tower_values), "the velocities");
-    g.grid.resize(static_cast<std::size_t>(grid_values));
-    g.tower.resize(static_cast<std::size_t>(tower_values));
+    // Grown as times are read: a stream that cannot tell its size gets no more
+    // memory than the data it holds.
+    if (b.sized()) {
+        g.grid.reserve(static_cast<std::size_t>(grid_values));
+        g.tower.reserve(static_cast<std::size_t>(tower_values));
+    }
 
     // One time at once: grid then tower, components fastest (u, v, w).
     const std::size_t per_grid = static_cast<std::size_t>(g.ny) * g.nz * 3;
@@ -110,6 +114,8 @@ FullFieldGrid read_turbsim_bts(std::istream& in, const std::string& source) {
     for (int it = 0; it < g.nt; ++it) {
         const std::uint64_t at = b.offset();
         b.read(raw.data(), raw.size(), "the velocities");
+        g.grid.resize(g.grid.size() + per_grid);
+        g.tower.resize(g.tower.size() + per_tower);
         decode(raw.data(), per_grid, g.grid.data() + it * per_grid, at);
         decode(raw.data() + 2 * per_grid, per_tower, g.tower.data() + it * per_tower,
                at + 2 * per_grid);

@@ -168,6 +168,16 @@ TEST_CASE("full field: a short or impossible .bts is an error at its byte") {
           "t.bts: byte 200: the file ends in the velocities (144 bytes declared from byte 74, "
           "126 there)");
     CHECK(error(whole.substr(0, 40)) == "t.bts: byte 40: the file ends in the header");
+    // A stream that cannot tell its size: the same byte, found by reading.
+    struct Unseekable : std::stringbuf {
+        using std::stringbuf::stringbuf;
+        pos_type seekoff(off_type, std::ios_base::seekdir, std::ios_base::openmode) override {
+            return pos_type(off_type(-1));
+        }
+    } pipe(whole.substr(0, 200));
+    std::istream piped(&pipe);
+    CHECK(error_of([&] { yamsc::wind::read_turbsim_bts(piped, "t.bts"); }) ==
+          "t.bts: byte 200: the file ends in the velocities");
     std::string bad_id = whole;
     bad_id[0] = 3;
     CHECK(error(bad_id).find("t.bts: byte 0: file id 3") == 0);
