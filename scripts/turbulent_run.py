@@ -16,9 +16,10 @@ import argparse
 import csv
 import math
 import os
-import re
 import shutil
 import subprocess
+
+from wind_demo import edit
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DECK = os.path.join(ROOT, "tests", "data", "reference", "operating", "deck")
@@ -26,24 +27,6 @@ WIND = os.path.join(ROOT, "tests", "data", "reference", "turbulence", "U18_s1.bt
 PITCH = 14.9  # deg: OpenFAST's initial pitch
 CHANNELS = ["RotSpeed_[rpm]", "BlPitch1_[deg]", "GenPwr_[kW]", "RotThrust_[kN]",
             "TwrBsMyt_[kN-m]", "RootMyc1_[kN-m]", "RootMxc1_[kN-m]", "LSShftMxa_[kN-m]"]
-
-
-def set_entry(text, key, value):
-    """The value of `key` in an OpenFAST input file replaced."""
-    edited = re.sub(r"\n\s*\S+(\s+)" + re.escape(key) + r"(?=\s)",
-                    lambda m: "\n  " + value + m.group(1) + key, text, count=1)
-    if edited == text:
-        raise SystemExit("no entry %s to set" % key)
-    return edited
-
-
-def edit(path, entries):
-    with open(path) as f:
-        text = f.read()
-    for key, value in entries.items():
-        text = set_entry(text, key, value)
-    with open(path, "w") as f:
-        f.write(text)
 
 
 def statistics(path, start, end):
@@ -82,11 +65,10 @@ def main():
     shutil.rmtree(a.work, ignore_errors=True)
     shutil.copytree(DECK, deck)
     edit(os.path.join(deck, "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"),
-         {"RotSpeed": "12.1", "BlPitch(1)": str(PITCH), "BlPitch(2)": str(PITCH),
-          "BlPitch(3)": str(PITCH),
-          "OoPDefl": "2", "TTDspFA": "0.15"})
+         RotSpeed="12.1", OoPDefl="2", TTDspFA="0.15",
+         **{"BlPitch(%d)" % k: str(PITCH) for k in (1, 2, 3)})
     edit(os.path.join(deck, "NRELOffshrBsline5MW_InflowWind.dat"),
-         {"WindType": "3", "FileName_BTS": '"%s"' % WIND})
+         WindType="3", FileName_BTS='"%s"' % WIND)
     model = os.path.join(a.work, "turbine.mbd")
     subprocess.run([a.yamsc, "from-openfast", os.path.join(deck, "NREL-5MW.fst"), "-o", model],
                    check=True)
