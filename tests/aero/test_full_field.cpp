@@ -84,7 +84,8 @@ std::string write(const std::string& name, const std::string& bytes) {
 
 /// An InflowWind file of WindType `type` naming `bts` and the HAWC box `box`
 /// (its section's entries given).
-std::string inflowwind(int type, const std::string& bts, const std::string& hawc) {
+std::string inflowwind(int type, const std::string& bts, const std::string& hawc,
+                       const std::string& direction = "0") {
     return "------- InflowWind v3.01.* INPUT FILE ------\n"
            "test wind\n"
            "-------------------------------------------\n"
@@ -92,7 +93,9 @@ std::string inflowwind(int type, const std::string& bts, const std::string& hawc
            "          " +
            std::to_string(type) +
            "   WindType       - type\n"
-           "          0   PropagationDir - (deg)\n"
+           "          " +
+           direction +
+           "   PropagationDir - (deg)\n"
            "          0   VFlowAng       - (deg)\n"
            "False         VelInterpCubic - cubic\n"
            "================== TurbSim ====\n"
@@ -240,6 +243,22 @@ TEST_CASE("full field: frozen turbulence, linear in y, z and time, tower points 
     const Vector3d moved = f.velocity(0.25, p, f.reference_speed(0.25) + 1);
     check_near(moved - f.interpolate(0.25, p), Vector3d(11.01 / 11.06, 0, 0));
     check_near(f.velocity(0.25, p, f.reference_speed(0.25)), f.interpolate(0.25, p), 1e-12);
+}
+
+TEST_CASE("full field: PropagationDir turns the grid about the hub; velocities() is velocity()") {
+    write("tiny.bts", tiny_bts(7));
+    const auto w =
+        yamsc::runtime::open_wind(write("turned.dat", inflowwind(3, "tiny.bts", "", "90")));
+    const FullField& f = full(w);
+    // Wind towards -y: the ground point (2.5, 0, 25) is (0, 2.5, 25) in the wind's
+    // axes; there (u, v, w), in ground axes (v, -u, w).
+    const Vector3d in_wind = decoded(150 + 5 + 1.5);
+    check_near(f.interpolate(0.25, {2.5, 0, 25}), Vector3d(in_wind.y(), -in_wind.x(), in_wind.z()));
+    const Vector3d points[] = {{2.5, 0, 25}, {-1, 3, 22}, {0, 0, 12}};
+    Vector3d out[3];
+    const double v = f.reference_speed(0.3) + 0.5;
+    f.velocities(0.3, points, 3, v, out);
+    for (int i = 0; i < 3; ++i) check_near(out[i], f.velocity(0.3, points[i], v), 1e-15);
 }
 
 TEST_CASE("full field: a periodic grid wraps and starts at the rotor; no tower is an error") {
