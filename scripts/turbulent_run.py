@@ -80,6 +80,8 @@ def main():
            # The controller's pitch starts where OpenFAST's run starts (ElastoDyn's BlPitch).
            "--u", "pitch=%.10g" % (PITCH * math.pi / 180),
            "--tmax", a.tmax, "--dt", "0.00625", "--method", "abm4",
+           # The deck's ModCoupling 1 and InterpOrder 2, as the model's header writes them.
+           "--coupling", "loose", "--interp-order", "2",
            "--channels", "openfast", "-o", out]
     print("+", " ".join(cmd), flush=True)
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
