@@ -50,6 +50,36 @@ def statistics(path, start, end):
     return out
 
 
+def prepare(yamsc, work):
+    """The deck in `work/deck` and its model `work/turbine.mbd` (from-openfast)."""
+    deck = os.path.join(work, "deck")
+    shutil.rmtree(work, ignore_errors=True)
+    shutil.copytree(DECK, deck)
+    edit(os.path.join(deck, "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"),
+         RotSpeed="12.1", OoPDefl="2", TTDspFA="0.15",
+         **{"BlPitch(%d)" % k: str(PITCH) for k in (1, 2, 3)})
+    edit(os.path.join(deck, "NRELOffshrBsline5MW_InflowWind.dat"),
+         WindType="3", FileName_BTS='"%s"' % WIND)
+    model = os.path.join(work, "turbine.mbd")
+    subprocess.run([yamsc, "from-openfast", os.path.join(deck, "NREL-5MW.fst"), "-o", model],
+                   check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return model, deck
+
+
+def sim_command(yamsc, model, deck, rosco, tmax, out):
+    """The run as the model's header writes it (ROSCO given by its library)."""
+    return [yamsc, "sim", model,
+            "--aero", os.path.join(deck, "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat"),
+            "--wind", os.path.join(deck, "NRELOffshrBsline5MW_InflowWind.dat"),
+            "--controller", rosco, "--controller-input", os.path.join(deck, "DISCON.IN"),
+            # The controller's pitch starts where OpenFAST's run starts (ElastoDyn's BlPitch).
+            "--u", "pitch=%.10g" % (PITCH * math.pi / 180),
+            "--tmax", str(tmax), "--dt", "0.00625", "--method", "abm4",
+            # The deck's ModCoupling 1 and InterpOrder 2, as the model's header writes them.
+            "--coupling", "loose", "--interp-order", "2",
+            "--dt-out", "0.05", "--channels", "openfast", "-o", out]
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -61,28 +91,9 @@ def main():
     p.add_argument("--start", type=float, default=60.0,
                    help="the statistics from this time on [s] (the start-up transient left out)")
     a = p.parse_args()
-    deck = os.path.join(a.work, "deck")
-    shutil.rmtree(a.work, ignore_errors=True)
-    shutil.copytree(DECK, deck)
-    edit(os.path.join(deck, "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"),
-         RotSpeed="12.1", OoPDefl="2", TTDspFA="0.15",
-         **{"BlPitch(%d)" % k: str(PITCH) for k in (1, 2, 3)})
-    edit(os.path.join(deck, "NRELOffshrBsline5MW_InflowWind.dat"),
-         WindType="3", FileName_BTS='"%s"' % WIND)
-    model = os.path.join(a.work, "turbine.mbd")
-    subprocess.run([a.yamsc, "from-openfast", os.path.join(deck, "NREL-5MW.fst"), "-o", model],
-                   check=True)
+    model, deck = prepare(a.yamsc, a.work)
     out = os.path.join(a.work, "yamsc_turb_U18.csv")
-    cmd = [a.yamsc, "sim", model,
-           "--aero", os.path.join(deck, "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat"),
-           "--wind", os.path.join(deck, "NRELOffshrBsline5MW_InflowWind.dat"),
-           "--controller", a.rosco, "--controller-input", os.path.join(deck, "DISCON.IN"),
-           # The controller's pitch starts where OpenFAST's run starts (ElastoDyn's BlPitch).
-           "--u", "pitch=%.10g" % (PITCH * math.pi / 180),
-           "--tmax", a.tmax, "--dt", "0.00625", "--method", "abm4",
-           # The deck's ModCoupling 1 and InterpOrder 2, as the model's header writes them.
-           "--coupling", "loose", "--interp-order", "2",
-           "--channels", "openfast", "-o", out]
+    cmd = sim_command(a.yamsc, model, deck, a.rosco, a.tmax, out)
     print("+", " ".join(cmd), flush=True)
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     end = float(a.tmax)
