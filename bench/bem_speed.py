@@ -3,8 +3,8 @@
 rotor and OpenFAST + AeroDyn + ServoDyn + ROSCO, on the NREL 5-MW deck.
 
     bem_speed.py YAMSC_EXE [--runs 3] [--tmax 200] [--winds 8,16] [--methods abm4]
-                 [--workdir DIR] [--json PATH] [--controllers BUILD/controllers]
-                 [--quiet-controller]
+                 [--couplings loose,tight] [--workdir DIR] [--json PATH]
+                 [--controllers BUILD/controllers] [--quiet-controller]
 
 Models: `yamsc from-openfast` of tests/data/reference/operating/deck (all 16
 ElastoDyn DOFs), once with its blade elements (the default: BEM, UA_Mod 3,
@@ -17,11 +17,15 @@ is not built, the NREL baseline controller. CPU time = user + system of the
 whole `yamsc sim` process, the JIT cache warmed first, minimum of --runs.
 OpenFAST's CPU time for 200 s of this deck on this class of machine is 66-78 s
 (tests/data/reference/operating); ratios are against both ends, scaled to
---tmax. The block's cost per step is the difference of the two rotors' costs
-over the steps; per right-hand side, that over the integrator's evaluations
-(4 per step with RK4, 2 with ABM4: predictor and corrector), though a step
-also evaluates the block for the controller's measurement and twice in its
-discrete update (the rotor keeps the solutions it can reuse: rotor_cache.hpp).
+--tmax. --couplings: the deck's loose coupling (`--coupling loose
+--interp-order 2`, as its header writes it: the block once per step) and, for
+comparison, tight (the block at every stage). The block's cost per step is
+the difference of the two rotors' costs over the steps; per evaluation, that
+over the block's evaluations per step: 1 loosely coupled, else the
+integrator's (4 per step with RK4, 2 with ABM4: predictor and corrector),
+though a tightly coupled step also evaluates the block for the controller's
+measurement and twice in its discrete update (the rotor keeps the solutions
+it can reuse: rotor_cache.hpp).
 """
 
 from __future__ import annotations
@@ -56,6 +60,7 @@ def main() -> int:
     ap.add_argument("--tmax", type=float, default=200.0)
     ap.add_argument("--winds", default="8,16")
     ap.add_argument("--methods", default="abm4")
+    ap.add_argument("--couplings", default="loose,tight")
     ap.add_argument("--workdir")
     ap.add_argument("--json")
     ap.add_argument("--controllers", default=str(ROOT / "build/controllers"))
@@ -92,28 +97,35 @@ def main() -> int:
     openfast = [c * a.tmax / 200 for c in OPENFAST_CPU_200S]
     for wind in a.winds.split(","):
         for method in a.methods.split(","):
-            evaluations = {"rk4": 4, "abm4": 2}[method]
-            times = {}
-            for rotor, mbd in models.items():
-                cmd = [a.yamsc, "sim", str(mbd), "--aero", aero[rotor], "--wind", wind, "--tmax",
-                       str(a.tmax), "--dt", str(dt), "--method", method, "--dt-out", "0.025",
-                       "--channels", "openfast", "-o", str(work / f"{rotor}_{wind}_{method}.csv")
-                       ] + controller
-                cpu(cmd, work)  # the JIT cache
-                times[rotor] = min(cpu(cmd, work) for _ in range(a.runs))
-                ratios = [o / times[rotor] for o in openfast]
-                results["cases"][f"{rotor}_{method}_{wind}"] = {"cpu_s": times[rotor],
-                                                               "openfast_ratio": ratios}
-                print(f"{wind:>3} m/s {rotor:15s} {method:5s} {times[rotor]:7.2f} s CPU  "
-                      f"OpenFAST/yamsc {ratios[0]:5.1f}-{ratios[1]:5.1f}")
-            per_step = (times["blade_elements"] - times["table"]) / steps
-            per_call = per_step / evaluations
-            results["cases"][f"block_{method}_{wind}"] = {
-                "us_per_step": per_step * 1e6, "us_per_rhs": per_call * 1e6,
-                "ns_per_node_per_rhs": per_call * 1e9 / AERODYN_NODES}
-            print(f"{wind:>3} m/s block cost ({method}): {per_step * 1e6:.0f} us per step, "
-                  f"{per_call * 1e6:.0f} us per right-hand side, "
-                  f"{per_call * 1e9 / AERODYN_NODES:.0f} ns per AeroDyn node")
+            for coupling in a.couplings.split(","):
+                # Block evaluations per step: once (loose), else each stage's.
+                evaluations = 1 if coupling == "loose" else {"rk4": 4, "abm4": 2}[method]
+                label = f"{method}_{coupling}"
+                times = {}
+                for rotor, mbd in models.items():
+                    cmd = [a.yamsc, "sim", str(mbd), "--aero", aero[rotor], "--wind", wind,
+                           "--tmax", str(a.tmax), "--dt", str(dt), "--method", method,
+                           "--coupling", coupling, "--dt-out", "0.025", "--channels", "openfast",
+                           "-o", str(work / f"{rotor}_{wind}_{label}.csv")] + controller
+                    if coupling == "loose":
+                        cmd += ["--interp-order", "2"]
+                    cpu(cmd, work)  # the JIT cache
+                    times[rotor] = min(cpu(cmd, work) for _ in range(a.runs))
+                    ratios = [o / times[rotor] for o in openfast]
+                    results["cases"][f"{rotor}_{label}_{wind}"] = {"cpu_s": times[rotor],
+                                                                  "openfast_ratio": ratios}
+                    print(f"{wind:>3} m/s {rotor:15s} {method:5s} {coupling:5s} "
+                          f"{times[rotor]:7.2f} s CPU  "
+                          f"OpenFAST/yamsc {ratios[0]:5.1f}-{ratios[1]:5.1f}")
+                per_step = (times["blade_elements"] - times["table"]) / steps
+                per_call = per_step / evaluations
+                results["cases"][f"block_{label}_{wind}"] = {
+                    "us_per_step": per_step * 1e6, "us_per_evaluation": per_call * 1e6,
+                    "ns_per_node_per_evaluation": per_call * 1e9 / AERODYN_NODES}
+                print(f"{wind:>3} m/s block cost ({method}, {coupling}): "
+                      f"{per_step * 1e6:.0f} us per step, "
+                      f"{per_call * 1e6:.0f} us per evaluation, "
+                      f"{per_call * 1e9 / AERODYN_NODES:.0f} ns per AeroDyn node")
     print(f"load average {results['load_average']:.1f}")
     if a.json:
         Path(a.json).write_text(json.dumps(results, indent=2) + "\n")

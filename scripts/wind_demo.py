@@ -29,8 +29,11 @@ RPM = 8.9885664
 
 def set_entry(text, key, value):
     """The value of `key` in an OpenFAST input file replaced."""
-    return re.sub(r"\n\s*\S+(\s+)" + key + r"\b", lambda m: "\n  " + value + m.group(1) + key,
-                  text, count=1)
+    edited, found = re.subn(r"\n\s*\S+(\s+)" + re.escape(key) + r"(?=\s)",
+                            lambda m: "\n  " + value + m.group(1) + key, text, count=1)
+    if not found:
+        raise SystemExit("no entry %s to set" % key)
+    return edited
 
 
 def edit(path, **entries):

@@ -143,10 +143,19 @@ private:
         if (!type) return;
         // The blade elements take InflowWind's field itself (`--wind` the InflowWind
         // file: shear, direction, upflow, a uniform wind file's columns at every node).
-        if (op_.blade_elements && (*type == 1 || *type == 2)) {
+        // A full field (TurbSim 3, HAWC 5) is named the same way; a rotor table then
+        // reads its hub-height wind (its reference speed, full_field.hpp).
+        const bool full_field = *type == 3 || *type == 5;
+        if ((op_.blade_elements && (*type == 1 || *type == 2)) || full_field) {
             if (auto it = deck_.module_files.find("InflowFile"); it != deck_.module_files.end())
                 op_.wind = it->second;
             op_.wind_from = file_line(*iw, "WindType");
+            if (full_field && !op_.blade_elements)
+                diags_.warning(Kind::NotSupported, iw->location("WindType"),
+                               "WindType = " + std::to_string(*type) +
+                                   ": the rotor block of a Cp/Ct/Cq table takes the full "
+                                   "field's hub-height wind; the field across the rotor needs "
+                                   "AeroDyn's blade elements");
             return;
         }
         if (*type == 1) {
@@ -182,8 +191,9 @@ private:
         } else {
             diags_.warning(Kind::NotSupported, iw->location("WindType"),
                            "WindType = " + std::to_string(*type) +
-                               ": only steady (1) and uniform (2) wind are converted; give "
-                               "`--wind` (a speed, a step or a time series)");
+                               ": only steady (1), uniform (2), TurbSim (3) and HAWC (5) wind "
+                               "are converted; give `--wind` (a speed, a step or a time "
+                               "series)");
         }
     }
 

@@ -72,6 +72,7 @@ WindInput open_samples(std::istream& in, const std::string& path) {
 } // namespace
 
 double WindSignal::operator()(double t) const {
+    if (period > 0) t -= std::floor((t - time.front()) / period) * period;
     if (time.size() == 1 || t <= time.front()) return speed.front();
     if (t >= time.back()) return speed.back();
     const auto it = std::upper_bound(time.begin(), time.end(), t);

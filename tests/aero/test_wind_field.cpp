@@ -168,11 +168,14 @@ TEST_CASE("wind field: the direction never jumps by half a turn between rows") {
 }
 
 TEST_CASE("wind field: the InflowWind file's errors are located") {
+    const std::string bladed =
+        write("bladed.dat", inflowwind_text("4", "0", "0", steady_section, "none.wnd"));
+    CHECK(error_of(bladed).find("bladed.dat:5:1: WindType 4 is not supported; supported: 1 "
+                                "(steady), 2 (uniform wind file), 3 (TurbSim full field), 5 "
+                                "(HAWC full field)") != std::string::npos);
     const std::string tbs =
         write("turbsim.dat", inflowwind_text("3", "0", "0", steady_section, "none.wnd"));
-    const std::string e3 = error_of(tbs);
-    CHECK(e3.find("turbsim.dat:5:1: WindType 3 is not supported; supported: 1 (steady), 2 "
-                  "(uniform wind file)") != std::string::npos);
+    CHECK(error_of(tbs).find("turbsim.dat:22:1: FileName_BTS: cannot read") != std::string::npos);
     const std::string bad =
         write("bad.dat", inflowwind_text("1", "x20", "0", steady_section, "none.wnd"));
     CHECK(error_of(bad).find("bad.dat:6:1: PropagationDir: expected a number") !=

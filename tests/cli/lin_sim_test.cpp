@@ -139,3 +139,18 @@ TEST_CASE("sim: --method abm4 and --dt-out, rows every --dt-out from the same ru
                             " --tmax 1 --dt 0.01 --dt-out 0.015 > /dev/null 2>&1";
     CHECK(WEXITSTATUS(std::system(bad.c_str())) == 2);
 }
+
+TEST_CASE("sim: --coupling loose couples load blocks only; its options are checked") {
+    const std::string model = std::string(YAMSC_SOURCE_DIR) + "/models/double_pendulum.mbd";
+    const std::string run = "sim " + model + " --tmax 0.5 --dt 0.01 --ic th1=30deg --method abm4";
+    // No block: the same run, to the last digit.
+    CHECK(capture(run + " --coupling loose --interp-order 1") == capture(run));
+    for (const char* options : {"--coupling loose --method cvode", "--interp-order 1",
+                                "--coupling loose --interp-order 3",
+                                "--coupling loose --interp-order 1.5", "--coupling medium"}) {
+        CAPTURE(options);
+        const std::string bad = std::string(YAMSC_EXE) + " sim " + model + " --tmax 1 --dt 0.01 " +
+                                options + " > /dev/null 2>&1";
+        CHECK(WEXITSTATUS(std::system(bad.c_str())) == 2);
+    }
+}

@@ -222,3 +222,46 @@ TEST_CASE("dlc refuses what it cannot make") {
                  "dlc '" + operating + "' -o out --hub-height 90 --rotor-diameter 126 --class IVB",
                  &err) == 2);
 }
+
+TEST_CASE("a DLC 1.2 folder runs in `yamsc batch` and reduces in `yamsc loads`") {
+    // The operating NREL 5-MW (4 DOFs, the Cp/Ct/Cq rotor at the hub's wind)
+    // under the baseline controller: 2 speeds x 2 seeds, 25 s.
+    const std::string dir = scratch_dir("dlc", "run");
+    const std::string table = source_dir + "/models/data/Cp_Ct_Cq.NREL5MW.txt";
+    std::string err;
+    REQUIRE_MESSAGE(run_in(dir,
+                           "dlc '" + operating +
+                               "' -o out --dlc 1.2 --hub-height 90 --rotor-diameter 126 "
+                               "--speeds 8,14 --seeds 2 --time 20 --transient 5 --grid 5 "
+                               "--wind-dt 0.1 --controller '" +
+                               YAMSC_BASELINE_DISCON + "' --aero '" + table + "'",
+                           &err) == 0,
+                    err);
+    REQUIRE_MESSAGE(run_in(dir, "batch out/cases.csv --threads 2 -q", &err) == 0, err);
+    CHECK(has(read_file(dir + "/out.txt"), "4 cases, 4 ok, 0 failed"));
+    // A case is the `yamsc sim` run of its row.
+    REQUIRE_MESSAGE(run_in(dir,
+                           "sim '" + operating +
+                               "' --tmax 25 --dt 0.01 --method abm4 --coupling loose "
+                               "--channels openfast --dt-out 0.05 --wind "
+                               "out/wind/NTM_U14.0_s2_y0.dat --aero '" +
+                               table + "' --controller '" + YAMSC_BASELINE_DISCON + "' -o lone.csv",
+                           &err) == 0,
+                    err);
+    CHECK(read_file(dir + "/lone.csv") == read_file(dir + "/out/cases.out/dlc1.2_U14.0_s2_y0.csv"));
+    // The seeds are other winds, so other runs.
+    CHECK(read_file(dir + "/out/cases.out/dlc1.2_U14.0_s1_y0.csv") !=
+          read_file(dir + "/out/cases.out/dlc1.2_U14.0_s2_y0.csv"));
+    // `yamsc loads` takes each case's speed from the table, after the transient.
+    REQUIRE_MESSAGE(run_in(dir,
+                           "loads --batch out/cases.out --speeds out/table.csv --from 5 "
+                           "--channels GenPwr,RotSpeed -o loads.csv",
+                           &err) == 0,
+                    err);
+    const std::string loads = read_file(dir + "/loads.csv");
+    INFO(loads);
+    CHECK(
+        has(loads, "\nruns,dlc1.2_U08.0_s1_y0,out/cases.out/dlc1.2_U08.0_s1_y0.csv,8,5,25,GenPwr"));
+    CHECK(has(loads,
+              "\nruns,dlc1.2_U14.0_s2_y0,out/cases.out/dlc1.2_U14.0_s2_y0.csv,14,5,25,GenPwr"));
+}

@@ -46,6 +46,12 @@ case $target in
   fuzz_inflowwind)
     seeds=("$root"/tests/data/reference/operating/deck/*InflowWind.dat "$here"/seeds/inflowwind/*)
     dict= ;;
+  fuzz_turbsim_bts)
+    seeds=("$here"/seeds/turbsim_bts/*)
+    dict= ;;
+  fuzz_hawc_box)
+    seeds=("$here"/seeds/hawc_box/*)
+    dict= ;;
   fuzz_aerodyn_primary)
     seeds=("$root"/tests/data/reference/operating/deck/*AeroDyn15.dat)
     dict= ;;

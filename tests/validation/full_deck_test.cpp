@@ -195,6 +195,37 @@ TEST_CASE("a full deck's sheared steady wind: InflowWind's file, or the hub heig
     CHECK(err.str().find("PLexp = 0.14") != std::string::npos);
 }
 
+TEST_CASE("a full deck in a TurbSim full field: the InflowWind file for either rotor") {
+    // WindType 3: the blade elements sample the field at every node; the table rotor
+    // reads its hub-height wind (the field's reference speed), with a warning.
+    namespace fs = std::filesystem;
+    const fs::path copy = fs::path(work_dir) / "deck_turbsim";
+    fs::remove_all(copy);
+    fs::create_directories(copy.parent_path());
+    fs::copy(reference_dir + "/operating/deck", copy, fs::copy_options::recursive);
+    std::string inflow = read((copy / "NRELOffshrBsline5MW_InflowWind.dat").string());
+    std::string turbsim = inflow;
+    const std::size_t type = turbsim.find(" 1   WindType");
+    REQUIRE(type != std::string::npos);
+    turbsim[type + 1] = '3';
+    std::ofstream((copy / "NRELOffshrBsline5MW_InflowWind.dat").string()) << turbsim;
+    yamsc::driver::FromOpenFastOptions o;
+    o.deck = (copy / "NREL-5MW.fst").string();
+    o.output = work_dir + "/full_deck_turbsim.mbd";
+    for (const bool table_rotor : {false, true}) {
+        CAPTURE(table_rotor);
+        if (table_rotor) o.dofs = operating_dofs;
+        std::ostringstream out, err;
+        REQUIRE_MESSAGE(yamsc::openfast::from_openfast(o, out, err) == 0, err.str());
+        const std::string text = read(o.output);
+        CHECK(text.find("#     --wind deck_turbsim/NRELOffshrBsline5MW_InflowWind.dat \\\n") !=
+              std::string::npos);
+        CHECK(text.find("--wind from NRELOffshrBsline5MW_InflowWind.dat:5") != std::string::npos);
+        CHECK((err.str().find("WindType = 3: the rotor block of a Cp/Ct/Cq table takes the "
+                              "full field's hub-height wind") != std::string::npos) == table_rotor);
+    }
+}
+
 namespace {
 
 /// The deck copied to `folder`, its ServoDyn file edited by `edits` (regex -> text).

@@ -18,52 +18,17 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path operating = fs::path(reference_dir) / "operating";
-
 /// The mean over the last `window` seconds of the run.
 double tail_mean(const Table& t, const std::string& name, double window) {
     return mean_after(t, name, t.data.front().back() - window);
 }
 
-/// Sets ElastoDyn/InflowWind entry `key` of `text` (value first, then the key) to `value`.
-void set_entry(std::string& text, const std::string& key, const std::string& value) {
-    const std::regex line("(^|\n)[ \t]*[^ \t\n]+([ \t]+" +
-                          std::regex_replace(key, std::regex(R"([()])"), R"(\$&)") + "[ \t])");
-    std::smatch m;
-    REQUIRE_MESSAGE(std::regex_search(text, m, line), "no entry " << key);
-    text.replace(static_cast<std::size_t>(m.position(0)), static_cast<std::size_t>(m.length(0)),
-                 m[1].str() + "   " + value + m[2].str());
-}
-
-std::string format(double v) {
-    std::ostringstream s;
-    s.precision(10);
-    s << v;
-    return s.str();
-}
-
 /// The deck of run `stem` in `folder`: ElastoDyn's initial state from the run's first
 /// row, InflowWind's steady wind from it unless the deck has `<stem>.wnd`.
 fs::path deck_of(const std::string& stem, const Table& run, const fs::path& folder) {
-    fs::remove_all(folder);
-    fs::create_directories(folder.parent_path());
-    fs::copy(operating / "deck", folder, fs::copy_options::recursive);
-    const fs::path ed = folder / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat";
-    std::string text = read(ed.string());
-    const std::vector<std::pair<const char*, std::vector<const char*>>> start{
-        {"OoPDefl1_[m]", {"OoPDefl"}},
-        {"IPDefl1_[m]", {"IPDefl"}},
-        {"BlPitch1_[deg]", {"BlPitch(1)", "BlPitch(2)", "BlPitch(3)"}},
-        {"Azimuth_[deg]", {"Azimuth"}},
-        {"RotSpeed_[rpm]", {"RotSpeed"}},
-        {"TTDspFA_[m]", {"TTDspFA"}},
-        {"TTDspSS_[m]", {"TTDspSS"}}};
-    for (const auto& [channel, keys] : start)
-        if (run.find(channel) >= 0)
-            for (const char* key : keys) set_entry(text, key, format(column(run, channel).front()));
-    std::ofstream(ed.string()) << text;
+    const fs::path fst = deck_starting_as(run, folder);
     const fs::path inflow = folder / "NRELOffshrBsline5MW_InflowWind.dat";
-    text = read(inflow.string());
+    std::string text = read(inflow.string());
     if (fs::exists(folder / (stem + ".wnd"))) {
         set_entry(text, "WindType", "2");
         set_entry(text, "Filename_Uni", "\"" + stem + ".wnd\"");
@@ -71,7 +36,7 @@ fs::path deck_of(const std::string& stem, const Table& run, const fs::path& fold
         set_entry(text, "HWindSpeed", format(column(run, "Wind1VelX_[m/s]").front()));
     }
     std::ofstream(inflow.string()) << text;
-    return folder / "NREL-5MW.fst";
+    return fst;
 }
 
 struct Tolerance {

@@ -8,8 +8,10 @@
 
 #include <doctest/doctest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
@@ -113,6 +115,52 @@ simulate(const Case& c, bool linear, std::string* log = nullptr,
     REQUIRE_MESSAGE(yamsc::analysis::sim(o, out, err) == 0, err.str());
     if (log) *log = out.str();
     return yamsc::analysis::read_table(o.output);
+}
+
+/// Sets ElastoDyn/InflowWind entry `key` of `text` (value first, then the key) to `value`.
+inline void set_entry(std::string& text, const std::string& key, const std::string& value) {
+    const std::regex line("(^|\n)[ \t]*[^ \t\n]+([ \t]+" +
+                          std::regex_replace(key, std::regex(R"([()])"), R"(\$&)") + "[ \t])");
+    std::smatch m;
+    REQUIRE_MESSAGE(std::regex_search(text, m, line), "no entry " << key);
+    text.replace(static_cast<std::size_t>(m.position(0)), static_cast<std::size_t>(m.length(0)),
+                 m[1].str() + "   " + value + m[2].str());
+}
+
+inline std::string format(double v) {
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    return s.str();
+}
+
+/// The ROSCO NREL 5-MW deck the operating, turbulent and aero runs were made from.
+inline const std::filesystem::path operating = std::filesystem::path(reference_dir) / "operating";
+
+/// A copy of that deck in `folder` (replaced) whose ElastoDyn initial state is the
+/// first row of OpenFAST's `run` (deflections, pitch, azimuth, rotor speed): its
+/// `.fst`.
+inline std::filesystem::path deck_starting_as(const yamsc::analysis::Table& run,
+                                              const std::filesystem::path& folder) {
+    namespace fs = std::filesystem;
+    fs::remove_all(folder);
+    fs::create_directories(folder.parent_path());
+    fs::copy(operating / "deck", folder, fs::copy_options::recursive);
+    const fs::path ed = folder / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat";
+    std::string text = read(ed.string());
+    const std::vector<std::pair<const char*, std::vector<const char*>>> start{
+        {"OoPDefl1_[m]", {"OoPDefl"}},
+        {"IPDefl1_[m]", {"IPDefl"}},
+        {"BlPitch1_[deg]", {"BlPitch(1)", "BlPitch(2)", "BlPitch(3)"}},
+        {"Azimuth_[deg]", {"Azimuth"}},
+        {"RotSpeed_[rpm]", {"RotSpeed"}},
+        {"TTDspFA_[m]", {"TTDspFA"}},
+        {"TTDspSS_[m]", {"TTDspSS"}}};
+    for (const auto& [channel, keys] : start)
+        if (run.find(channel) >= 0)
+            for (const char* key : keys) set_entry(text, key, format(column(run, channel).front()));
+    std::ofstream(ed.string()) << text;
+    return folder / "NREL-5MW.fst";
 }
 
 } // namespace validation

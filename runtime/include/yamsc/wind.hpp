@@ -13,6 +13,9 @@ namespace yamsc::runtime {
 
 struct WindSignal {
     std::vector<double> time, speed; // one point: steady
+    /// > 0: the samples repeat with this period from time.front() (a periodic
+    /// full field), else held constant beyond the ends.
+    double period = 0;
     /// The speed at time t [m/s].
     double operator()(double t) const;
 };
@@ -34,7 +37,7 @@ struct WindInput {
 /// speed [m/s], a header line skipped, or OpenFAST's uniform wind file, of which
 /// only time and speed are read: its direction, shear and gust need the
 /// reference height and length of an InflowWind file), or the path of an
-/// InflowWind input file (WindType 1 or 2: src/wind/wind_kinds.cpp).
+/// InflowWind input file (WindType 1, 2, 3 or 5: src/wind/wind_kinds.cpp).
 /// Throws std::invalid_argument (a malformed spec) / std::runtime_error (a file:
 /// "file:line:col: message").
 WindInput open_wind(const std::string& spec);

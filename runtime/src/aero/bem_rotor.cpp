@@ -50,11 +50,33 @@ BemRotor::BemRotor(const RotorInput& input, double hub_radius)
 }
 
 const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind, bool warm_start) {
-    const std::size_t nb = std::min(motion.blades.size(), input_.blades.size());
-    if (nb == 0) throw std::invalid_argument("blade elements: no blade in motion");
     const bool cached = warm_start && solved_ && frozen_.empty();
     if (cached && cache_.recall(motion, wind, result_)) return result_;
     if (!cached) cache_.clear();
+    set_inputs(motion, wind, warm_start);
+    const double rho = input_.air_density;
+    for (std::size_t k = 0; k < result_.blades.size(); ++k)
+        for (std::size_t j = 0; j < result_.blades[k].size(); ++j) {
+            NodeResult& n = result_.blades[k][j];
+            if (frozen_.empty())
+                n.bem = solve_element(n.input, options_, rho);
+            else
+                frozen_element(n, frozen_[k][j]);
+        }
+    integrate(motion);
+    if (cached) cache_.keep(result_);
+    solved_ = true;
+    return result_;
+}
+
+const RotorResult& BemRotor::element_inputs(const RotorMotion& motion, const Vec& wind) {
+    set_inputs(motion, wind, true);
+    return result_;
+}
+
+void BemRotor::set_inputs(const RotorMotion& motion, const Vec& wind, bool warm_start) {
+    const std::size_t nb = std::min(motion.blades.size(), input_.blades.size());
+    if (nb == 0) throw std::invalid_argument("blade elements: no blade in motion");
     const Vec x_disk = motion.hub_axes.col(0);
     const Mat hub = motion.hub_axes.transpose(); // AeroDyn's orientation: global to local
     const double omega = motion.hub_angular_velocity.dot(x_disk);
@@ -119,7 +141,6 @@ const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind
     const double tsr = v_dot_x == 0 ? 0.0 : omega * r_max / v_dot_x;
     const double weight = induction_weight(tsr);
 
-    const double rho = input_.air_density;
     for (std::size_t k = 0; k < nb; ++k) {
         const Vec root_z = motion.blades[k].root_axes.col(2);
         const double a = -root_z.dot(y_disk), c = root_z.dot(z_disk);
@@ -127,16 +148,11 @@ const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind
         auto& nodes = result_.blades[k];
         double r_tip = 0;
         for (const auto& n : nodes) r_tip = std::max(r_tip, n.r_local);
-        for (std::size_t j = 0; j < nodes.size(); ++j) {
-            NodeResult& n = nodes[j];
+        for (NodeResult& n : nodes) {
             n.input.chi0 = chi0;
             n.input.psi = psi;
             n.input.tip_ratio = n.r_local / r_tip;
             n.input.weight = weight;
-            if (frozen_.empty())
-                n.bem = solve_element(n.input, options_, rho);
-            else
-                frozen_element(n, frozen_[k][j]);
         }
     }
     RotorResult& r = result_;
@@ -144,10 +160,6 @@ const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind
     r.tsr = tsr;
     r.skew = chi0;
     r.v_avg_xh = v_dot_x;
-    integrate(motion);
-    if (cached) cache_.keep(r);
-    solved_ = true;
-    return r;
 }
 
 } // namespace yamsc::aero

@@ -219,8 +219,14 @@ private:
 
     /// The rotor solved quasi-steadily at the motion read in r and the wind
     /// of time `wind_time` with V_wind `wind_speed` (the steady BEM, AeroDyn's
-    /// element solves and integrals).
-    const RotorResult& solve(const double* r, double wind_time, double wind_speed) const {
+    /// element solves and integrals); with inputs_only its element inputs alone.
+    const RotorResult& solve(const double* r, double wind_time, double wind_speed,
+                             bool inputs_only = false) const {
+        const Vector3d uniform(wind_speed, 0, 0);
+        auto rotor = [&]() -> const RotorResult& {
+            return inputs_only ? rotor_->element_inputs(motion_, uniform)
+                               : rotor_->evaluate(motion_, uniform, true);
+        };
         // The values and wind of the last call again (a step's measurement, first
         // stage and update read the same): its motion stands (every input of it is
         // in the key; the wind field's time too, unless the field is steady).
@@ -229,7 +235,7 @@ private:
         if (rotor_ && motion_key_.size() == nr + 2 && motion_key_[nr] == wind_speed &&
             motion_key_[nr + 1] == key_time &&
             std::memcmp(r, motion_key_.data(), nr * sizeof(double)) == 0)
-            return rotor_->evaluate(motion_, Vector3d(wind_speed, 0, 0), true);
+            return rotor();
         motion_key_.clear();
         const std::size_t hub_n = s_.channels.hub_outputs.size();
         const double* blade_values = r + hub_n;
@@ -277,7 +283,7 @@ private:
         motion_key_.assign(r, r + nr);
         motion_key_.push_back(wind_speed);
         motion_key_.push_back(key_time);
-        return rotor_->evaluate(motion_, Vector3d(wind_speed, 0, 0), true);
+        return rotor();
     }
 
     /// The rotor just solved, with DBEMT's filtered inductions and UA's
@@ -292,10 +298,10 @@ private:
         const double wind_t = wind(r), wind_next = wind(r_next);
         const bool field_changes = s_.wind_field && !s_.wind_field->steady();
         dynamics_->update(t_next - t, wind_t != wind_next || field_changes,
-                          [&](bool at_next, bool with_wind_next) {
+                          [&](bool at_next, bool with_wind_next, bool inputs_only) {
                               const bool next = at_next || with_wind_next;
                               solve(at_next ? r_next : r, next ? t_next : t,
-                                    next ? wind_next : wind_t);
+                                    next ? wind_next : wind_t, inputs_only);
                               return ElementDynamics::Solved{&*rotor_, &motion_, &node_omega_};
                           });
     }

@@ -36,10 +36,11 @@ public:
     void apply(BemRotor& rotor, const RotorMotion& motion,
                const std::vector<std::vector<Eigen::Vector3d>>& node_omega) const;
 
-    /// One step from t to t + dt. `solve(at_next, wind_next)` evaluates the rotor
-    /// quasi-steadily with the motion of t (at_next false) or t + dt, and the wind
-    /// of t + dt (wind_next true) or of its own time, and returns it together with
-    /// the node angular velocities it filled.
+    /// One step from t to t + dt. `solve(at_next, wind_next, inputs_only)` evaluates
+    /// the rotor quasi-steadily with the motion of t (at_next false) or t + dt, and
+    /// the wind of t + dt (wind_next true) or of its own time (with inputs_only,
+    /// only its nodes' element inputs: BemRotor::element_inputs), and returns it
+    /// together with the node angular velocities it filled.
     struct Solved {
         BemRotor* rotor;
         const RotorMotion* motion;
@@ -90,20 +91,22 @@ private:
 template <class Solve> void ElementDynamics::update(double dt, bool wind_changes, Solve&& solve) {
     // BEMT_UpdateStates: UA's inputs at t with DBEMT's output at t ...
     if (ua_on_) {
-        const Solved s = solve(false, false);
+        const Solved s = solve(false, false, false);
         apply(*s.rotor, *s.motion, *s.node_omega);
         unsteady_inputs(s.rotor->result(), *s.node_omega, ua_t_);
     }
     // ... DBEMT from its inputs at t and t + dt (both with the wind of t + dt) ...
     if (dbemt_on_) {
         if (!dbemt_ || !have_next_ || wind_changes) {
-            const Solved s = solve(false, true);
+            // After the first step DBEMT's input at t takes the last step's inflow
+            // angle (sample's stale_phi), so the element inputs are enough.
+            const Solved s = solve(false, true, have_next_);
             if (!dbemt_) start_dbemt(s.rotor->result(), dt);
             sample(s.rotor->result(), u_t_, have_next_);
         } else {
             std::swap(u_t_, u_next_);
         }
-        const Solved s = solve(true, true);
+        const Solved s = solve(true, true, false);
         sample(s.rotor->result(), u_next_, false);
         have_next_ = true;
         dbemt_->update(u_t_, u_next_, x_);
@@ -113,7 +116,7 @@ template <class Solve> void ElementDynamics::update(double dt, bool wind_changes
     // inputs at t + dt see DBEMT's new output).
     if (ua_on_) {
         if (ua_settings_.model == UnsteadyModel::oye) {
-            const Solved s = solve(true, true);
+            const Solved s = solve(true, true, false);
             apply(*s.rotor, *s.motion, *s.node_omega);
             unsteady_inputs(s.rotor->result(), *s.node_omega, ua_next_);
         }

@@ -1,5 +1,7 @@
 #include "yamsc/wind/uniform_field.hpp"
 
+#include "wind_axes.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -10,15 +12,6 @@ namespace yamsc::runtime {
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
-
-/// InflowWind_SetParameters' RotToWind: R_y(-upflow) R_z(-direction), rows as written there.
-Eigen::Matrix3d to_wind_axes(double direction, double upflow) {
-    const double cy = std::cos(-upflow), sy = std::sin(-upflow);
-    const double cz = std::cos(-direction), sz = std::sin(-direction);
-    Eigen::Matrix3d m;
-    m << cy * cz, cy * sz, -sy, -sz, cz, 0.0, sy * cz, sy * sz, cy;
-    return m;
-}
 
 } // namespace
 

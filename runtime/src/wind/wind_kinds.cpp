@@ -7,6 +7,8 @@ namespace {
 const WindKind kinds[] = {
     {1, "steady", open_steady_wind},
     {2, "uniform wind file", open_uniform_wind},
+    {3, "TurbSim full field", open_turbsim_wind},
+    {5, "HAWC full field", open_hawc_wind},
 };
 
 } // namespace

@@ -25,5 +25,7 @@ std::string supported_wind_types();
 // The kinds (one file each).
 WindInput open_steady_wind(wind::InflowWindFile& file);  // uniform_kinds.cpp
 WindInput open_uniform_wind(wind::InflowWindFile& file); // uniform_kinds.cpp
+WindInput open_turbsim_wind(wind::InflowWindFile& file); // full_field_kinds.cpp
+WindInput open_hawc_wind(wind::InflowWindFile& file);    // full_field_kinds.cpp
 
 } // namespace yamsc::runtime

@@ -66,6 +66,12 @@ public:
     const RotorResult& evaluate(const RotorMotion& motion, const Eigen::Vector3d& wind,
                                 bool warm_start);
     const RotorResult& result() const { return result_; }
+    /// The nodes' element inputs at `motion` (their frames, relative winds, radii,
+    /// the disk's average wind, skew and TSR) without solving the BEM: the nodes'
+    /// solutions and the rotor's integrals stay those of the last evaluate, and
+    /// the next evaluate solves again. DBEMT's input at a step's start needs no
+    /// more: it takes the last step's inflow angle (AeroDyn's z%phi).
+    const RotorResult& element_inputs(const RotorMotion& motion, const Eigen::Vector3d& wind);
 
     /// Frozen wake, as OpenFAST linearizes AeroDyn (DBEMT_Mod -1, BEMT's
     /// computeFrozenWake): each node's induced velocities, a Vx and a' Vy, are
@@ -110,6 +116,7 @@ private:
     };
     std::vector<std::vector<Induced>> frozen_; // [blade][node]; empty: the BEM is solved
     RotorCache cache_;
+    void set_inputs(const RotorMotion& motion, const Eigen::Vector3d& wind, bool warm_start);
     void frozen_element(NodeResult& n, const Induced& induced) const;
 };
 
