@@ -4,10 +4,19 @@
 
 namespace yamsc::cli {
 
+namespace {
+
+/// An option's name, not a value ("-1", "-.5" and "-" are values).
+bool is_option(const std::string& a) {
+    return a.size() > 1 && a[0] == '-' && !(std::isdigit(a[1]) || a[1] == '.');
+}
+
+} // namespace
+
 Args::Args(int argc, char** argv, int first, const OptionNames& names) {
     for (int i = first; i < argc; ++i) {
         std::string a = argv[i];
-        if (a.size() > 1 && a[0] == '-' && !(std::isdigit(a[1]) || a[1] == '.')) {
+        if (is_option(a)) {
             std::string name = a, value;
             bool has_value = false;
             if (auto eq = a.find('='); eq != std::string::npos && a.rfind("--", 0) == 0) {
@@ -22,6 +31,9 @@ Args::Args(int argc, char** argv, int first, const OptionNames& names) {
                 if (!has_value) {
                     if (i + 1 >= argc) throw UsageError(name + " needs a value");
                     value = argv[++i];
+                    if (names.lists.count(name))
+                        while (i + 1 < argc && !is_option(argv[i + 1]))
+                            value += std::string(",") + argv[++i];
                 }
                 if (values_.count(name)) throw UsageError(name + " is given twice");
                 values_[name] = value;

@@ -14,10 +14,13 @@ namespace yamsc::cli {
 
 using diag::UsageError;
 
-/// The options a command takes: those with a value and the flags.
+/// The options a command takes: those with a value and the flags. A valued
+/// option also in `lists` takes every argument after it up to the next option
+/// (`--reference of/*.outb`, as the shell expands it), joined by commas.
 struct OptionNames {
     std::set<std::string> valued;
     std::set<std::string> flags;
+    std::set<std::string> lists{};
 };
 
 class Args {

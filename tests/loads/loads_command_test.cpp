@@ -139,6 +139,14 @@ TEST_CASE("yamsc loads --batch: a batch folder's finished cases, lifetime DELs, 
     CHECK(globbed.find("runs,v12,cases.out/v12.csv,12,") <
           globbed.find("runs,v8,cases.out/v8.csv,8,"));
     CHECK(globbed.find("reference,of12,openfast/of12.csv,12,") != std::string::npos);
+    // A pattern the shell expands after an option: every file is the option's.
+    REQUIRE(run_loads(dir, "--runs cases.out/v*.csv --reference openfast/*.csv --channels "
+                           "TwrBsMyt --wohler 4 -o e.csv") == 0);
+    const std::string expanded = read_file(dir + "/e.csv");
+    CHECK(expanded.find("reference,of8,openfast/of8.csv,8,") != std::string::npos);
+    CHECK(expanded.find("reference,of12,openfast/of12.csv,12,") != std::string::npos);
+    CHECK(expanded.find("runs,of") == std::string::npos);
+    CHECK(expanded.find("runs,v8,") != std::string::npos);
     CHECK(run_loads(dir, "--runs 'nothing/*.csv'") == 2);
     CHECK(run_loads(dir, "--batch cases.out --speeds cases.csv --wind-channel NoWind") == 0);
     CHECK(run_loads(dir, "openfast/of8.csv --speeds cases.csv --wind-channel NoWind") == 1);

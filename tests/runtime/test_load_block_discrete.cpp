@@ -5,6 +5,7 @@
 // discrete motion is q_{k+1} = q_k + v_k dt + t_k dt^2 / 2, v_{k+1} = v_k + t_k dt,
 // which RK4 integrates exactly (a polynomial of degree 2 within each step); ABM4
 // against its own integrator stepped by hand with s held and advanced the same way.
+#include "runtime/free_mass.hpp"
 #include "yamsc/abm4.hpp"
 #include "yamsc/load_block.hpp"
 #include "yamsc/simulation.hpp"
@@ -48,28 +49,13 @@ private:
     BlockPorts ports_;
 };
 
-ModelView free_mass() {
-    ModelView v;
-    v.nq = v.nu = v.ny = 1;
-    v.input_names = {"f"};
-    v.output_names = {"q"};
-    v.rhs = [](double, const double* x, const double* u, double* xdot) {
-        xdot[0] = x[1];
-        xdot[1] = u[0];
-    };
-    v.outputs = [](double, const double* q, const double*, const double*, double* y) {
-        y[0] = q[0];
-    };
-    return v;
-}
-
 } // namespace
 
 TEST_CASE("a block's discrete states advance once per step of RK4 and ABM4") {
     for (Method method : {Method::rk4, Method::abm4}) {
         CAPTURE(method_name(method));
         const auto block = std::make_shared<Staircase>();
-        const ModelView v = close_blocks(free_mass(), {block});
+        const ModelView v = close_blocks(test_free_mass::view(), {block});
         REQUIRE(v.update_discrete);
         SimulationOptions o;
         o.t_end = 1.0;
@@ -115,7 +101,7 @@ TEST_CASE("a block's discrete states advance once per step of RK4 and ABM4") {
 
 TEST_CASE("with CVODE a block's discrete states advance between output points") {
     const auto block = std::make_shared<Staircase>();
-    const ModelView v = close_blocks(free_mass(), {block});
+    const ModelView v = close_blocks(test_free_mass::view(), {block});
     SimulationOptions o;
     o.t_end = 1.0;
     o.dt = 0.05; // the output step: the discrete step

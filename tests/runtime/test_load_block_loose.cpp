@@ -4,6 +4,7 @@
 // A free unit mass driven by a load g(t) of time alone: within step k the mass
 // feels the extrapolating polynomial of g, which RK4 integrates exactly, so the
 // run's end state has a closed form for each order.
+#include "runtime/free_mass.hpp"
 #include "yamsc/load_block.hpp"
 #include "yamsc/simulation.hpp"
 
@@ -70,27 +71,6 @@ private:
     BlockPorts ports_;
 };
 
-ModelView free_mass() {
-    ModelView v;
-    v.nq = v.nu = v.ny = 1;
-    v.input_names = {"f"};
-    v.output_names = {"q"};
-    v.rhs = [](double, const double* x, const double* u, double* xdot) {
-        xdot[0] = x[1];
-        xdot[1] = u[0];
-    };
-    v.rhs_jacobian = [](double, const double*, const double*, double* J) {
-        J[0] = 0;
-        J[1] = 1;
-        J[2] = 0;
-        J[3] = 0;
-    };
-    v.outputs = [](double, const double* q, const double*, const double*, double* y) {
-        y[0] = q[0];
-    };
-    return v;
-}
-
 SimulationResult run(const ModelView& v, Method method, double dt, double t_end) {
     SimulationOptions o;
     o.t_end = t_end;
@@ -110,7 +90,7 @@ std::vector<double> last_state(const SimulationResult& r) {
 TEST_CASE("loose coupling holds (order 0) a step's-end load through the next step") {
     const auto g = [](double t) { return 1.0 + 2.0 * t + 3.0 * t * t; };
     const auto block = std::make_shared<TimeLoad>(g);
-    const ModelView v = close_blocks(free_mass(), {block}, {Coupling::loose, 0});
+    const ModelView v = close_blocks(test_free_mass::view(), {block}, {Coupling::loose, 0});
     const double dt = 0.1;
     const int steps = 10;
     const SimulationResult r = run(v, Method::rk4, dt, steps * dt);
@@ -137,7 +117,7 @@ TEST_CASE("loose coupling extrapolates linearly (order 1) from the last two step
     const auto g = [](double t) { return 1.0 + 2.0 * t; };
     {
         const auto block = std::make_shared<TimeLoad>(g);
-        const ModelView v = close_blocks(free_mass(), {block}, {Coupling::loose, 1});
+        const ModelView v = close_blocks(test_free_mass::view(), {block}, {Coupling::loose, 1});
         const double dt = 0.1, t_end = 1.0;
         const SimulationResult r = run(v, Method::rk4, dt, t_end);
         // Step 0 at g(0), then g exactly from dt to t_end.
@@ -155,7 +135,8 @@ TEST_CASE("loose coupling extrapolates linearly (order 1) from the last two step
     // ABM4 (its predictor's history starts at the held step) evaluates the block
     // as often: once per step.
     const auto block = std::make_shared<TimeLoad>(g);
-    run(close_blocks(free_mass(), {block}, {Coupling::loose, 1}), Method::abm4, 0.1, 1.0);
+    run(close_blocks(test_free_mass::view(), {block}, {Coupling::loose, 1}), Method::abm4, 0.1,
+        1.0);
     CHECK(block->evaluations == 11);
 }
 
@@ -163,7 +144,7 @@ TEST_CASE("loose coupling with quadratic extrapolation approaches tight coupling
     // A spring read from the motion: the loose run's error against the tight
     // one falls with dt (the extrapolation's error is O(dt^3) per step).
     const auto spring = std::make_shared<Spring>();
-    ModelView base = free_mass();
+    ModelView base = test_free_mass::view();
     auto error = [&](double dt) {
         const ModelView tight = close_blocks(base, {spring});
         const ModelView loose = close_blocks(base, {spring}, {Coupling::loose, 2});
@@ -185,8 +166,8 @@ TEST_CASE("loose coupling with quadratic extrapolation approaches tight coupling
 
 TEST_CASE("a loosely coupled view's Jacobian is the tight one's, and a new run starts anew") {
     const auto spring = std::make_shared<Spring>();
-    const ModelView tight = close_blocks(free_mass(), {spring});
-    const ModelView loose = close_blocks(free_mass(), {spring}, {Coupling::loose, 2});
+    const ModelView tight = close_blocks(test_free_mass::view(), {spring});
+    const ModelView loose = close_blocks(test_free_mass::view(), {spring}, {Coupling::loose, 2});
     const double x[] = {0.3, -0.2}, u[] = {0.0};
     double Jt[4], Jl[4];
     tight.rhs_jacobian(0.0, x, u, Jt);
@@ -207,9 +188,9 @@ TEST_CASE("a loosely coupled view's Jacobian is the tight one's, and a new run s
 
 TEST_CASE("a block with continuous states couples tightly only") {
     CHECK_THROWS_AS(
-        close_blocks(free_mass(), {std::make_shared<WithState>()}, {Coupling::loose, 2}),
+        close_blocks(test_free_mass::view(), {std::make_shared<WithState>()}, {Coupling::loose, 2}),
         std::invalid_argument);
-    CHECK_THROWS_AS(close_blocks(free_mass(),
+    CHECK_THROWS_AS(close_blocks(test_free_mass::view(),
                                  {std::make_shared<TimeLoad>([](double) { return 0.0; })},
                                  {Coupling::loose, 3}),
                     std::invalid_argument);

@@ -12,6 +12,9 @@
 #include <filesystem>
 #include <regex>
 
+// Built with ROSCO only (tests/CMakeLists.txt: gfortran builds it).
+#ifdef YAMSC_ROSCO_DISCON
+
 using namespace validation;
 using yamsc::analysis::Table;
 namespace fs = std::filesystem;
@@ -117,22 +120,8 @@ void check_run(const fs::path& reference) {
     // The blades turn with the controller's pitch, as ElastoDyn's do.
     REQUIRE(model.find("rotate z -pitch }") != std::string::npos);
 
-    yamsc::driver::SimOptions o;
-    o.model = f.output;
-    o.aero = (folder / "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat").string();
-    o.wind = (folder / "NRELOffshrBsline5MW_InflowWind.dat").string();
-    o.controller = YAMSC_ROSCO_DISCON;
-    o.controller_input = (folder / "DISCON.IN").string();
-    o.tmax = openfast.data.front().back();
-    o.dt = 0.00625;
-    o.dt_out = 0.025;
-    o.method = yamsc::driver::SimMethod::abm4;
-    o.coupling = yamsc::driver::SimCoupling::loose;
-    o.interp_order = 2;
-    const double pitch0 = column(openfast, "BlPitch1_[deg]").front();
-    if (pitch0 != 0) o.u = {{"pitch", 0, pitch0 * M_PI / 180}};
-    o.channels = yamsc::driver::Channels::openfast;
-    o.output = (folder / "run.csv").string();
+    const yamsc::driver::SimOptions o =
+        header_run(folder, f.output, openfast, 0.025, YAMSC_ROSCO_DISCON);
     REQUIRE_MESSAGE(yamsc::analysis::sim(o, out, err) == 0, err.str());
     const Table yamsc_run = yamsc::analysis::read_table(o.output);
 
@@ -158,7 +147,6 @@ void check_run(const fs::path& reference) {
 
 } // namespace
 
-#ifdef YAMSC_ROSCO_DISCON
 // Run by the `rosco_blade_elements` test (tests/CMakeLists.txt), which builds ROSCO.
 TEST_CASE("blade elements under ROSCO: every operating run against OpenFAST + AeroDyn + ROSCO" *
           doctest::skip()) {
@@ -172,4 +160,5 @@ TEST_CASE("blade elements under ROSCO: every operating run against OpenFAST + Ae
     REQUIRE(runs.size() >= 2); // the given 8 and 16 m/s
     for (const fs::path& run : runs) check_run(run);
 }
+
 #endif

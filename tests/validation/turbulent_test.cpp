@@ -15,6 +15,9 @@
 #include <cmath>
 #include <filesystem>
 
+// Built with ROSCO only (tests/CMakeLists.txt: gfortran builds it).
+#ifdef YAMSC_ROSCO_DISCON
+
 using namespace validation;
 using yamsc::analysis::Table;
 namespace fs = std::filesystem;
@@ -89,22 +92,8 @@ void check_run(const std::string& csv, const std::string& wind) {
     REQUIRE(model.find("#     --method abm4") != std::string::npos);
     REQUIRE(model.find("#     --coupling loose --interp-order 2") != std::string::npos);
 
-    yamsc::driver::SimOptions o;
-    o.model = f.output;
-    o.aero = (folder / "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat").string();
-    o.wind = inflow.string();
-    o.controller = YAMSC_ROSCO_DISCON;
-    o.controller_input = (folder / "DISCON.IN").string();
-    o.tmax = openfast.data.front().back();
-    o.dt = 0.00625;
-    o.dt_out = 0.05;
-    o.method = yamsc::driver::SimMethod::abm4;
-    o.coupling = yamsc::driver::SimCoupling::loose;
-    o.interp_order = 2;
-    const double pitch0 = column(openfast, "BlPitch1_[deg]").front();
-    if (pitch0 != 0) o.u = {{"pitch", 0, pitch0 * M_PI / 180}};
-    o.channels = yamsc::driver::Channels::openfast;
-    o.output = (folder / "run.csv").string();
+    const yamsc::driver::SimOptions o =
+        header_run(folder, f.output, openfast, 0.05, YAMSC_ROSCO_DISCON);
     REQUIRE_MESSAGE(yamsc::analysis::sim(o, out, err) == 0, err.str());
     const Table yamsc_run = yamsc::analysis::read_table(o.output);
 
@@ -132,7 +121,6 @@ void check_run(const std::string& csv, const std::string& wind) {
 
 } // namespace
 
-#ifdef YAMSC_ROSCO_DISCON
 // Run by the `turbulent` test (tests/CMakeLists.txt), which builds ROSCO.
 TEST_CASE("blade elements in turbulence: every run of runs.txt against OpenFAST + AeroDyn + "
           "ROSCO" *
@@ -150,4 +138,5 @@ TEST_CASE("blade elements in turbulence: every run of runs.txt against OpenFAST 
     }
     CHECK(runs >= 1);
 }
+
 #endif

@@ -8,6 +8,7 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -161,6 +162,35 @@ inline std::filesystem::path deck_starting_as(const yamsc::analysis::Table& run,
             for (const char* key : keys) set_entry(text, key, format(column(run, channel).front()));
     std::ofstream(ed.string()) << text;
     return folder / "NREL-5MW.fst";
+}
+
+/// `yamsc sim` of a model `from-openfast` wrote from a deck in `folder` (the deck
+/// started as OpenFAST's `run`), as the model's header says in wind: the
+/// deck's AeroDyn and InflowWind files, ROSCO with its DISCON.IN, ABM4 at DT
+/// 0.00625 s, the deck's loose coupling, as long as the run, the controller's
+/// pitch starting at the run's; OpenFAST's channels, rows every dt_out, to
+/// `folder/run.csv`.
+inline yamsc::driver::SimOptions header_run(const std::filesystem::path& folder,
+                                            const std::string& model,
+                                            const yamsc::analysis::Table& run, double dt_out,
+                                            const std::string& controller) {
+    yamsc::driver::SimOptions o;
+    o.model = model;
+    o.aero = (folder / "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat").string();
+    o.wind = (folder / "NRELOffshrBsline5MW_InflowWind.dat").string();
+    o.controller = controller;
+    o.controller_input = (folder / "DISCON.IN").string();
+    o.tmax = run.data.front().back();
+    o.dt = 0.00625;
+    o.dt_out = dt_out;
+    o.method = yamsc::driver::SimMethod::abm4;
+    o.coupling = yamsc::driver::SimCoupling::loose;
+    o.interp_order = 2;
+    const double pitch0 = column(run, "BlPitch1_[deg]").front();
+    if (pitch0 != 0) o.u = {{"pitch", 0, pitch0 * M_PI / 180}};
+    o.channels = yamsc::driver::Channels::openfast;
+    o.output = (folder / "run.csv").string();
+    return o;
 }
 
 } // namespace validation

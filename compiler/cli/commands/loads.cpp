@@ -140,7 +140,8 @@ Command loads_command() {
         "             [--life-cycles N] [--wind-channel NAME] [--speeds FILE] [-o OUT.csv]\n"
         "             [--json OUT.json] [--plot OUT.svg]",
         R"(  RUN...              time series: yamsc's CSV, OpenFAST's .out or binary .outb (docs/loads.md)
-  --runs LIST         more runs: files, folders (their .csv/.out/.outb) or quoted patterns, comma-separated
+  --runs LIST         more runs: files, folders (their .csv/.out/.outb) or quoted patterns,
+                      comma-separated or as separate arguments up to the next option
   --reference LIST    a second set compared with the runs (OpenFAST's beside yamsc's), as --runs
   --batch DIR         the cases a `yamsc batch` finished in DIR (its summary.csv and <id>.csv)
   --channels NAMES    channels, comma-separated, by name or name without unit (default: all)
@@ -168,7 +169,8 @@ Command loads_command() {
           "--del",          "--from",      "--to",      "--bins",     "--frequency",
           "--counting",     "--class",     "--weibull", "--life",     "--life-cycles",
           "--wind-channel", "--speeds",    "-o",        "--json",     "--plot"},
-         {}},
+         {},
+         {"--runs", "--reference"}},
         parse_loads, analysis::loads);
 }
 
