@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -82,9 +83,19 @@ TurbulenceField generate_turbulence(const TurbulenceSpec& s,
     auto phase = [&] { return two_pi * static_cast<double>(rng() >> 11) * 0x1.0p-53; };
 
     Eigen::MatrixXd distance(np, np);
+    double closest = std::numeric_limits<double>::infinity(); // of two distinct points
     for (int i = 0; i < np; ++i)
-        for (int j = 0; j < np; ++j)
+        for (int j = 0; j < np; ++j) {
             distance(i, j) = std::hypot(pts.y[i] - pts.y[j], pts.z[i] - pts.z[j]);
+            if (i != j) closest = std::min(closest, distance(i, j));
+        }
+    // Above some frequency every pair's coherence is below 1e-16 / np: the
+    // coherence matrix is the identity to rounding, and so is its Cholesky factor
+    // (each coefficient changes by less than 1e-16 of its size). Its LLT, the
+    // generator's cost, is skipped there: most frequencies at low wind speeds.
+    auto uncorrelated = [&](double f) {
+        return np < 2 || iec_coherence(iec, f, closest) < 1e-16 / np;
+    };
 
     // series[(c * np + i) * n + it]: the fluctuations, zero mean.
     std::vector<double> series(3 * static_cast<std::size_t>(np) * un);
@@ -105,7 +116,7 @@ TurbulenceField generate_turbulence(const TurbulenceSpec& s,
                 rotation[static_cast<std::size_t>(j)] = std::polar(1.0, phase());
             if (k == nf)
                 continue; // the Nyquist term is set to zero (its phases drawn all the same)
-            if (c == 0) {
+            if (c == 0 && !uncorrelated(f)) {
                 for (int j = 0; j < np; ++j)
                     for (int i = j; i < np; ++i)
                         coherence(i, j) = iec_coherence(iec, f, distance(i, j));
