@@ -164,6 +164,27 @@ inline std::filesystem::path deck_starting_as(const yamsc::analysis::Table& run,
     return folder / "NREL-5MW.fst";
 }
 
+/// `yamsc from-openfast` of the deck `fst` in `folder` (to `folder/turbine.mbd`):
+/// the model's text, whose header's command must be the deck's in wind (the
+/// deck's AeroDyn and InflowWind files, DT, ABM4 coupled loosely).
+inline std::string convert_in_wind(const std::filesystem::path& fst,
+                                   const std::filesystem::path& folder) {
+    yamsc::driver::FromOpenFastOptions f;
+    f.deck = fst.string();
+    f.output = (folder / "turbine.mbd").string();
+    std::ostringstream out, err;
+    REQUIRE_MESSAGE(yamsc::openfast::from_openfast(f, out, err) == 0, err.str());
+    const std::string model = read(f.output);
+    REQUIRE(model.find("#     --aero NRELOffshrBsline5MW_Onshore_AeroDyn15.dat \\\n") !=
+            std::string::npos);
+    REQUIRE(model.find(" --dt 0.00625 ") != std::string::npos);
+    REQUIRE(model.find("#     --wind NRELOffshrBsline5MW_InflowWind.dat \\\n") !=
+            std::string::npos);
+    REQUIRE(model.find("#     --method abm4") != std::string::npos);
+    REQUIRE(model.find("#     --coupling loose --interp-order 2") != std::string::npos);
+    return model;
+}
+
 /// `yamsc sim` of a model `from-openfast` wrote from a deck in `folder` (the deck
 /// started as OpenFAST's `run`), as the model's header says in wind: the
 /// deck's AeroDyn and InflowWind files, ROSCO with its DISCON.IN, ABM4 at DT
