@@ -47,7 +47,7 @@ struct Tolerance {
     double relative, absolute; // either bound passes
 };
 
-/// The bounds on the means of the last 50 s.
+/// The bounds on the means of the last 50 s.
 const Tolerance tolerances[] = {{"RotSpeed_[rpm]", 0.005, 0}, {"GenPwr_[kW]", 0.01, 0},
                                 {"BlPitch1_[deg]", 0, 0.3},   {"RotThrust_[kN]", 0.02, 0},
                                 {"TTDspFA_[m]", 0.03, 0},     {"RootMyc1_[kN-m]", 0.03, 0}};
