@@ -1,5 +1,7 @@
 #include "analysis/dlc_files.hpp"
 
+#include <yamsc/csv.hpp>
+
 #include <cstdio>
 #include <sstream>
 
@@ -7,10 +9,9 @@ namespace yamsc::analysis {
 
 namespace {
 
+/// A number as the CSV writer writes it (%.10g, whatever the C locale).
 std::string num(double v) {
-    char s[32];
-    std::snprintf(s, sizeof s, "%.10g", v);
-    return s;
+    return runtime::format_csv_value(v);
 }
 
 /// "value   Key  - comment" as TurbSim's files align them.

@@ -3,6 +3,8 @@
 #include "analysis/loads.hpp"
 #include "driver/json.hpp"
 
+#include <yamsc/csv.hpp>
+
 #include <algorithm>
 #include <cstdio>
 #include <ostream>
@@ -17,10 +19,9 @@ const char* set_name(RunSet s) {
     return s == RunSet::runs ? "runs" : "reference";
 }
 
+/// A number as the CSV writer writes it (%.10g, whatever the C locale).
 std::string g(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.10g", v);
-    return b;
+    return runtime::format_csv_value(v);
 }
 
 std::string exponent(double m) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace yamsc::runtime {
 
@@ -72,11 +73,16 @@ struct Closed {
     /// Loose coupling's history (null: tight).
     std::shared_ptr<detail::HeldLoads> held;
 
-    /// The block evaluated at this point.
-    Point evaluate_here(double t, const double* q, const double* qd, const double* u) const {
-        Point p{reads(t, q, qd, u), Vec(at(nl)), Vec(at(nz)), Vec(at(nout))};
+    /// The block evaluated at time t with its states of q' and the values `r` it reads.
+    Point evaluate_reading(double t, const double* qd, Vec r) const {
+        Point p{std::move(r), Vec(at(nl)), Vec(at(nz)), Vec(at(nout))};
         block->evaluate(t, states(qd), p.r.data(), p.loads.data(), p.rates.data(), p.out.data());
         return p;
+    }
+
+    /// The block evaluated at this point.
+    Point evaluate_here(double t, const double* q, const double* qd, const double* u) const {
+        return evaluate_reading(t, qd, reads(t, q, qd, u));
     }
 
     void hold(double t, const Point& p) const {
@@ -366,16 +372,18 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
         v.update_discrete = [c](double t, const double* x, const double* u, double t_next,
                                 const double* x_next, const double* u_next) {
             if (c.base->update_discrete) c.base->update_discrete(t, x, u, t_next, x_next, u_next);
+            if (!c.block->has_discrete_states() && !c.held) return;
+            Vec r_next = c.reads(t_next, x_next, x_next + c.nq, u_next);
             if (c.block->has_discrete_states()) {
                 const Vec* held_r = c.held ? c.held->reads_at(t) : nullptr;
                 const Vec r = held_r ? *held_r : c.reads(t, x, x + c.nq, u);
-                const Vec r_next = c.reads(t_next, x_next, x_next + c.nq, u_next);
                 c.block->update_discrete_states(t, c.states(x + c.nq), r.data(), t_next,
                                                 c.states(x_next + c.nq), r_next.data());
             }
             // The step's end, with the new discrete states (CalcOutput after
             // UpdateStates): what the next step's stages extrapolate.
-            if (c.held) c.hold(t_next, c.evaluate_here(t_next, x_next, x_next + c.nq, u_next));
+            if (c.held)
+                c.hold(t_next, c.evaluate_reading(t_next, x_next + c.nq, std::move(r_next)));
         };
     if (v.update_discrete)
         v.reset_discrete = [c] {
