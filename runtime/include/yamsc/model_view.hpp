@@ -59,6 +59,31 @@ struct ModelView {
     // set with update_discrete.
     std::function<void()> reset_discrete;
 
+    // Constraints (docs/constraints.md): nc velocity rows r = B(q, t, u) q' + c = 0, the
+    // first nh of them holonomic, Phi(q, t, u) = 0 (their rows of B are dPhi/dq). The
+    // equations of motion are then M q'' = F + B^T lambda and B q'' + gamma = 0, with
+    // gamma = dr/dt - B q''. A view without constraints has nh = nc = 0 and empty functions.
+    int nh = 0, nc = 0;
+    std::vector<std::string> constraint_names;   // nc, one per row ("closing.x")
+    std::vector<int> constraint_dependent;       // nc: the DOF the model names dependent, or -1
+    std::vector<std::string> constraint_sources; // nc: "file:line:col" of each row's declaration
+    // phi (nh) and r (nc) at (t, q, q', u).
+    std::function<void(double t, const double* q, const double* qd, const double* u, double* phi,
+                       double* r)>
+        constraint_residuals;
+    // B, nc x nq row-major.
+    std::function<void(double t, const double* q, const double* u, double* B)> constraint_matrix;
+    // gamma (nc) and dr/dq (nc x nq row-major).
+    std::function<void(double t, const double* q, const double* qd, const double* u, double* gamma,
+                       double* dr_dq)>
+        constraint_bias;
+    // Given lambda (nc) and a (nq): d(B^T lambda)/dq (nq x nq), d(B a + gamma)/dq (nc x nq),
+    // dgamma/dq' (nc x nq), d(B^T lambda)/du (nq x nu), d(B a + gamma)/du (nc x nu).
+    std::function<void(double t, const double* q, const double* qd, const double* u,
+                       const double* lambda, const double* a, double* dBTl_dq, double* dacc_dq,
+                       double* dacc_dqd, double* dBTl_du, double* dacc_du)>
+        constraint_jacobians;
+
     int nx() const { return 2 * nq + nz; }
 };
 
