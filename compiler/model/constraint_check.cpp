@@ -1,5 +1,6 @@
 #include "model/constraint_check.hpp"
 
+#include "model/declaration_check.hpp"
 #include <algorithm>
 #include <map>
 
@@ -99,34 +100,12 @@ public:
 
 private:
     const ConstraintKindInfo* kind_of(const ast::Named& kind) {
-        std::vector<std::string> names;
-        for (const ConstraintKindInfo& k : constraint_kinds()) {
-            if (k.name == kind.name) return &k;
-            names.push_back(k.name);
-        }
-        if (!kind.name.empty())
-            diags_.error(Kind::UnknownName, kind.loc,
-                         "unknown constraint kind " + quoted(kind.name) +
-                             diag::did_you_mean(kind.name, names));
-        return nullptr;
+        return find_kind(constraint_kinds(), kind, "constraint kind", diags_);
     }
 
     bool check_name(const ast::Constraint& decl) {
-        const std::string& name = decl.id.name;
-        if (name.empty()) return false;
-        const std::string why = reserved_reason(name);
-        if (!why.empty()) {
-            diags_.error(Kind::ReservedName, decl.id.loc, quoted(name) + " " + why);
-            return false;
-        }
-        const auto [it, fresh] = seen_.emplace(name, decl.id.loc);
-        if (!fresh) {
-            diags_.error(Kind::DuplicateName, decl.id.loc,
-                         "constraint " + quoted(name) + " is already declared at " +
-                             at(it->second));
-            return false;
-        }
-        return true;
+        return !decl.id.name.empty() &&
+               fresh_declaration_name(decl.id, "constraint", seen_, diags_);
     }
 
     bool bind(Constraint& c, const ConstraintRoleInfo& role, const ast::Property& p) {
