@@ -70,6 +70,11 @@ TEST_CASE("a four-bar compiled on the fly: its rows, the constrained rhs and the
     REQUIRE(v.constraint_sources.size() == 2);
     CHECK(v.constraint_sources[0].find("four_bar.mbd:26:1") != std::string::npos);
     CHECK(!v.rhs_jacobian); // the constrained view forms it
+    std::string routines;
+    for (const std::string& r : library->routines()) routines += (routines.empty() ? "" : ", ") + r;
+    CHECK(routines == "rhs, mass_matrix, forcing, jacobians, outputs, constraints, "
+                      "constraint_matrix, constraint_bias, constraint_jacobians, "
+                      "mass_action_jacobian");
     REQUIRE(v.constraint_residuals);
     REQUIRE(v.constraint_matrix);
     REQUIRE(v.constraint_bias);
