@@ -196,11 +196,12 @@ void check_derivatives(const ir::System& s, const State& x) {
             entries(dacc_du, nc, nu, j),
             central([&](double e) { return acceleration_rows(s, with(&State::u, j, e)); }, h), tol);
     }
-    // γ: along q(h) = q + h q' + h²/2 q'', q'(h) = q' + h q'' (q'' = a, arbitrary),
-    // dr/dh = B q'' + γ. Inputs and t are held: these models' rows read them only
-    // where the prescribed test checks γ in closed form.
+    // γ: along t + h, q(h) = q + h q' + h²/2 q'', q'(h) = q' + h q'' (q'' = a,
+    // arbitrary), dr/dh = B q'' + γ. Inputs would need their derivative channels
+    // moved too: the prescribed test checks γ with inputs in closed form.
     auto along = [&](double e) {
         State y = x;
+        y.t += e;
         for (int k = 0; k < nq; ++k) {
             const auto i = static_cast<std::size_t>(k);
             y.q[i] += e * x.qd[i] + 0.5 * e * e * x.a[i];
@@ -371,5 +372,37 @@ constraint loop fix { a = A; b = B; joint = weld; components = (y) }
                     {d[0], d[1], d[2], ab(0, 2), ab(1, 2), o[1], ab(2, 1), ab(0, 2), ab(1, 0)},
                     1e-13);
         check_derivatives(s, x);
+    }
+}
+
+TEST_CASE("a relation with time and a speed row: Φ, r, B and γ in closed form") {
+    const ir::System s = constrained_system(R"(model rows
+dof x, y, th
+rigid a { mass = 1 }
+rigid b { mass = 1 }
+rigid c { mass = 1 }
+joint ground -> a { translate x x }
+joint ground -> b { translate y y }
+joint ground -> c { rotate z th }
+constraint relation gear { value = y - 2*x - 0.1*sin(t) }
+constraint speed skate { value = x' - cos(th)*y'; dependent = x }
+)");
+    REQUIRE(s.nc() == 2);
+    REQUIRE(s.nh() == 1);
+    CHECK(s.constraints[1].name == "skate");
+    CHECK(!s.constraints[1].holonomic);
+    CHECK(s.constraints[1].dependent == 0);
+    std::mt19937 rng(17);
+    for (int trial = 0; trial < 3; ++trial) {
+        const State v = random_state(s, rng);
+        const double x = v.q[0], y = v.q[1], th = v.q[2], t = v.t;
+        const double xd = v.qd[0], yd = v.qd[1], thd = v.qd[2];
+        check_close(values(s, {s.constraints[0].phi, s.constraints[0].r, s.constraints[1].r}, v),
+                    {y - 2 * x - 0.1 * std::sin(t), yd - 2 * xd - 0.1 * std::cos(t),
+                     xd - std::cos(th) * yd},
+                    1e-14);
+        check_close(values(s, flat(s.B), v), {-2, 1, 0, 1, -std::cos(th), 0}, 1e-14);
+        check_close(values(s, s.gamma, v), {0.1 * std::sin(t), std::sin(th) * thd * yd}, 1e-14);
+        check_derivatives(s, v);
     }
 }
