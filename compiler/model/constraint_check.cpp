@@ -64,15 +64,8 @@ public:
         c.end = decl.end;
         std::map<ConstraintRole, Loc> written;
         for (const ast::Property& p : decl.roles) {
-            const auto role =
-                std::find_if(info->roles.begin(), info->roles.end(),
-                             [&](const ConstraintRoleInfo& r) { return r.name == p.key; });
-            if (role == info->roles.end()) {
-                std::vector<std::string> roles;
-                for (const ConstraintRoleInfo& r : info->roles) roles.push_back(r.name);
-                diags_.error(Kind::UnknownProperty, p.loc,
-                             "constraint kind " + quoted(info->name) + " has no role " +
-                                 quoted(p.key) + diag::did_you_mean(p.key, roles));
+            const ConstraintRoleInfo* role = find_role(*info, p, "constraint kind", diags_);
+            if (!role) {
                 ok = false;
                 continue;
             }

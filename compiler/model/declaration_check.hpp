@@ -27,6 +27,22 @@ const Info* find_kind(const std::vector<Info>& kinds, const ast::Named& kind,
     return nullptr;
 }
 
+/// The role of `kind` (a row with `name` and `roles`) that `p` binds, or null after
+/// reporting an unknown one (with a suggestion; `what`: "load block kind").
+template <class Info>
+auto find_role(const Info& kind, const ast::Property& p, const std::string& what,
+               diag::Diagnostics& diags) -> const typename decltype(Info::roles)::value_type* {
+    std::vector<std::string> names;
+    for (const auto& r : kind.roles) {
+        if (r.name == p.key) return &r;
+        names.push_back(r.name);
+    }
+    diags.error(diag::Kind::UnknownProperty, p.loc,
+                what + " '" + kind.name + "' has no role '" + p.key + "'" +
+                    diag::did_you_mean(p.key, names));
+    return nullptr;
+}
+
 /// A declaration's name is not reserved and not one of `seen` (then added); false
 /// after reporting (`what`: "load block").
 inline bool fresh_declaration_name(const ast::Named& id, const std::string& what,

@@ -73,18 +73,12 @@ public:
         std::vector<bool> written(info->roles.size(), false); // reported when wrong
         bool ok = named;
         for (const ast::Property& p : decl.roles) {
-            const auto role = std::find_if(info->roles.begin(), info->roles.end(),
-                                           [&](const LoadRole& r) { return r.name == p.key; });
-            if (role == info->roles.end()) {
-                std::vector<std::string> roles;
-                for (const LoadRole& r : info->roles) roles.push_back(r.name);
-                diags_.error(Kind::UnknownProperty, p.loc,
-                             "load block kind " + quoted(info->name) + " has no role " +
-                                 quoted(p.key) + diag::did_you_mean(p.key, roles));
+            const LoadRole* role = find_role(*info, p, "load block kind", diags_);
+            if (!role) {
                 ok = false;
                 continue;
             }
-            const auto r = static_cast<std::size_t>(role - info->roles.begin());
+            const auto r = static_cast<std::size_t>(role - info->roles.data());
             if (written[r]) {
                 diags_.error(Kind::DuplicateName, p.loc,
                              "role " + quoted(p.key) + " is already bound at " +
