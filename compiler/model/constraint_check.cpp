@@ -441,6 +441,11 @@ std::string constraint_source(const Model& model, const Constraint& c) {
 std::vector<Constraint> check_constraints(const ast::ModelFile& file, const Model& model,
                                           const SymbolTable& names, ExprChecker& exprs,
                                           diag::Diagnostics& diags) {
+    if (!file.constraints.empty() && model.dofs.empty()) {
+        diags.error(diag::Kind::InvalidValue, file.constraints.front().loc,
+                    "a constraint needs coordinates to hold: the model declares no DOF");
+        return {};
+    }
     ConstraintChecker checker(model, names, exprs, diags);
     std::vector<Constraint> out;
     for (const ast::Constraint& decl : file.constraints) checker.check(decl, out);
