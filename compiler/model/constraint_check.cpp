@@ -88,6 +88,14 @@ public:
         if (ok) ok = check_joint(c, written);
         if (!ok) return;
         c.rows = constraint_rows(c);
+        if (c.dependent.size() > c.rows.size()) {
+            diags_.error(Kind::InvalidValue, written.at(ConstraintRole::dependent),
+                         "constraint " + quoted(c.name) + " names " +
+                             std::to_string(c.dependent.size()) + " dependent DOFs for its " +
+                             std::to_string(c.rows.size()) + " row" +
+                             (c.rows.size() == 1 ? "" : "s"));
+            return;
+        }
         out.push_back(std::move(c));
     }
 
