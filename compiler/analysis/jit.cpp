@@ -63,7 +63,25 @@ void compile(const std::string& compiler, const std::string& source, const std::
 } // namespace
 
 std::string shared_model_source(const ir::System& eq, codegen::RoutineSet routines) {
-    const codegen::RoutineSet wanted = normalised(routines);
+    codegen::RoutineSet wanted = normalised(routines);
+    // A model with constraints is constrained in every command: its rows, M and F
+    // always (the runtime's constrained view solves M q'' = F + B^T lambda, B q'' +
+    // gamma = 0 and projects onto the rows with them); where a command asks for a
+    // Jacobian, dF/d[q, q', u] and the rows' derivatives, from which that view
+    // forms its exact rhs_jacobian; never the generated rhs_jacobian.
+    if (eq.constraints.empty()) {
+        wanted = wanted.without(codegen::constraint_routines());
+    } else {
+        using codegen::RoutineId;
+        const codegen::RoutineSet derivatives{RoutineId::jacobians, RoutineId::constraint_jacobians,
+                                              RoutineId::mass_action_jacobian};
+        const bool jacobian = !wanted.both(codegen::RoutineSet{RoutineId::rhs_jacobian}).empty() ||
+                              !wanted.both(derivatives).empty();
+        wanted = wanted.without(codegen::RoutineSet{RoutineId::rhs_jacobian});
+        wanted.insert(codegen::constraint_routines().without(derivatives));
+        wanted.insert({RoutineId::mass_matrix, RoutineId::forcing});
+        if (jacobian) wanted.insert(derivatives);
+    }
     codegen::Options module_options;
     module_options.linear_model = false;
     codegen::Module module = codegen::build_module(eq, module_options);
