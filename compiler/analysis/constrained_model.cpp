@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <ostream>
+#include <string>
 
 namespace yamsc::analysis {
 
@@ -42,7 +43,15 @@ void throw_located(const runtime::ModelView& v, const runtime::ConstraintError& 
     const int row = e.row();
     const bool located =
         row >= 0 && at(row) < v.constraint_sources.size() && !v.constraint_sources[at(row)].empty();
-    throw diag::UserError(located ? v.constraint_sources[at(row)] + ": " + e.what() : e.what());
+    if (!located) throw diag::UserError(e.what());
+    // The location first, as diagnostics have it, and not again after the row's name.
+    const std::string& source = v.constraint_sources[at(row)];
+    std::string message = e.what();
+    const std::string again = "'" + v.constraint_names[at(row)] + "' (" + source + ")";
+    const std::size_t pos = message.find(again);
+    if (pos != std::string::npos)
+        message.replace(pos, again.size(), "'" + v.constraint_names[at(row)] + "'");
+    throw diag::UserError(source + ": " + message);
 }
 
 void consistent_start(const runtime::ModelView& v, double t, std::vector<double>& x,
