@@ -80,7 +80,8 @@ TEST_CASE("constraints: sim of the Cartesian pendulum, its tension, -v's choice 
     REQUIRE(exit_status(yamsc + " sim " + model + " --tmax 2 --dt 5e-4 --dt-out 0.5 -v -o " + csv +
                         " > " + log + " 2>&1") == 0);
     const std::string text = read_file(log);
-    CHECK(text.find("dependent coordinates: z\n") != std::string::npos);
+    // At 1 rad |x| > |z|: QR with column pivoting makes x dependent.
+    CHECK(text.find("dependent coordinates: x\n") != std::string::npos);
     CHECK(text.find("max |phi| = ") != std::string::npos);
     const LastRow r = last_row(csv);
     // The angle pendulum from 1 rad at rest, RK4 with a step 8 times smaller.
@@ -127,8 +128,8 @@ TEST_CASE("constraints: lin in the independent coordinate gives sqrt(g/L); trim 
     CHECK(std::fabs(q[0]) < 1e-10);
     CHECK(q[1] == doctest::Approx(-0.8).epsilon(1e-12));
     // Options whose model is in all coordinates are refused, with the reason.
-    for (const char* option : {" --mbc3", " --hold x", " --format openfast-lin -o "}) {
-        CAPTURE(option);
+    for (const char* option : {" --mbc3", " --trim --hold x", " --format openfast-lin -o "}) {
+        CAPTURE(std::string(option));
         const std::string extra =
             std::string(option).find("-o") != std::string::npos ? dir + "/case.lin" : "";
         CHECK(exit_status(yamsc + " lin " + model + option + extra + " > " + out + " 2>&1") == 2);

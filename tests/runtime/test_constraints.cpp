@@ -278,6 +278,18 @@ TEST_CASE("constrained: redundant, inconsistent and singular rows are errors nam
             CHECK(std::string(e.what()).find("depends on 'rod' (m.mbd:3:1)") != std::string::npos);
         }
     }
+    SUBCASE("redundant: a row that moves with no coordinate at the start") {
+        try {
+            consistent_initial_state(cartesian_pendulum(p), 0.0, {0, 0, 0, 0}, {});
+            FAIL("no error");
+        } catch (const ConstraintError& e) {
+            CHECK(e.kind() == ConstraintErrorKind::redundant);
+            CHECK(e.row() == 0);
+            CHECK(e.related().empty());
+            CHECK(std::string(e.what()).find("does not depend on any coordinate") !=
+                  std::string::npos);
+        }
+    }
     SUBCASE("inconsistent") {
         ModelView v = cartesian_pendulum(p);
         const ModelView one = v;

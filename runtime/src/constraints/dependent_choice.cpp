@@ -39,14 +39,17 @@ void check_redundant(const ModelView& v, const Matrix& B, double tolerance) {
     for (int i = 0; i < v.nc; ++i) {
         const Eigen::MatrixXd upto = B.topRows(i + 1);
         if (rank_of(upto.transpose(), tolerance) == i + 1) continue;
-        // Its coefficients on the rows before it (least squares: they span it).
-        const Eigen::MatrixXd before = B.topRows(i).transpose();
-        const Eigen::VectorXd c =
-            before.completeOrthogonalDecomposition().solve(Eigen::VectorXd(B.row(i).transpose()));
+        // Its coefficients on the rows before it (least squares: they span it);
+        // a zero row depends on none.
         std::vector<int> related;
-        const double cmax = i > 0 ? c.cwiseAbs().maxCoeff() : 0.0;
-        for (int j = 0; j < i; ++j)
-            if (std::fabs(c[j]) > 1e-8 * cmax) related.push_back(j);
+        if (i > 0 && B.row(i).cwiseAbs().maxCoeff() > 0.0) {
+            const Eigen::MatrixXd before = B.topRows(i).transpose();
+            const Eigen::VectorXd c = before.completeOrthogonalDecomposition().solve(
+                Eigen::VectorXd(B.row(i).transpose()));
+            const double cmax = c.cwiseAbs().maxCoeff();
+            for (int j = 0; j < i; ++j)
+                if (std::fabs(c[j]) > 1e-8 * cmax) related.push_back(j);
+        }
         std::ostringstream msg;
         msg << "constraint row " << row_name(v, i) << " is redundant at the initial state";
         if (related.empty())
