@@ -24,6 +24,8 @@
 //   group; without `order` the order is 1.
 // - `spring q stiffness K damping D`: either term or both, in either order.
 // - `free (...)` lists DOF names or `_`; the parser requires six of them.
+// - Inside a block, a statement's keyword followed by `=` is a property's name (`joint =
+//   revolute` in a constraint); otherwise it ends a block that was not closed.
 #include <tao/pegtl.hpp>
 
 #include <type_traits>

@@ -64,17 +64,23 @@ void compile(const std::string& compiler, const std::string& source, const std::
 
 std::string shared_model_source(const ir::System& eq, codegen::RoutineSet routines) {
     codegen::RoutineSet wanted = normalised(routines);
-    // A model with constraints is constrained in every command: its rows always,
-    // with M, F and their Jacobians (the runtime's constrained view solves and
-    // differentiates M q'' = F + B^T lambda from them), and no generated
-    // rhs_jacobian (that view forms it).
-    if (eq.constraints.empty())
+    // A model with constraints is constrained in every command: its rows, M and F
+    // always (the runtime's constrained view solves M q'' = F + B^T lambda, B q'' +
+    // gamma = 0 and projects onto the rows with them); where a command asks for a
+    // Jacobian, dF/d[q, q', u] and the rows' derivatives, from which that view
+    // forms its exact rhs_jacobian; never the generated rhs_jacobian.
+    if (eq.constraints.empty()) {
         wanted = wanted.without(codegen::constraint_routines());
-    else {
-        wanted = wanted.without(codegen::RoutineSet{codegen::RoutineId::rhs_jacobian});
-        wanted.insert(codegen::constraint_routines());
-        wanted.insert({codegen::RoutineId::mass_matrix, codegen::RoutineId::forcing,
-                       codegen::RoutineId::jacobians});
+    } else {
+        using codegen::RoutineId;
+        const codegen::RoutineSet derivatives{RoutineId::jacobians, RoutineId::constraint_jacobians,
+                                              RoutineId::mass_action_jacobian};
+        const bool jacobian = !wanted.both(codegen::RoutineSet{RoutineId::rhs_jacobian}).empty() ||
+                              !wanted.both(derivatives).empty();
+        wanted = wanted.without(codegen::RoutineSet{RoutineId::rhs_jacobian});
+        wanted.insert(codegen::constraint_routines().without(derivatives));
+        wanted.insert({RoutineId::mass_matrix, RoutineId::forcing});
+        if (jacobian) wanted.insert(derivatives);
     }
     codegen::Options module_options;
     module_options.linear_model = false;

@@ -68,6 +68,14 @@ void add_constraint_routines(Graph& g, const ir::System& s, const Options& optio
         assign_matrix(b, "dacc_du", first_columns(s.dacc_du, nu));
         routines.push_back(std::move(b).finish(options));
     }
+    {
+        SymbolSource source;
+        source.qd.clear(); // M a reads no rates
+        source.a = "a";
+        RoutineBuilder b(g, api_signature(RoutineId::mass_action_jacobian), bind(source));
+        assign_matrix(b, "dMa_dq", s.dMa_dq);
+        routines.push_back(std::move(b).finish(options));
+    }
 }
 
 Routine constrained_rhs_routine(Graph& g, const ir::System& s, const Options& options) {

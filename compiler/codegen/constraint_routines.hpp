@@ -10,7 +10,8 @@
 
 namespace yamsc::codegen {
 
-/// Appends constraints, constraint_matrix, constraint_bias and constraint_jacobians.
+/// Appends constraints, constraint_matrix, constraint_bias, constraint_jacobians and
+/// mass_action_jacobian.
 void add_constraint_routines(Graph& g, const ir::System& s, const Options& options,
                              std::vector<Routine>& routines);
 

@@ -93,22 +93,22 @@ std::string declarations(const Module& module, const CNames& names,
     std::string out =
         fmt::format("enum {{ {0}_nq = {1}, {0}_nu = {2}, {0}_np = {3}, {0}_ny = {4} }};\n\n", x,
                     m.nq(), m.nu(), m.np(), m.ny());
-    if (!m.constraints.empty()) {
-        std::string dependent;
-        for (const ConstraintInfo& c : m.constraints)
-            dependent += (dependent.empty() ? "" : ", ") + std::to_string(c.dependent);
+    if (!m.constraints.empty())
         out +=
             fmt::format("// Constraints: nc rows r = B q' + c = 0, the first nh holonomic (phi = "
-                        "0); the DOF each row names `dependent`, or -1: {{{2}}}.\n"
-                        "enum {{ {0}_nh = {1}, {0}_nc = {3} }};\n\n",
-                        x, m.nh(), dependent, m.nc());
-    }
+                        "0).\nenum {{ {0}_nh = {1}, {0}_nc = {2} }};\n\n",
+                        x, m.nh(), m.nc());
     out += fmt::format("// The floating-point type of every argument and parameter (--real).\n"
                        "typedef {} {};\n\n",
                        names.single_precision ? "float" : "double", names.real());
     out += fmt::format("extern const char* const {}_model_name;\n", x);
     for (const NameArray& a : name_arrays(m))
         out += fmt::format("extern const char* const {}_{}[{}];\n", x, a.suffix, array_size(a));
+    if (!m.constraints.empty())
+        out +=
+            fmt::format("// The DOF each constraint row's declaration names `dependent`, or -1.\n"
+                        "extern const int {}_constraint_dependent[{}];\n",
+                        x, m.nc());
     out += fmt::format("\n// The parameters; {}_default_params() gives their defaults (NaN: no\n"
                        "// default, set it before use).\n",
                        x);
@@ -149,6 +149,13 @@ std::string data_definitions(const Module& module, const CNames& names) {
         if (a.names.empty()) items = "\"\"";
         out += fmt::format("const char* const {}_{}[{}] = {{{}}};\n", x, a.suffix, array_size(a),
                            items);
+    }
+    if (!module.model.constraints.empty()) {
+        std::string dependent;
+        for (const ConstraintInfo& c : module.model.constraints)
+            dependent += (dependent.empty() ? "" : ", ") + std::to_string(c.dependent);
+        out += fmt::format("const int {}_constraint_dependent[{}] = {{{}}};\n", x,
+                           module.model.nc(), dependent);
     }
     return out;
 }

@@ -143,6 +143,24 @@ std::string equations_of_motion(const ir::Matrix& M, const ir::Row& F, Expander&
            block(x, forcing, "The forcing is zero.");
 }
 
+/// The constraint rows: Φ of the holonomic ones, r = B q' + c of all (nothing
+/// without constraints).
+std::string constraints_section(const ir::System& s, Expander& x) {
+    if (s.constraints.empty()) return "";
+    std::vector<Entry> phi, r;
+    for (const ir::ConstraintRow& c : s.constraints) {
+        const std::string name = "{\\text{" + escape_text(c.name) + "}}";
+        if (c.holonomic) phi.push_back(entry("\\Phi_" + name, c.phi));
+        r.push_back(entry("r_" + name, c.r));
+    }
+    return "\\subsection*{Constraints}\n"
+           "$M\\,\\ddot{q} = F + B^T\\lambda$ with the rows $\\Phi(q, t, u) = 0$ and "
+           "$r = B\\,\\dot{q} + c = 0$, $B = \\partial r/\\partial \\dot{q}$.\n\n"
+           "Holonomic rows:\n" +
+           block(x, phi, "No holonomic rows.") + "Velocity rows:\n" +
+           block(x, r, "The velocity rows are zero.");
+}
+
 std::string symbols_section(const ir::System& s) {
     std::string out = "\\subsection*{Symbols}\n\\begin{itemize}\n";
     auto item = [](const std::string& math, const std::string& doc) {
@@ -285,6 +303,7 @@ std::string emit_latex(const LatexInput& input, const EmitOptions& options) {
     } else {
         out += "\\subsection*{Equations of motion}\n" + equations_of_motion(eq.M, eq.F, x);
     }
+    out += constraints_section(eq, x);
     if (eq.point.declared) out += linear_section(eq);
     return out + "\\end{document}\n";
 }

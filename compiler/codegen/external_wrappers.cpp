@@ -362,6 +362,7 @@ std::string external_wrapper_body(const Module& module, RoutineId id) {
     case RoutineId::constraint_matrix:
     case RoutineId::constraint_bias:
     case RoutineId::constraint_jacobians:
+    case RoutineId::mass_action_jacobian:
         throw diag::InternalError(std::string("code generation: ") + routine_name(id) +
                                   " has no externals' wrapper");
     }

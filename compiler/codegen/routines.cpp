@@ -174,6 +174,16 @@ const std::array<RoutineRow, routine_count> table{{
      false,
      false,
      {Pass::constraint_derivatives}},
+    {R::mass_action_jacobian,
+     "mass_action_jacobian",
+     "d(M a)/dq (nq x nq) for a given vector a",
+     F::t_q_a_u_p,
+     {"dMa_dq"},
+     "yamsc_mass_action_jacobian",
+     "YAMSC_EXPORT_MASS_ACTION_JACOBIAN",
+     false,
+     false,
+     {Pass::derive_jacobians}},
 }};
 
 } // namespace
@@ -202,7 +212,8 @@ RoutineSet abi_routines() {
 }
 
 RoutineSet constraint_routines() {
-    return {R::constraints, R::constraint_matrix, R::constraint_bias, R::constraint_jacobians};
+    return {R::constraints, R::constraint_matrix, R::constraint_bias, R::constraint_jacobians,
+            R::mass_action_jacobian};
 }
 
 std::string routine_names(RoutineSet set) {

@@ -35,8 +35,9 @@ enum class RoutineId : std::uint8_t {
     constraint_matrix,
     constraint_bias,
     constraint_jacobians,
+    mass_action_jacobian,
 };
-inline constexpr std::size_t routine_count = 16;
+inline constexpr std::size_t routine_count = 17;
 using RoutineSet = ir::EnumSet<RoutineId, routine_count>;
 
 /// The arguments before a routine's outputs.
@@ -48,6 +49,7 @@ enum class ArgumentForm {
     point,               // (q0, qd0, u0, p): the linear model, at t = 0
     p,                   // (p)
     t_q_qd_u_lambda_a_p, // (t, q, qd, u, lambda, a, p): the constraint Jacobians
+    t_q_a_u_p,           // (t, q, a, u, p): d(M a)/dq
 };
 
 struct RoutineRow {
@@ -78,8 +80,9 @@ inline const char* routine_name(RoutineId id) {
 std::optional<RoutineId> routine_named(std::string_view name);
 /// The routines the C ABI exports.
 RoutineSet abi_routines();
-/// The routines of the constraint rows: a module has them exactly when its model
-/// has constraints (and the JIT then compiles them for every command).
+/// The routines of the constraint rows, and d(M a)/dq that the exact Jacobian of the
+/// constrained motion needs: a module has them exactly when its model has
+/// constraints (and the JIT then compiles them for every command).
 RoutineSet constraint_routines();
 /// "rhs, outputs": the names, in the table's order.
 std::string routine_names(RoutineSet set);

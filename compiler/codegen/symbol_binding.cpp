@@ -109,6 +109,9 @@ RoutineBuilder::Signature api_signature(RoutineId id) {
     case ArgumentForm::p:
         inputs({"p"});
         break;
+    case ArgumentForm::t_q_a_u_p:
+        inputs({"t", "q", "a", "u", "p"});
+        break;
     case ArgumentForm::t_q_qd_u_lambda_a_p:
         inputs({"t", "q", "qd", "u", "lambda", "a", "p"});
         break;

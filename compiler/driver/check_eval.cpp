@@ -78,6 +78,15 @@ void check_text(const model::Model& m, std::ostream& out) {
     out << "outputs (" << m.outputs.size() << "):";
     for (const auto& o : m.outputs) out << " " << o.name;
     out << "\n";
+    if (!m.constraints.empty()) {
+        out << "constraints (" << m.constraints.size() << "):\n";
+        for (const model::Constraint& c : m.constraints) {
+            out << "  " << model::constraint_kind_info(c.kind).name << " " << c.name << ":";
+            for (const model::ConstraintRow& r : c.rows)
+                out << " " << r.name << (r.holonomic ? "" : " (velocity)");
+            out << "\n";
+        }
+    }
     if (m.externals.empty()) return;
     out << "externals (" << m.externals.size() << "):\n";
     for (const auto& e : m.externals)

@@ -1,5 +1,6 @@
 #include "model/constraint_check.hpp"
 
+#include "model/declaration_check.hpp"
 #include <algorithm>
 #include <map>
 
@@ -63,15 +64,8 @@ public:
         c.end = decl.end;
         std::map<ConstraintRole, Loc> written;
         for (const ast::Property& p : decl.roles) {
-            const auto role =
-                std::find_if(info->roles.begin(), info->roles.end(),
-                             [&](const ConstraintRoleInfo& r) { return r.name == p.key; });
-            if (role == info->roles.end()) {
-                std::vector<std::string> roles;
-                for (const ConstraintRoleInfo& r : info->roles) roles.push_back(r.name);
-                diags_.error(Kind::UnknownProperty, p.loc,
-                             "constraint kind " + quoted(info->name) + " has no role " +
-                                 quoted(p.key) + diag::did_you_mean(p.key, roles));
+            const ConstraintRoleInfo* role = find_role(*info, p, "constraint kind", diags_);
+            if (!role) {
                 ok = false;
                 continue;
             }
@@ -99,34 +93,12 @@ public:
 
 private:
     const ConstraintKindInfo* kind_of(const ast::Named& kind) {
-        std::vector<std::string> names;
-        for (const ConstraintKindInfo& k : constraint_kinds()) {
-            if (k.name == kind.name) return &k;
-            names.push_back(k.name);
-        }
-        if (!kind.name.empty())
-            diags_.error(Kind::UnknownName, kind.loc,
-                         "unknown constraint kind " + quoted(kind.name) +
-                             diag::did_you_mean(kind.name, names));
-        return nullptr;
+        return find_kind(constraint_kinds(), kind, "constraint kind", diags_);
     }
 
     bool check_name(const ast::Constraint& decl) {
-        const std::string& name = decl.id.name;
-        if (name.empty()) return false;
-        const std::string why = reserved_reason(name);
-        if (!why.empty()) {
-            diags_.error(Kind::ReservedName, decl.id.loc, quoted(name) + " " + why);
-            return false;
-        }
-        const auto [it, fresh] = seen_.emplace(name, decl.id.loc);
-        if (!fresh) {
-            diags_.error(Kind::DuplicateName, decl.id.loc,
-                         "constraint " + quoted(name) + " is already declared at " +
-                             at(it->second));
-            return false;
-        }
-        return true;
+        return !decl.id.name.empty() &&
+               fresh_declaration_name(decl.id, "constraint", seen_, diags_);
     }
 
     bool bind(Constraint& c, const ConstraintRoleInfo& role, const ast::Property& p) {
@@ -469,6 +441,11 @@ std::string constraint_source(const Model& model, const Constraint& c) {
 std::vector<Constraint> check_constraints(const ast::ModelFile& file, const Model& model,
                                           const SymbolTable& names, ExprChecker& exprs,
                                           diag::Diagnostics& diags) {
+    if (!file.constraints.empty() && model.dofs.empty()) {
+        diags.error(diag::Kind::InvalidValue, file.constraints.front().loc,
+                    "a constraint needs coordinates to hold: the model declares no DOF");
+        return {};
+    }
     ConstraintChecker checker(model, names, exprs, diags);
     std::vector<Constraint> out;
     for (const ast::Constraint& decl : file.constraints) checker.check(decl, out);

@@ -1,5 +1,6 @@
 #include "model/load_check.hpp"
 
+#include "model/declaration_check.hpp"
 #include "model/mesh_channels.hpp"
 
 #include <algorithm>
@@ -72,18 +73,12 @@ public:
         std::vector<bool> written(info->roles.size(), false); // reported when wrong
         bool ok = named;
         for (const ast::Property& p : decl.roles) {
-            const auto role = std::find_if(info->roles.begin(), info->roles.end(),
-                                           [&](const LoadRole& r) { return r.name == p.key; });
-            if (role == info->roles.end()) {
-                std::vector<std::string> roles;
-                for (const LoadRole& r : info->roles) roles.push_back(r.name);
-                diags_.error(Kind::UnknownProperty, p.loc,
-                             "load block kind " + quoted(info->name) + " has no role " +
-                                 quoted(p.key) + diag::did_you_mean(p.key, roles));
+            const LoadRole* role = find_role(*info, p, "load block kind", diags_);
+            if (!role) {
                 ok = false;
                 continue;
             }
-            const auto r = static_cast<std::size_t>(role - info->roles.begin());
+            const auto r = static_cast<std::size_t>(role - info->roles.data());
             if (written[r]) {
                 diags_.error(Kind::DuplicateName, p.loc,
                              "role " + quoted(p.key) + " is already bound at " +
@@ -116,36 +111,15 @@ public:
 
 private:
     const LoadKindInfo* kind_of(const ast::Named& kind) {
-        std::vector<std::string> names;
-        for (const LoadKindInfo& k : load_kinds()) {
-            if (k.name == kind.name) return &k;
-            names.push_back(k.name);
-        }
-        if (!kind.name.empty())
-            diags_.error(Kind::UnknownName, kind.loc,
-                         "unknown load block kind " + quoted(kind.name) +
-                             diag::did_you_mean(kind.name, names));
-        return nullptr;
+        return find_kind(load_kinds(), kind, "load block kind", diags_);
     }
 
     /// The block's name: an identifier of its own; its outputs NAME_<output>
     /// follow the model's and may not repeat one.
     bool check_name(const ast::Load& decl, const LoadKindInfo* info) {
         const std::string& name = decl.id.name;
-        if (name.empty()) return false;
-        const std::string why = reserved_reason(name);
-        if (!why.empty()) {
-            diags_.error(Kind::ReservedName, decl.id.loc, quoted(name) + " " + why);
+        if (name.empty() || !fresh_declaration_name(decl.id, "load block", seen_, diags_))
             return false;
-        }
-        auto [it, fresh] = seen_.emplace(name, decl.id.loc);
-        if (!fresh) {
-            diags_.error(Kind::DuplicateName, decl.id.loc,
-                         "load block " + quoted(name) + " is already declared at " +
-                             std::to_string(it->second.line) + ":" +
-                             std::to_string(it->second.col));
-            return false;
-        }
         if (!info) return true;
         for (const std::string& o : info->outputs) {
             const std::string full = info->output_name(name, o);

@@ -37,6 +37,7 @@ struct SharedModel::Library {
     yamsc_constraint_matrix_fn constraint_matrix = nullptr;
     yamsc_constraint_bias_fn constraint_bias = nullptr;
     yamsc_constraint_jacobians_fn constraint_jacobians = nullptr;
+    yamsc_mass_action_jacobian_fn mass_action_jacobian = nullptr;
 
     Library() = default;
     Library(const Library&) = delete;
@@ -158,6 +159,8 @@ void SharedModel::read_constraints(Library& library, void* h) {
         optional_routine<yamsc_constraint_bias_fn>(h, "yamsc_constraint_bias");
     library.constraint_jacobians =
         optional_routine<yamsc_constraint_jacobians_fn>(h, "yamsc_constraint_jacobians");
+    library.mass_action_jacobian =
+        optional_routine<yamsc_mass_action_jacobian_fn>(h, "yamsc_mass_action_jacobian");
 }
 
 std::vector<double> SharedModel::default_params() const {
@@ -180,7 +183,8 @@ std::vector<std::string> SharedModel::routines() const {
         {"constraints", library_->constraints != nullptr},
         {"constraint_matrix", library_->constraint_matrix != nullptr},
         {"constraint_bias", library_->constraint_bias != nullptr},
-        {"constraint_jacobians", library_->constraint_jacobians != nullptr}};
+        {"constraint_jacobians", library_->constraint_jacobians != nullptr},
+        {"mass_action_jacobian", library_->mass_action_jacobian != nullptr}};
     std::vector<std::string> present;
     for (const auto& [name, here] : all)
         if (here) present.emplace_back(name);
@@ -294,6 +298,13 @@ ModelView SharedModel::view(std::vector<double> params) const {
             lib->constraint_jacobians(t, q, qd, u, lambda, a, p->data(), dBTl_dq, dacc_dq, dacc_dqd,
                                       dBTl_du, dacc_du);
         };
+    if (lib->mass_action_jacobian)
+        detail::fill_mass_action_jacobian(v, [&](auto& field) {
+            field = [lib, p](double t, const double* q, const double* a, const double* u,
+                             double* dMa_dq) {
+                lib->mass_action_jacobian(t, q, a, u, p->data(), dMa_dq);
+            };
+        });
     return v;
 }
 

@@ -30,9 +30,10 @@ TEST_CASE("the routine table has one row per RoutineId, in order, with distinct 
     CHECK(!routine_named("inner_rhs"));
     CHECK(routine_names(abi_routines()) ==
           "rhs, rhs_jacobian, mass_matrix, forcing, jacobians, outputs, constraints, "
-          "constraint_matrix, constraint_bias, constraint_jacobians");
+          "constraint_matrix, constraint_bias, constraint_jacobians, mass_action_jacobian");
     CHECK(routine_names(constraint_routines()) ==
-          "constraints, constraint_matrix, constraint_bias, constraint_jacobians");
+          "constraints, constraint_matrix, constraint_bias, constraint_jacobians, "
+          "mass_action_jacobian");
 }
 
 TEST_CASE("the module's public routines are the table's, with its signatures") {
@@ -54,7 +55,7 @@ TEST_CASE("the module's public routines are the table's, with its signatures") {
     }
     // Everything but the sensitivities and the operating point (added apart) and
     // the routines of constraints (this model has none).
-    CHECK(public_routines == static_cast<int>(routine_count) - 6);
+    CHECK(public_routines == static_cast<int>(routine_count) - 7);
     CHECK_THROWS_AS(m.routine(RoutineId::operating_point), yamsc::diag::InternalError);
 }
 

@@ -54,6 +54,25 @@ TEST_CASE("a four-bar compiled on the fly: its rows, the constrained rhs and the
         source_dir + "/tests/model/constraints/four_bar.mbd", driver::Until::jacobians, diags);
     REQUIRE(!diags.has_errors());
     REQUIRE(fe.system);
+    // What the JIT compiles for a command: the rows, M and F always; the
+    // derivatives only with a Jacobian; never the unconstrained rhs_jacobian.
+    using codegen::RoutineId;
+    auto exports = [&](codegen::RoutineSet asked, const std::string& macro) {
+        return analysis::shared_model_source(*fe.system, asked).find("\n" + macro + "(four_bar)") !=
+               std::string::npos;
+    };
+    for (const char* m :
+         {"YAMSC_EXPORT_CONSTRAINTS", "YAMSC_EXPORT_CONSTRAINT_MATRIX",
+          "YAMSC_EXPORT_CONSTRAINT_BIAS", "YAMSC_EXPORT_MASS_MATRIX", "YAMSC_EXPORT_FORCING"}) {
+        CHECK_MESSAGE(exports({RoutineId::outputs}, m), m);
+    }
+    for (const char* m : {"YAMSC_EXPORT_JACOBIANS", "YAMSC_EXPORT_CONSTRAINT_JACOBIANS",
+                          "YAMSC_EXPORT_MASS_ACTION_JACOBIAN"}) {
+        CHECK_MESSAGE(!exports({RoutineId::outputs}, m), m);
+        CHECK_MESSAGE(exports({RoutineId::rhs_jacobian}, m), m);
+    }
+    CHECK(!exports({RoutineId::rhs_jacobian}, "YAMSC_EXPORT_RHS_JACOBIAN"));
+
     char folder[] = "/tmp/yamsc_constraints_XXXXXX";
     REQUIRE(mkdtemp(folder));
     analysis::JitOptions o;
@@ -70,6 +89,11 @@ TEST_CASE("a four-bar compiled on the fly: its rows, the constrained rhs and the
     REQUIRE(v.constraint_sources.size() == 2);
     CHECK(v.constraint_sources[0].find("four_bar.mbd:26:1") != std::string::npos);
     CHECK(!v.rhs_jacobian); // the constrained view forms it
+    std::string routines;
+    for (const std::string& r : library->routines()) routines += (routines.empty() ? "" : ", ") + r;
+    CHECK(routines == "rhs, mass_matrix, forcing, jacobians, outputs, constraints, "
+                      "constraint_matrix, constraint_bias, constraint_jacobians, "
+                      "mass_action_jacobian");
     REQUIRE(v.constraint_residuals);
     REQUIRE(v.constraint_matrix);
     REQUIRE(v.constraint_bias);

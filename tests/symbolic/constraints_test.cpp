@@ -196,11 +196,12 @@ void check_derivatives(const ir::System& s, const State& x) {
             entries(dacc_du, nc, nu, j),
             central([&](double e) { return acceleration_rows(s, with(&State::u, j, e)); }, h), tol);
     }
-    // γ: along q(h) = q + h q' + h²/2 q'', q'(h) = q' + h q'' (q'' = a, arbitrary),
-    // dr/dh = B q'' + γ. Inputs and t are held: these models' rows read them only
-    // where the prescribed test checks γ in closed form.
+    // γ: along t + h, q(h) = q + h q' + h²/2 q'', q'(h) = q' + h q'' (q'' = a,
+    // arbitrary), dr/dh = B q'' + γ. Inputs would need their derivative channels
+    // moved too: the prescribed test checks γ with inputs in closed form.
     auto along = [&](double e) {
         State y = x;
+        y.t += e;
         for (int k = 0; k < nq; ++k) {
             const auto i = static_cast<std::size_t>(k);
             y.q[i] += e * x.qd[i] + 0.5 * e * e * x.a[i];
@@ -316,5 +317,92 @@ constraint prescribed hold { coordinate = th; value = 0.5*beta + 0.1*t^2 }
                     1e-14);
         check_close(values(s, flat(s.dacc_du), x), {0, 0, -0.5}, 1e-14);
         check_derivatives(s, x);
+    }
+}
+
+TEST_CASE("revolute and weld loop rows: b's axes seen from a's") {
+    const ir::System s = constrained_system(R"(model joints
+dof q1, q2, q3, q4
+rigid A { mass = 1 }
+rigid B { mass = 1 }
+joint ground -> A { rotate z q1; rotate x q2 }
+joint ground -> B { at (1, 0, 0); rotate y q3; rotate z q4 }
+point pb on B at (0, 0.5, 0)
+constraint loop hinge { a = A; b = pb; joint = revolute; axis = z }
+constraint loop fix { a = A; b = B; joint = weld; components = (y) }
+)");
+    std::vector<std::string> names;
+    for (const ir::ConstraintRow& r : s.constraints) names.push_back(r.name);
+    CHECK(names == std::vector<std::string>{"hinge.x", "hinge.y", "hinge.z", "hinge.rx", "hinge.ry",
+                                            "fix.y", "fix.rx", "fix.ry", "fix.rz"});
+    using M3 = std::array<std::array<double, 3>, 3>;
+    auto times = [](const M3& a, const M3& b) {
+        M3 c{};
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                for (int k = 0; k < 3; ++k) c[i][j] += a[i][k] * b[k][j];
+        return c;
+    };
+    // Columns: the turned frame's axes in the frame it turns from.
+    auto rotation = [](int axis, double angle) {
+        const double c = std::cos(angle), s = std::sin(angle);
+        const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+        M3 r{};
+        r[axis][axis] = 1;
+        r[i][i] = c;
+        r[j][j] = c;
+        r[i][j] = -s;
+        r[j][i] = s;
+        return r;
+    };
+    std::mt19937 rng(13);
+    for (int trial = 0; trial < 5; ++trial) {
+        const State x = random_state(s, rng);
+        const M3 A = times(rotation(2, x.q[0]), rotation(0, x.q[1]));
+        const M3 B = times(rotation(1, x.q[2]), rotation(2, x.q[3]));
+        // a_i . b_j, and B's point in A's axes.
+        auto ab = [&](int i, int j) {
+            return A[0][i] * B[0][j] + A[1][i] * B[1][j] + A[2][i] * B[2][j];
+        };
+        std::array<double, 3> pb{1 + 0.5 * B[0][1], 0.5 * B[1][1], 0.5 * B[2][1]}, d{};
+        for (int i = 0; i < 3; ++i) d[i] = -(A[0][i] * pb[0] + A[1][i] * pb[1] + A[2][i] * pb[2]);
+        std::array<double, 3> o{};
+        for (int i = 0; i < 3; ++i) o[i] = -A[0][i]; // B's origin (1, 0, 0) in A's axes
+        check_close(values(s, column(s.constraints, &ir::ConstraintRow::phi), x),
+                    {d[0], d[1], d[2], ab(0, 2), ab(1, 2), o[1], ab(2, 1), ab(0, 2), ab(1, 0)},
+                    1e-13);
+        check_derivatives(s, x);
+    }
+}
+
+TEST_CASE("a relation with time and a speed row: Φ, r, B and γ in closed form") {
+    const ir::System s = constrained_system(R"(model rows
+dof x, y, th
+rigid a { mass = 1 }
+rigid b { mass = 1 }
+rigid c { mass = 1 }
+joint ground -> a { translate x x }
+joint ground -> b { translate y y }
+joint ground -> c { rotate z th }
+constraint relation gear { value = y - 2*x - 0.1*sin(t) }
+constraint speed skate { value = x' - cos(th)*y'; dependent = x }
+)");
+    REQUIRE(s.nc() == 2);
+    REQUIRE(s.nh() == 1);
+    CHECK(s.constraints[1].name == "skate");
+    CHECK(!s.constraints[1].holonomic);
+    CHECK(s.constraints[1].dependent == 0);
+    std::mt19937 rng(17);
+    for (int trial = 0; trial < 3; ++trial) {
+        const State v = random_state(s, rng);
+        const double x = v.q[0], y = v.q[1], th = v.q[2], t = v.t;
+        const double xd = v.qd[0], yd = v.qd[1], thd = v.qd[2];
+        check_close(values(s, {s.constraints[0].phi, s.constraints[0].r, s.constraints[1].r}, v),
+                    {y - 2 * x - 0.1 * std::sin(t), yd - 2 * xd - 0.1 * std::cos(t),
+                     xd - std::cos(th) * yd},
+                    1e-14);
+        check_close(values(s, flat(s.B), v), {-2, 1, 0, 1, -std::cos(th), 0}, 1e-14);
+        check_close(values(s, s.gamma, v), {0.1 * std::sin(t), std::sin(th) * thd * yd}, 1e-14);
+        check_derivatives(s, v);
     }
 }

@@ -15,9 +15,9 @@
 //
 // The routines (rhs, rhs_jacobian, mass_matrix, forcing, jacobians, outputs,
 // and for a model with constraints constraints, constraint_matrix,
-// constraint_bias, constraint_jacobians) are optional: YAMSC_EXPORT_MODEL_INFO plus one
-// YAMSC_EXPORT_<ROUTINE> per routine the source defines. The loader requires the model information
-// and leaves a routine the library lacks empty in its views.
+// constraint_bias, constraint_jacobians, mass_action_jacobian) are optional:
+// YAMSC_EXPORT_MODEL_INFO plus one YAMSC_EXPORT_<ROUTINE> per routine the source defines. The
+// loader requires the model information and leaves a routine the library lacks empty in its views.
 //
 // YAMSC_EXPORT_OUTPUTS also gives outputs_from_qdd (the outputs given the q''
 // of rhs, which the generated outputs calls: docs/generated-api.md): a
@@ -96,6 +96,8 @@ typedef void (*yamsc_constraint_jacobians_fn)(double t, const double* q, const d
                                               const double* a, const double* p, double* dBTl_dq,
                                               double* dacc_dq, double* dacc_dqd, double* dBTl_du,
                                               double* dacc_du);
+typedef void (*yamsc_mass_action_jacobian_fn)(double t, const double* q, const double* a,
+                                              const double* u, const double* p, double* dMa_dq);
 }
 
 // Name kinds of yamsc_name().
@@ -289,6 +291,13 @@ template <class Model> struct Constraints<Model, std::void_t<decltype(Model::nc)
                                         dBTl_dq, dacc_dq, dacc_dqd, dBTl_du, dacc_du);             \
     }
 
+#define YAMSC_EXPORT_MASS_ACTION_JACOBIAN(NS)                                                      \
+    extern "C" YAMSC_ABI_VISIBLE void yamsc_mass_action_jacobian(                                  \
+        double t, const double* q, const double* a, const double* u, const double* p,              \
+        double* dMa_dq) {                                                                          \
+        NS::Model::mass_action_jacobian(t, q, a, u, NS::Model::params_from_array(p), dMa_dq);      \
+    }
+
 // Everything: a model compiled with all its routines (the generated default).
 #define YAMSC_EXPORT_MODEL(NS)                                                                     \
     YAMSC_EXPORT_MODEL_INFO(NS)                                                                    \
@@ -311,6 +320,7 @@ template <class Model> struct Constraints<Model, std::void_t<decltype(Model::nc)
     YAMSC_EXPORT_CONSTRAINTS(NS)                                                                   \
     YAMSC_EXPORT_CONSTRAINT_MATRIX(NS)                                                             \
     YAMSC_EXPORT_CONSTRAINT_BIAS(NS)                                                               \
-    YAMSC_EXPORT_CONSTRAINT_JACOBIANS(NS)
+    YAMSC_EXPORT_CONSTRAINT_JACOBIANS(NS)                                                          \
+    YAMSC_EXPORT_MASS_ACTION_JACOBIAN(NS)
 
 #endif // YAMSC_ABI_EXPORT_HPP

@@ -112,8 +112,19 @@ template <class Model, class = void> struct has_constraints : std::false_type {}
 template <class Model>
 struct has_constraints<Model, std::void_t<decltype(Model::nc)>> : std::true_type {};
 
+// Whether a view type has mass_action_jacobian, d(M a)/dq (the constrained view's exact
+// Jacobian reads it where the runtime provides the field).
+template <class View, class = void> struct has_mass_action_jacobian : std::false_type {};
+template <class View>
+struct has_mass_action_jacobian<View, std::void_t<decltype(&View::mass_action_jacobian)>>
+    : std::true_type {};
+// Calls fill(view.mass_action_jacobian) where the view has that field.
+template <class View, class Fill> void fill_mass_action_jacobian(View& v, const Fill& fill) {
+    if constexpr (has_mass_action_jacobian<View>::value) fill(v.mass_action_jacobian);
+}
+
 // The constraint rows and routines of a generated model with constraints.
-template <class Model> void add_constraints(ModelView& v, const typename Model::Params& p) {
+template <class Model, class View> void add_constraints(View& v, const typename Model::Params& p) {
     v.nh = Model::nh;
     v.nc = Model::nc;
     for (int i = 0; i < Model::nc; ++i) {
@@ -138,6 +149,11 @@ template <class Model> void add_constraints(ModelView& v, const typename Model::
         Model::constraint_jacobians(t, q, qd, u, lambda, a, p, dBTl_dq, dacc_dq, dacc_dqd, dBTl_du,
                                     dacc_du);
     };
+    fill_mass_action_jacobian(v, [&p](auto& field) {
+        field = [p](double t, const double* q, const double* a, const double* u, double* dMa_dq) {
+            Model::mass_action_jacobian(t, q, a, u, p, dMa_dq);
+        };
+    });
 }
 } // namespace detail
 
@@ -174,7 +190,8 @@ template <class Model> ModelView from_generated(const typename Model::Params& pa
         v.outputs_from_qdd = [p](double t, const double* q, const double* qd, const double* qdd,
                                  const double* u,
                                  double* y) { Model::outputs_from_qdd(t, q, qd, qdd, u, p, y); };
-    if constexpr (detail::has_constraints<Model>::value) detail::add_constraints<Model>(v, p);
+    if constexpr (detail::has_constraints<Model>::value)
+        detail::add_constraints<Model, ModelView>(v, p);
     return v;
 }
 
