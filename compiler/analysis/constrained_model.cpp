@@ -4,6 +4,8 @@
 #include "diag/errors.hpp"
 #include "driver/json.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <ostream>
 #include <string>
@@ -123,6 +125,16 @@ int constrained_lin(const runtime::ModelView& v, const driver::LinOptions& o, st
             << ",\"u0\":" << json::array(u) << ",\"modes\":" << modes_json(m.modes) << "}\n";
         return 0;
     }
+    // As lin without constraints: a point that is not an equilibrium is said so.
+    std::vector<double> xdot(x.size());
+    v.rhs(0.0, x.data(), u.data(), xdot.data());
+    double residual = 0;
+    for (int j : m.choice.independent_speeds)
+        residual = std::max(residual, std::fabs(xdot[at(v.nq + j)]));
+    if (residual > 1e-9)
+        err << "yamsc: warning: the operating point is not an equilibrium (max |q''| over the "
+               "independent speeds = "
+            << residual << "); the linear model is about a moving point\n";
     out << "linear model in the independent coordinates (" << mq << ") and speeds (" << m.n_speeds
         << "):\n"
         << runtime::describe_choice(v, m.choice);

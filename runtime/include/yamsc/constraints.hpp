@@ -102,7 +102,8 @@ ConstraintResiduals constraint_residual_norms(const ModelView& view, double t, c
 /// central differences of mass_matrix without it), outputs are the base's at the
 /// constrained q'' followed by `lambda:ROW` (nc), `phi:ROW` (nh), `r:ROW` (nc),
 /// `constraint_position_error` and `constraint_velocity_error` (max |Phi|, max
-/// |r|). It keeps the constraint rows and, with options.project, sets
+/// |r|). rhs_jacobian needs the view's jacobians and constraint_jacobians (empty
+/// without them). It keeps the constraint rows and, with options.project, sets
 /// ModelView::project. forcing and jacobians are cleared (the constrained
 /// accelerations are not M^-1 F; load blocks closed around the view then take
 /// their loads' effect on q'' by central differences of rhs); mass_matrix stays. A view without

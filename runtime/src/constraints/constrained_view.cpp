@@ -89,7 +89,7 @@ ModelView constrain(const ModelView& view, const ConstraintOptions& options) {
         std::copy(x + nq, x + 2 * nq, xdot);
         std::copy(k.qdd.data(), k.qdd.data() + nq, xdot + nq);
     };
-    if (view.jacobians)
+    if (view.jacobians && view.constraint_jacobians)
         v.rhs_jacobian = [s, nq](double t, const double* x, const double* u, double* J) {
             const Kkt k(s->base, t, x, x + nq, u);
             const Eigen::MatrixXd lower = acceleration_jacobian(s->base, k, t, x, x + nq, u);

@@ -9,8 +9,8 @@
 namespace yamsc::runtime::constraints {
 
 void require_rows(const ModelView& v, const char* what) {
-    if (!v.constraint_residuals || !v.constraint_matrix || !v.constraint_bias ||
-        !v.constraint_jacobians)
+    // constraint_jacobians is optional: only the exact rhs_jacobian reads it.
+    if (!v.constraint_residuals || !v.constraint_matrix || !v.constraint_bias)
         throw std::invalid_argument(std::string(what) +
                                     ": the model was compiled without its constraint routines");
     if (static_cast<int>(v.constraint_names.size()) != v.nc)
