@@ -10,14 +10,11 @@
 
 namespace yamsc::runtime {
 
+using constraints::at;
 using constraints::Matrix;
 using constraints::Vector;
 
 namespace {
-
-std::size_t at(int i) {
-    return static_cast<std::size_t>(i);
-}
 
 /// The independent speeds' accelerations at x.
 Vector residual_at(const ModelView& v, double t, const std::vector<double>& x, const double* u,

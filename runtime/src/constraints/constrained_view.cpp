@@ -12,15 +12,12 @@
 
 namespace yamsc::runtime {
 
+using constraints::at;
 using constraints::Kkt;
 using constraints::Matrix;
 using constraints::Vector;
 
 namespace {
-
-std::size_t at(int i) {
-    return static_cast<std::size_t>(i);
-}
 
 /// The lower half of rhs_jacobian: d(q'')/d[q, q'] (nq x 2nq) at the KKT point.
 Eigen::MatrixXd acceleration_jacobian(const ModelView& v, const Kkt& k, double t, const double* q,

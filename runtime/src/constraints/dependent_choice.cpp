@@ -11,14 +11,11 @@
 
 namespace yamsc::runtime {
 
+using constraints::at;
 using constraints::Matrix;
 using constraints::Vector;
 
 namespace {
-
-std::size_t at(int i) {
-    return static_cast<std::size_t>(i);
-}
 
 Eigen::Index rank_of(const Eigen::MatrixXd& m, double tolerance) {
     if (m.rows() == 0 || m.cols() == 0) return 0;

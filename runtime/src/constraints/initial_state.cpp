@@ -10,14 +10,9 @@
 
 namespace yamsc::runtime {
 
+using constraints::at;
 using constraints::Matrix;
 using constraints::Vector;
-
-namespace {
-std::size_t at(int i) {
-    return static_cast<std::size_t>(i);
-}
-} // namespace
 
 /// Newton on Phi over `dofs` (nh of them), halving steps that do not reduce
 /// max |Phi|. Returns the iterations; throws ConstraintError (inconsistent).

@@ -12,16 +12,13 @@
 
 namespace yamsc::runtime {
 
+using constraints::at;
 using constraints::Matrix;
 using constraints::Vector;
 
 namespace {
 
 constexpr double two_pi = 6.283185307179586476925286766559;
-
-std::size_t at(int i) {
-    return static_cast<std::size_t>(i);
-}
 
 std::vector<double> flat(const Matrix& m) {
     return std::vector<double>(m.data(), m.data() + m.size());

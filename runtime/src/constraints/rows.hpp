@@ -13,6 +13,11 @@ namespace yamsc::runtime::constraints {
 using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 using Vector = Eigen::VectorXd;
 
+/// An index as a std::vector's.
+inline std::size_t at(int i) {
+    return static_cast<std::size_t>(i);
+}
+
 /// A null pointer for an empty input vector (the generated routines never read it).
 inline const double* inputs(const std::vector<double>& u) {
     return u.empty() ? nullptr : u.data();
