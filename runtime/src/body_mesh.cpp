@@ -115,11 +115,23 @@ PointMotion point_motion(const BodyFrame& f, const BodyPoint& pt) {
     return m;
 }
 
+PointSite point_site(const BodyFrame& f, const BodyPoint& pt) {
+    PointSite s;
+    s.body = pt.origin + displacement(f, pt);
+    s.ground = f.r + f.R * s.body;
+    return s;
+}
+
 void add_point_load(const BodyFrame& f, const BodyPoint& pt, const Vector3d& force,
                     const Vector3d& moment, BodyLoad& load) {
+    add_point_load(f, pt, point_site(f, pt), force, moment, load);
+}
+
+void add_point_load(const BodyFrame& f, const BodyPoint& pt, const PointSite& site,
+                    const Vector3d& force, const Vector3d& moment, BodyLoad& load) {
     const std::size_t n = modes_of(f, pt);
     const Matrix3d W = angle_rates(elastic_angles(f, pt));
-    const Vector3d rho = pt.origin + displacement(f, pt); // body axes
+    const Vector3d& rho = site.body; // body axes
     const Vector3d fb = f.R.transpose() * force, mb = f.R.transpose() * moment;
     // The body frame's share: the wrench moved to the origin.
     load.force += fb;

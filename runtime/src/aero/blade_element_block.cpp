@@ -224,8 +224,9 @@ private:
                              bool inputs_only = false) const {
         const Vector3d uniform(wind_speed, 0, 0);
         auto rotor = [&]() -> const RotorResult& {
-            return inputs_only ? rotor_->element_inputs(motion_, uniform)
-                               : rotor_->evaluate(motion_, uniform, true);
+            return inputs_only
+                       ? rotor_->element_inputs(motion_, uniform)
+                       : rotor_->evaluate(motion_, uniform, true, !dynamics_->replaces_loads());
         };
         // The values and wind of the last call again (a step's measurement, first
         // stage and update read the same): its motion stands (every input of it is
@@ -386,14 +387,15 @@ private:
         }
         // Gathered per structural node: the forces, and their moments about it.
         for (const LoadedNode& n : m.loaded) {
-            const Vector3d at = runtime::point_position(frames_[k], points[n.point]);
+            const runtime::PointSite site = runtime::point_site(frames_[k], points[n.point]);
+            const Vector3d& at = site.ground;
             Vector3d f = Vector3d::Zero(), mo = Vector3d::Zero();
             for (std::size_t j = 0; j < nodes.size(); ++j) {
                 if (m.nearest[j] != n.point) continue;
                 f += force[j];
                 mo += moment[j] + (nodes[j].position - at).cross(force[j]);
             }
-            runtime::add_point_load(frames_[k], points[n.point], f, mo, load);
+            runtime::add_point_load(frames_[k], points[n.point], site, f, mo, load);
         }
     }
 

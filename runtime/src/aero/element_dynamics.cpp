@@ -90,6 +90,7 @@ void ElementDynamics::apply(BemRotor& rotor, const RotorMotion& motion,
             omega_key_.insert(omega_key_.end(), w.data(), w.data() + 3);
     if (rotor.recall_applied(generation_, omega_key_)) return;
     auto& blades = rotor.nodes();
+    if (!replaces_loads() && !rotor.result().loads) rotor.complete_loads(motion);
     if (ua_on_ && ua_inner_.empty()) locate_ua_span(rotor.result());
     const double rho = input_.air_density;
     std::size_t e = 0;
@@ -98,7 +99,7 @@ void ElementDynamics::apply(BemRotor& rotor, const RotorMotion& motion,
             NodeResult& n = blades[k][j];
             // calculate_Inductions_from_DBEMT, then the skew correction and the
             // low-TSR blend on the filtered induction.
-            if (dbemt_ && x_.initialized) {
+            if (replaces_loads()) {
                 const InductionFactors f =
                     filtered_induction(*dbemt_, u_next_, x_, e, n.input, options_, n.bem);
                 n.bem = element_with_induction(n.input, options_, rho, f, n.bem);
@@ -171,7 +172,12 @@ void ElementDynamics::sample(const RotorResult& r, DbemtInput& u, bool stale_phi
 }
 
 void ElementDynamics::step_unsteady(double dt) {
-    ua_dt_ = dt;
+    // UA steps by AeroDyn's constant p%dt: the first step's, which the later
+    // ones (t_next - t on the run's time grid) differ from by rounding only. So
+    // a step takes the chain apply() evaluated at its start (the memo) with the
+    // same dt; a step size that differs more (a new run's) replaces it.
+    if (!(std::abs(dt - ua_dt_) <= 1e-9 * std::abs(dt))) ua_dt_ = dt;
+    dt = ua_dt_;
     ++generation_;
     std::size_t e = 0;
     for (std::size_t k = 0; k < input_.blades.size(); ++k)
@@ -183,7 +189,7 @@ void ElementDynamics::step_unsteady(double dt) {
             if (ua_settings_.model == UnsteadyModel::oye)
                 step(af, ua_settings_, chord, dt, ua_t_[e], ua_next_[e], oye_[e]);
             else if (step_ > 0) // UA_UpdateStates leaves UA_Mod 3 alone at n = 0
-                step(af, ua_settings_, chord, dt, ua_t_[e], mp_[e], mp_memo_[e]);
+                advance(af, ua_settings_, chord, dt, ua_t_[e], mp_[e], mp_memo_[e]);
         }
 }
 
