@@ -233,13 +233,40 @@ private:
         // in the key; the wind field's time too, unless the field is steady).
         const std::size_t nr = ports_.outputs_read.size() + ports_.inputs_read.size();
         const double key_time = s_.wind_field && !s_.wind_field->steady() ? wind_time : 0.0;
-        if (rotor_ && motion_key_.size() == nr + 2 && motion_key_[nr] == wind_speed &&
-            motion_key_[nr + 1] == key_time &&
-            std::memcmp(r, motion_key_.data(), nr * sizeof(double)) == 0)
+        const bool same_motion = rotor_ && motion_key_.size() == nr + 2 &&
+                                 std::memcmp(r, motion_key_.data(), nr * sizeof(double)) == 0;
+        if (same_motion && motion_key_[nr] == wind_speed && motion_key_[nr + 1] == key_time)
             return rotor();
         motion_key_.clear();
-        const std::size_t hub_n = s_.channels.hub_outputs.size();
-        const double* blade_values = r + hub_n;
+        // The tower's values follow the hub's and the blades'.
+        const double* blade_values = r + s_.channels.hub_outputs.size();
+        if (same_motion) // only the wind differs (DBEMT's input at a step's start): the
+                         // nodes' motion stands
+            for (const BladeMap& m : maps_) blade_values += frame_outputs + 2 * m.modes;
+        else
+            blade_values = read_motion(r, blade_values);
+        if (!rotor_) {
+            // The hub radius: blade 1's root from the apex (ElastoDyn's HubRad).
+            const double hub_radius = (frames_[0].r - motion_.hub_position).norm();
+            rotor_.emplace(s_.rotor, hub_radius);
+        }
+        // InflowWind's wind at each node's deflected position, then the tower's
+        // disturbance on top (AeroDyn's InflowOnBlade, DisturbedInflow).
+        const FreeWind free{s_.wind_field.get(), wind_time, wind_speed};
+        for (RotorMotion::Blade& b : motion_.blades)
+            free.at(b.position.data(), b.position.size(), b.wind.data());
+        tower_->read(blade_values, free);
+        tower_->disturb(motion_);
+        motion_key_.assign(r, r + nr);
+        motion_key_.push_back(wind_speed);
+        motion_key_.push_back(key_time);
+        return rotor();
+    }
+
+    /// The hub's and the blades' frames and the AeroDyn nodes' motion from the
+    /// values read (blade_values: the blades' first); returns where the tower's
+    /// values start.
+    const double* read_motion(const double* r, const double* blade_values) const {
         const double* inputs = r + ports_.outputs_read.size();
         const bool pitch_given = s_.channels.pitch >= 0;
         runtime::BodyFrame hub;
@@ -269,22 +296,7 @@ private:
                 node_omega_[k][j] = pm.w;
             }
         }
-        if (!rotor_) {
-            // The hub radius: blade 1's root from the apex (ElastoDyn's HubRad).
-            const double hub_radius = (frames_[0].r - hub.r).norm();
-            rotor_.emplace(s_.rotor, hub_radius);
-        }
-        // InflowWind's wind at each node's deflected position, then the tower's
-        // disturbance on top (AeroDyn's InflowOnBlade, DisturbedInflow).
-        const FreeWind free{s_.wind_field.get(), wind_time, wind_speed};
-        for (RotorMotion::Blade& b : motion_.blades)
-            free.at(b.position.data(), b.position.size(), b.wind.data());
-        tower_->read(blade_values, free);
-        tower_->disturb(motion_);
-        motion_key_.assign(r, r + nr);
-        motion_key_.push_back(wind_speed);
-        motion_key_.push_back(key_time);
-        return rotor();
+        return blade_values;
     }
 
     /// The rotor just solved, with DBEMT's filtered inductions and UA's
