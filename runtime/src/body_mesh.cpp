@@ -101,12 +101,23 @@ Vector3d point_position(const BodyFrame& f, const BodyPoint& pt) {
 PointMotion point_motion(const BodyFrame& f, const BodyPoint& pt) {
     const Vector3d th = elastic_angles(f, pt);
     const Matrix3d W = angle_rates(th);
-    Vector3d pd = Vector3d::Zero(), thd = Vector3d::Zero();
-    for (std::size_t k = 0; k < modes_of(f, pt); ++k) {
-        pd += dp_dq(f, pt, k) * f.qd[k];
+    // dp_dq's and displacement's sums in one pass (the same operations in the
+    // same order): each symmetric pair Φ¹_kj + Φ¹_jk is formed once.
+    const std::size_t n = modes_of(f, pt);
+    Vector3d pd = Vector3d::Zero(), thd = Vector3d::Zero(), p = Vector3d::Zero();
+    for (std::size_t k = 0; k < n; ++k) {
+        Vector3d dp = pt.phi[k], shape = pt.phi[k];
+        if (!pt.phi1.empty())
+            for (std::size_t j = 0; j < n; ++j) {
+                const Vector3d pair = pt.phi1[k * n + j] + pt.phi1[j * n + k];
+                dp += 0.5 * pair * f.q[j];
+                shape += 0.25 * pair * f.q[j];
+            }
+        pd += dp * f.qd[k];
         thd += pt.psi[k] * f.qd[k];
+        p += shape * f.q[k];
     }
-    const Vector3d rho = f.R * (pt.origin + displacement(f, pt));
+    const Vector3d rho = f.R * (pt.origin + p);
     PointMotion m;
     m.r = f.r + rho;
     m.v = f.v + f.w.cross(rho) + f.R * pd;
@@ -115,11 +126,23 @@ PointMotion point_motion(const BodyFrame& f, const BodyPoint& pt) {
     return m;
 }
 
+PointSite point_site(const BodyFrame& f, const BodyPoint& pt) {
+    PointSite s;
+    s.body = pt.origin + displacement(f, pt);
+    s.ground = f.r + f.R * s.body;
+    return s;
+}
+
 void add_point_load(const BodyFrame& f, const BodyPoint& pt, const Vector3d& force,
                     const Vector3d& moment, BodyLoad& load) {
+    add_point_load(f, pt, point_site(f, pt), force, moment, load);
+}
+
+void add_point_load(const BodyFrame& f, const BodyPoint& pt, const PointSite& site,
+                    const Vector3d& force, const Vector3d& moment, BodyLoad& load) {
     const std::size_t n = modes_of(f, pt);
     const Matrix3d W = angle_rates(elastic_angles(f, pt));
-    const Vector3d rho = pt.origin + displacement(f, pt); // body axes
+    const Vector3d& rho = site.body; // body axes
     const Vector3d fb = f.R.transpose() * force, mb = f.R.transpose() * moment;
     // The body frame's share: the wrench moved to the origin.
     load.force += fb;

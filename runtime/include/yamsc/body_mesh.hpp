@@ -68,4 +68,14 @@ struct BodyLoad {
 void add_point_load(const BodyFrame& frame, const BodyPoint& p, const Eigen::Vector3d& f,
                     const Eigen::Vector3d& m, BodyLoad& load);
 
+/// Where a point is: from the body's origin in body axes, and in ground axes
+/// (point_position's). A block that needs the position of the point it loads
+/// gives it to add_point_load, which then does not compute it again.
+struct PointSite {
+    Eigen::Vector3d body, ground;
+};
+PointSite point_site(const BodyFrame& frame, const BodyPoint& p);
+void add_point_load(const BodyFrame& frame, const BodyPoint& p, const PointSite& site,
+                    const Eigen::Vector3d& f, const Eigen::Vector3d& m, BodyLoad& load);
+
 } // namespace yamsc::runtime

@@ -35,13 +35,20 @@ double loss_constant_hub(const ElementInput& in) {
 }
 
 // At the tip (or the hub) with its loss on, AeroDyn fixes a = 1, a' = 0.
-bool fixed_inductions(const ElementInput& in, const BemOptions& opt) {
-    return (opt.tip_loss && nearly_equal(loss_constant_tip(in), 0.0)) ||
-           (opt.hub_loss && nearly_equal(loss_constant_hub(in), 0.0));
+bool fixed_inductions(double c_tip, double c_hub, const BemOptions& opt) {
+    return (opt.tip_loss && nearly_equal(c_tip, 0.0)) || (opt.hub_loss && nearly_equal(c_hub, 0.0));
 }
 
+// Below exp(-37) < 1e-16, acos returns acos(0)'s double (pi/2 - x rounds to it
+// for x below 1.7e-16): the factor far from the tip or the hub, and at the
+// regions' ends (sin phi about 1e-7), without its exponential and arc cosine.
+constexpr double negligible_exponent = -37.0;
+const double prandtl_far = 2.0 / pi * std::acos(0.0);
+
 double prandtl(double constant, double abs_sin_phi) {
-    return 2.0 / pi * std::acos(std::min(1.0, std::exp(-constant / abs_sin_phi)));
+    const double x = -constant / abs_sin_phi;
+    if (x < negligible_exponent) return prandtl_far;
+    return 2.0 / pi * std::acos(std::min(1.0, std::exp(x)));
 }
 
 double sign_of(double magnitude, double s) {
@@ -64,8 +71,9 @@ struct BrentResult {
     bool valid;
     const Residual* at_b;
 };
-BrentResult brent(const ElementInput& in, const BemOptions& opt, double lo, double hi, double flo,
-                  double fhi, bool hi_valid, Residual& rb) {
+BrentResult brent(const ElementTerms& el, double lo, double hi, double flo, double fhi,
+                  bool hi_valid, Residual& rb) {
+    const BemOptions& opt = el.opt;
     const double x_tolerance = opt.angle_tolerance;
     const double eps = std::numeric_limits<double>::epsilon();
     double a = lo, b = hi, fa = flo, fb = fhi;
@@ -121,7 +129,7 @@ BrentResult brent(const ElementInput& in, const BemOptions& opt, double lo, doub
         a = b;
         fa = fb;
         b += std::abs(d) <= tol ? (m > 0 ? tol : -tol) : d;
-        rb = bem_residual(in, opt, b);
+        rb = bem_residual(el, b);
         b_known = true;
         fb = rb.f;
         valid = rb.valid;
@@ -140,7 +148,9 @@ struct SolvedPhi {
 
 // AeroDyn's BEMT_UnCoupledSolve: the guess if it is still a root, else the
 // three regions in AeroDyn's order, the first bracketed valid root.
-SolvedPhi solve_phi(const ElementInput& in, const BemOptions& opt, Residual (&scratch)[4]) {
+SolvedPhi solve_phi(const ElementTerms& el, Residual (&scratch)[4]) {
+    const ElementInput& in = el.in;
+    const BemOptions& opt = el.opt;
     if (velocity_is_zero(in.vx)) return {0.0, true};
     if (velocity_is_zero(in.vy)) return {in.vx > 0 ? pi / 2 : -pi / 2, true};
 
@@ -148,7 +158,7 @@ SolvedPhi solve_phi(const ElementInput& in, const BemOptions& opt, Residual (&sc
     bool guess_is_valid = false;
     double f_guess = 0;
     if (in.guess_valid && !nearly_equal(guess, 0.0) && !nearly_equal(std::abs(guess), pi / 2)) {
-        const Residual& r = scratch[0] = bem_residual(in, opt, guess);
+        const Residual& r = scratch[0] = bem_residual(el, guess);
         if (std::abs(r.f) < opt.tolerance && r.valid) return {guess, true, &r};
         guess_is_valid = r.valid;
         f_guess = r.f;
@@ -169,8 +179,8 @@ SolvedPhi solve_phi(const ElementInput& in, const BemOptions& opt, Residual (&sc
 
     for (int i = 0; i < 3; ++i) {
         double lo = lower[i], hi = upper[i];
-        const Residual& r1 = scratch[1] = bem_residual(in, opt, lo);
-        const Residual& r2 = scratch[2] = bem_residual(in, opt, hi);
+        const Residual& r1 = scratch[1] = bem_residual(el, lo);
+        const Residual& r2 = scratch[2] = bem_residual(el, hi);
         double f1 = r1.f, f2 = r2.f;
         bool hi_valid = r2.valid;
         if (nearly_equal(f1, 0.0) && nearly_equal(f2, 0.0) && r1.valid && r2.valid)
@@ -194,7 +204,7 @@ SolvedPhi solve_phi(const ElementInput& in, const BemOptions& opt, Residual (&sc
                 f1 = f_guess;
             }
         }
-        const BrentResult root = brent(in, opt, lo, hi, f1, f2, hi_valid, scratch[3]);
+        const BrentResult root = brent(el, lo, hi, f1, f2, hi_valid, scratch[3]);
         if (root.valid) return {root.x, true, root.at_b};
         guess_is_valid = false; // AeroDyn carries Brent's last validity on
     }
@@ -222,19 +232,19 @@ BemOptions bem_options(const RotorInput& input) {
 
 namespace {
 
-// Prandtl's loss at |sin phi| = s.
-double prandtl_at(const ElementInput& in, const BemOptions& opt, double s) {
+// Prandtl's loss at |sin phi| = s for the loss constants c_tip, c_hub.
+double prandtl_at(double c_tip, double c_hub, const BemOptions& opt, double s) {
     if (nearly_equal(s, 0.0)) return 1.0;
     double F = 1.0;
-    if (opt.tip_loss) F *= prandtl(loss_constant_tip(in), s);
-    if (opt.hub_loss) F *= prandtl(loss_constant_hub(in), s);
+    if (opt.tip_loss) F *= prandtl(c_tip, s);
+    if (opt.hub_loss) F *= prandtl(c_hub, s);
     return F;
 }
 
 } // namespace
 
 double prandtl_loss(const ElementInput& in, const BemOptions& opt, double phi) {
-    return prandtl_at(in, opt, std::abs(std::sin(phi)));
+    return prandtl_at(loss_constant_tip(in), loss_constant_hub(in), opt, std::abs(std::sin(phi)));
 }
 
 double axial_induction_momentum(double k, double F) {
@@ -257,22 +267,34 @@ double induction_weight(double tsr) {
     return 0.5 * (1.0 - std::cos(pi * (x - lower) / (upper - lower)));
 }
 
+ElementTerms::ElementTerms(const ElementInput& in, const BemOptions& opt)
+    : in(in), opt(opt), c_tip(loss_constant_tip(in)), c_hub(loss_constant_hub(in)),
+      fixed(fixed_inductions(c_tip, c_hub, opt)),
+      no_inflow(velocity_is_zero(in.vx) || velocity_is_zero(in.vy)),
+      sigma(in.blades * in.chord / (2.0 * pi * in.r)), lambda(in.vy / in.vx) {}
+
 Residual bem_residual(const ElementInput& in, const BemOptions& opt, double phi) {
+    return bem_residual(ElementTerms(in, opt), phi);
+}
+
+Residual bem_residual(const ElementTerms& e, double phi) {
+    const ElementInput& in = e.in;
+    const BemOptions& opt = e.opt;
     Residual r;
-    if (fixed_inductions(in, opt)) {
+    if (e.fixed) {
         r.a = 1.0;
         return r;
     }
-    if (nearly_equal(phi, 0.0) || velocity_is_zero(in.vx) || velocity_is_zero(in.vy)) return r;
+    if (nearly_equal(phi, 0.0) || e.no_inflow) return r;
 
-    const Coefficients c = lookup(*in.airfoil, phi - in.theta);
+    const Coefficients c = coefficients(in, phi - in.theta);
     const double sphi = std::sin(phi), cphi = std::cos(phi);
     const double cx = c.cl * cphi + (opt.axial_drag ? c.cd * sphi : 0.0);
     const double cy = c.cl * sphi - (opt.tangential_drag ? c.cd * cphi : 0.0);
-    const double F = std::max(prandtl_at(in, opt, std::abs(sphi)), 1e-4);
+    const double F = std::max(prandtl_at(e.c_tip, e.c_hub, opt, std::abs(sphi)), 1e-4);
     r.F = F;
 
-    const double sigma = in.blades * in.chord / (2.0 * pi * in.r);
+    const double sigma = e.sigma;
     const double k = sigma * cx / (4.0 * F * sphi * sphi);
     r.k = k;
     const bool momentum = (phi > 0 && in.vx >= 0) || (phi < 0 && in.vx < 0);
@@ -302,7 +324,7 @@ Residual bem_residual(const ElementInput& in, const BemOptions& opt, double phi)
         }
     }
 
-    const double lambda = in.vy / in.vx;
+    const double lambda = e.lambda;
     if (momentum) {
         r.f = nearly_equal(a, 1.0) ? -cphi / lambda * (1.0 - kp)
                                    : sphi / (1.0 - a) - cphi / lambda * (1.0 - kp);
@@ -315,16 +337,17 @@ Residual bem_residual(const ElementInput& in, const BemOptions& opt, double phi)
     return r;
 }
 
-ElementSolution solve_element(const ElementInput& in, const BemOptions& opt, double rho) {
+ElementSolution solve_inductions(const ElementInput& in, const BemOptions& opt) {
     ElementSolution s;
     Residual scratch[4];
-    const SolvedPhi solved = solve_phi(in, opt, scratch);
+    const ElementTerms terms(in, opt);
+    const SolvedPhi solved = solve_phi(terms, scratch);
     s.phi_bem = solved.phi;
     s.valid = solved.valid;
 
     double a = 0, ap = 0;
     if (solved.valid) {
-        const Residual r = solved.residual ? *solved.residual : bem_residual(in, opt, solved.phi);
+        const Residual r = solved.residual ? *solved.residual : bem_residual(terms, solved.phi);
         s.F = r.F;
         if (r.valid) {
             a = std::clamp(r.a, -1.0, 1.5);
@@ -333,9 +356,15 @@ ElementSolution solve_element(const ElementInput& in, const BemOptions& opt, dou
     }
     s.a_bem = a;
     s.ap_bem = ap;
+    return s;
+}
+
+void finish_element(const ElementInput& in, const BemOptions& opt, double rho, ElementSolution& s) {
+    double a = s.a_bem, ap = s.ap_bem;
     // Pitt/Peters: more induction on the downwind side of the skewed wake. At a
     // fixed-induction node (tip or hub) AeroDyn leaves a = 1.
-    if (opt.skew_redistribution && !fixed_inductions(in, opt)) {
+    if (opt.skew_redistribution &&
+        !fixed_inductions(loss_constant_tip(in), loss_constant_hub(in), opt)) {
         double chi = (0.6 * a + 1.0) * in.chi0;
         chi = std::remainder(chi, 2.0 * pi);
         const double t = std::abs(chi) > pi / 2 ? (chi >= 0 ? 1.0 : -1.0) : std::tan(chi / 2.0);
@@ -344,6 +373,11 @@ ElementSolution solve_element(const ElementInput& in, const BemOptions& opt, dou
     a *= in.weight;
     ap *= in.weight;
     element_loads(in, opt, rho, a, ap, s);
+}
+
+ElementSolution solve_element(const ElementInput& in, const BemOptions& opt, double rho) {
+    ElementSolution s = solve_inductions(in, opt);
+    finish_element(in, opt, rho, s);
     return s;
 }
 

@@ -44,29 +44,46 @@ BemRotor::BemRotor(const RotorInput& input, double hub_radius)
             z[j] = z[j - 1] + (offset(blade[j]) - offset(blade[j - 1])).norm();
         z_local_.push_back(std::move(z));
     }
+    for (const Airfoil& a : input.airfoils) {
+        polars_.emplace_back();
+        if (!a.tables.empty() && !a.tables.front().alpha.empty())
+            polars_.back().emplace(a.tables.front());
+    }
     result_.blades.resize(input.blades.size());
     for (std::size_t k = 0; k < input.blades.size(); ++k)
         result_.blades[k].resize(input.blades[k].size());
 }
 
-const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind, bool warm_start) {
+const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind, bool warm_start,
+                                      bool loads) {
     const bool cached = warm_start && solved_ && frozen_.empty();
-    if (cached && cache_.recall(motion, wind, result_)) return result_;
+    if (cached && cache_.recall(motion, wind, result_)) {
+        if (loads && !result_.loads) finish(motion);
+        return result_;
+    }
     if (!cached) cache_.clear();
     set_inputs(motion, wind, warm_start);
-    const double rho = input_.air_density;
     for (std::size_t k = 0; k < result_.blades.size(); ++k)
         for (std::size_t j = 0; j < result_.blades[k].size(); ++j) {
             NodeResult& n = result_.blades[k][j];
             if (frozen_.empty())
-                n.bem = solve_element(n.input, options_, rho);
+                n.bem = solve_inductions(n.input, options_);
             else
                 frozen_element(n, frozen_[k][j]);
         }
-    integrate(motion);
+    result_.loads = !frozen_.empty(); // a frozen wake's nodes have their loads
+    if (loads || result_.loads) finish(motion);
     if (cached) cache_.keep(result_);
     solved_ = true;
     return result_;
+}
+
+void BemRotor::finish(const RotorMotion& motion) {
+    if (!result_.loads)
+        for (auto& nodes : result_.blades)
+            for (NodeResult& n : nodes)
+                finish_element(n.input, options_, input_.air_density, n.bem);
+    integrate(motion);
 }
 
 const RotorResult& BemRotor::element_inputs(const RotorMotion& motion, const Vec& wind) {
@@ -93,7 +110,7 @@ void BemRotor::set_inputs(const RotorMotion& motion, const Vec& wind, bool warm_
         for (std::size_t j = 0; j < input_.blades[k].size(); ++j) {
             const BladeNode& n = input_.blades[k][j];
             NodeResult& out = result_.blades[k][j];
-            const Vec angles = euler_extract(b.axes[j].transpose() * no_pitch.transpose());
+            const Vec angles = euler_extract(b.axes[j].transpose() * no_pitch.transpose(), false);
             const Mat annulus = euler_construct(Vec(0, angles[1], 0)) * no_pitch;
             out.position = b.position[j];
             out.x = annulus.row(0).transpose();
@@ -118,6 +135,8 @@ void BemRotor::set_inputs(const RotorMotion& motion, const Vec& wind, bool warm_
             in.theta = -angles[2];
             in.chord = n.chord;
             in.airfoil = &input_.airfoils[static_cast<std::size_t>(n.airfoil)];
+            const auto& polar = polars_[static_cast<std::size_t>(n.airfoil)];
+            in.polar = polar ? &*polar : nullptr;
             const bool warm = warm_start && solved_;
             in.guess_valid = warm && out.bem.valid;
             in.phi_guess = warm ? out.bem.phi_bem : 0.0;
@@ -189,6 +208,7 @@ const RotorResult& BemRotor::integrate(const RotorMotion& motion) {
         }
     }
     RotorResult& r = result_;
+    r.loads = true;
     const double v_dot_x = r.v_avg_xh, r_max = r.r_max;
     r.fxh = force.dot(x_disk);
     r.mxh = moment.dot(x_disk);

@@ -224,21 +224,49 @@ private:
                              bool inputs_only = false) const {
         const Vector3d uniform(wind_speed, 0, 0);
         auto rotor = [&]() -> const RotorResult& {
-            return inputs_only ? rotor_->element_inputs(motion_, uniform)
-                               : rotor_->evaluate(motion_, uniform, true);
+            return inputs_only
+                       ? rotor_->element_inputs(motion_, uniform)
+                       : rotor_->evaluate(motion_, uniform, true, !dynamics_->replaces_loads());
         };
         // The values and wind of the last call again (a step's measurement, first
         // stage and update read the same): its motion stands (every input of it is
         // in the key; the wind field's time too, unless the field is steady).
         const std::size_t nr = ports_.outputs_read.size() + ports_.inputs_read.size();
         const double key_time = s_.wind_field && !s_.wind_field->steady() ? wind_time : 0.0;
-        if (rotor_ && motion_key_.size() == nr + 2 && motion_key_[nr] == wind_speed &&
-            motion_key_[nr + 1] == key_time &&
-            std::memcmp(r, motion_key_.data(), nr * sizeof(double)) == 0)
+        const bool same_motion = rotor_ && motion_key_.size() == nr + 2 &&
+                                 std::memcmp(r, motion_key_.data(), nr * sizeof(double)) == 0;
+        if (same_motion && motion_key_[nr] == wind_speed && motion_key_[nr + 1] == key_time)
             return rotor();
         motion_key_.clear();
-        const std::size_t hub_n = s_.channels.hub_outputs.size();
-        const double* blade_values = r + hub_n;
+        // The tower's values follow the hub's and the blades'.
+        const double* blade_values = r + s_.channels.hub_outputs.size();
+        if (same_motion) // only the wind differs (DBEMT's input at a step's start): the
+                         // nodes' motion stands
+            for (const BladeMap& m : maps_) blade_values += frame_outputs + 2 * m.modes;
+        else
+            blade_values = read_motion(r, blade_values);
+        if (!rotor_) {
+            // The hub radius: blade 1's root from the apex (ElastoDyn's HubRad).
+            const double hub_radius = (frames_[0].r - motion_.hub_position).norm();
+            rotor_.emplace(s_.rotor, hub_radius);
+        }
+        // InflowWind's wind at each node's deflected position, then the tower's
+        // disturbance on top (AeroDyn's InflowOnBlade, DisturbedInflow).
+        const FreeWind free{s_.wind_field.get(), wind_time, wind_speed};
+        for (RotorMotion::Blade& b : motion_.blades)
+            free.at(b.position.data(), b.position.size(), b.wind.data());
+        tower_->read(blade_values, free);
+        tower_->disturb(motion_);
+        motion_key_.assign(r, r + nr);
+        motion_key_.push_back(wind_speed);
+        motion_key_.push_back(key_time);
+        return rotor();
+    }
+
+    /// The hub's and the blades' frames and the AeroDyn nodes' motion from the
+    /// values read (blade_values: the blades' first); returns where the tower's
+    /// values start.
+    const double* read_motion(const double* r, const double* blade_values) const {
         const double* inputs = r + ports_.outputs_read.size();
         const bool pitch_given = s_.channels.pitch >= 0;
         runtime::BodyFrame hub;
@@ -268,22 +296,7 @@ private:
                 node_omega_[k][j] = pm.w;
             }
         }
-        if (!rotor_) {
-            // The hub radius: blade 1's root from the apex (ElastoDyn's HubRad).
-            const double hub_radius = (frames_[0].r - hub.r).norm();
-            rotor_.emplace(s_.rotor, hub_radius);
-        }
-        // InflowWind's wind at each node's deflected position, then the tower's
-        // disturbance on top (AeroDyn's InflowOnBlade, DisturbedInflow).
-        const FreeWind free{s_.wind_field.get(), wind_time, wind_speed};
-        for (RotorMotion::Blade& b : motion_.blades)
-            free.at(b.position.data(), b.position.size(), b.wind.data());
-        tower_->read(blade_values, free);
-        tower_->disturb(motion_);
-        motion_key_.assign(r, r + nr);
-        motion_key_.push_back(wind_speed);
-        motion_key_.push_back(key_time);
-        return rotor();
+        return blade_values;
     }
 
     /// The rotor just solved, with DBEMT's filtered inductions and UA's
@@ -386,14 +399,15 @@ private:
         }
         // Gathered per structural node: the forces, and their moments about it.
         for (const LoadedNode& n : m.loaded) {
-            const Vector3d at = runtime::point_position(frames_[k], points[n.point]);
+            const runtime::PointSite site = runtime::point_site(frames_[k], points[n.point]);
+            const Vector3d& at = site.ground;
             Vector3d f = Vector3d::Zero(), mo = Vector3d::Zero();
             for (std::size_t j = 0; j < nodes.size(); ++j) {
                 if (m.nearest[j] != n.point) continue;
                 f += force[j];
                 mo += moment[j] + (nodes[j].position - at).cross(force[j]);
             }
-            runtime::add_point_load(frames_[k], points[n.point], f, mo, load);
+            runtime::add_point_load(frames_[k], points[n.point], site, f, mo, load);
         }
     }
 

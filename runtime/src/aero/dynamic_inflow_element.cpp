@@ -60,7 +60,7 @@ ElementSolution element_with_induction(const ElementInput& in, const BemOptions&
     s.phi = std::atan2(wx, wy);
     s.alpha = s.phi - in.theta;
     s.vrel = std::sqrt(wx * wx + wy * wy);
-    set_coefficients(s, lookup(*in.airfoil, s.alpha), in.chord, rho, opt);
+    set_coefficients(s, coefficients(in, s.alpha), in.chord, rho, opt);
     return s;
 }
 

@@ -90,6 +90,7 @@ void ElementDynamics::apply(BemRotor& rotor, const RotorMotion& motion,
             omega_key_.insert(omega_key_.end(), w.data(), w.data() + 3);
     if (rotor.recall_applied(generation_, omega_key_)) return;
     auto& blades = rotor.nodes();
+    if (!replaces_loads() && !rotor.result().loads) rotor.complete_loads(motion);
     if (ua_on_ && ua_inner_.empty()) locate_ua_span(rotor.result());
     const double rho = input_.air_density;
     std::size_t e = 0;
@@ -98,7 +99,7 @@ void ElementDynamics::apply(BemRotor& rotor, const RotorMotion& motion,
             NodeResult& n = blades[k][j];
             // calculate_Inductions_from_DBEMT, then the skew correction and the
             // low-TSR blend on the filtered induction.
-            if (dbemt_ && x_.initialized) {
+            if (replaces_loads()) {
                 const InductionFactors f =
                     filtered_induction(*dbemt_, u_next_, x_, e, n.input, options_, n.bem);
                 n.bem = element_with_induction(n.input, options_, rho, f, n.bem);
@@ -171,6 +172,11 @@ void ElementDynamics::sample(const RotorResult& r, DbemtInput& u, bool stale_phi
 }
 
 void ElementDynamics::step_unsteady(double dt) {
+    // The step's own t_next - t, which differs from the last step's in the last
+    // bits in about half the steps: there the chain apply() evaluated at the
+    // step's start (the memo) is not the one the update takes. A constant dt
+    // (AeroDyn's p%dt) would save that chain but move a turbulent run's
+    // trajectory by that round-off, which the closed loop amplifies.
     ua_dt_ = dt;
     ++generation_;
     std::size_t e = 0;
@@ -183,7 +189,7 @@ void ElementDynamics::step_unsteady(double dt) {
             if (ua_settings_.model == UnsteadyModel::oye)
                 step(af, ua_settings_, chord, dt, ua_t_[e], ua_next_[e], oye_[e]);
             else if (step_ > 0) // UA_UpdateStates leaves UA_Mod 3 alone at n = 0
-                step(af, ua_settings_, chord, dt, ua_t_[e], mp_[e], mp_memo_[e]);
+                advance(af, ua_settings_, chord, dt, ua_t_[e], mp_[e], mp_memo_[e]);
         }
 }
 

@@ -27,6 +27,9 @@ public:
 
     /// Whether the rotor input asks for DBEMT or UA at all.
     bool active() const { return dbemt_on_ || ua_on_; }
+    /// Whether apply() replaces every node's inductions and loads (DBEMT's, once
+    /// started): the rotor's steady solve then needs only its roots and inductions.
+    bool replaces_loads() const { return dbemt_ && x_.initialized; }
     /// Counts the changes of the states (each update changes them).
     std::uint64_t generation() const { return generation_; }
 

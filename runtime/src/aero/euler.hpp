@@ -28,8 +28,10 @@ inline Eigen::Matrix3d euler_construct(const Eigen::Vector3d& t) {
     return m;
 }
 
-/// NWTC's EulerExtract, the inverse of euler_construct.
-inline Eigen::Vector3d euler_extract(const Eigen::Matrix3d& m) {
+/// NWTC's EulerExtract, the inverse of euler_construct. Without `about_x` the
+/// angle about x is left 0 (its arc tangent is the third of the extraction's;
+/// the BEM's node frames need only the angles about y and z).
+inline Eigen::Vector3d euler_extract(const Eigen::Matrix3d& m, bool about_x = true) {
     double cy = std::hypot(m(0, 0), m(1, 0));
     Eigen::Vector3d t;
     if (euler_nearly_zero(cy)) {
@@ -42,6 +44,10 @@ inline Eigen::Vector3d euler_extract(const Eigen::Matrix3d& m) {
     double cz = std::cos(t[2]), sz = std::sin(t[2]);
     cy = euler_nearly_zero(cz) ? std::copysign(cy, -m(1, 0) / sz) : std::copysign(cy, m(0, 0) / cz);
     t[1] = std::atan2(m(2, 0), cy);
+    if (!about_x) {
+        t[0] = 0;
+        return t;
+    }
     const double cx = sz * m(0, 1) + cz * m(1, 1), sx = sz * m(0, 2) + cz * m(1, 2);
     t[0] = std::atan2(sx, cx);
     return t;

@@ -2,14 +2,25 @@
 
 #include "yamsc/aero/bem_rotor.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 namespace yamsc::aero {
 
 namespace {
 
-template <class M> void append(std::vector<double>& key, const M& m) {
-    key.insert(key.end(), m.data(), m.data() + m.size());
+template <class M> double* put(double* key, const M& m) {
+    return std::copy(m.data(), m.data() + m.size(), key);
+}
+
+// The key's length: the wind, the hub's motion, and per blade its root axes,
+// its nodes' count, motion and axes, and its winds' count and winds.
+std::size_t key_size(const RotorMotion& motion) {
+    std::size_t n = 3 + 3 + 9 + 3;
+    for (const RotorMotion::Blade& b : motion.blades)
+        n += 9 + 1 + 3 * b.position.size() + 3 * b.velocity.size() + 9 * b.axes.size() + 1 +
+             3 * b.wind.size();
+    return n;
 }
 
 bool same(const std::vector<double>& a, const std::vector<double>& b) {
@@ -21,19 +32,20 @@ bool same(const std::vector<double>& a, const std::vector<double>& b) {
 
 bool RotorCache::recall(const RotorMotion& motion, const Eigen::Vector3d& wind,
                         RotorResult& result) {
-    key_.clear();
-    append(key_, wind);
-    append(key_, motion.hub_position);
-    append(key_, motion.hub_axes);
-    append(key_, motion.hub_angular_velocity);
+    key_.resize(key_size(motion)); // its storage is reused
+    double* k = key_.data();
+    k = put(k, wind);
+    k = put(k, motion.hub_position);
+    k = put(k, motion.hub_axes);
+    k = put(k, motion.hub_angular_velocity);
     for (const RotorMotion::Blade& b : motion.blades) {
-        append(key_, b.root_axes);
-        key_.push_back(static_cast<double>(b.position.size()));
-        for (const auto& p : b.position) append(key_, p);
-        for (const auto& v : b.velocity) append(key_, v);
-        for (const auto& a : b.axes) append(key_, a);
-        key_.push_back(static_cast<double>(b.wind.size()));
-        for (const auto& w : b.wind) append(key_, w);
+        k = put(k, b.root_axes);
+        *k++ = static_cast<double>(b.position.size());
+        for (const auto& p : b.position) k = put(k, p);
+        for (const auto& v : b.velocity) k = put(k, v);
+        for (const auto& a : b.axes) k = put(k, a);
+        *k++ = static_cast<double>(b.wind.size());
+        for (const auto& w : b.wind) k = put(k, w);
     }
     ++clock_;
     for (int i = 0; i < static_cast<int>(slots_.size()); ++i) {

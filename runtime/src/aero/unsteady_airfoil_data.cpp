@@ -39,6 +39,7 @@ UnsteadyAirfoil::UnsteadyAirfoil(const Airfoil& airfoil) {
     has_cm_ = !t.cm.empty();
     cm_ = has_cm_ ? t.cm : std::vector<double>(t.alpha.size(), 0.0);
     cutout_blend_ = std::max(0.0, std::abs(k_.UACutout) - 5 * deg);
+    if (alpha_.size() > 1) index_ = SegmentIndex(alpha_);
 
     // The separation function on Cl and the fully separated Cl (AirfoilInfo's
     // ComputeUASeparationFunction_onCl; Oye's and HGM's models).
@@ -101,9 +102,7 @@ UnsteadyAirfoil::Point UnsteadyAirfoil::at(double alpha) const {
     const auto& x = alpha_;
     if (x.size() == 1) return {cl_[0], cd_[0], cm_[0], std::clamp(f_st_[0], 0.0, 1.0), cl_fs_[0]};
     const double a = std::clamp(wrap_pi(alpha), x.front(), x.back());
-    const std::size_t i =
-        std::min<std::size_t>(std::upper_bound(x.begin(), x.end(), a) - x.begin(), x.size() - 1) -
-        1;
+    const std::size_t i = index_.segment(x, a);
     const double w = (a - x[i]) / (x[i + 1] - x[i]);
     auto in = [&](const std::vector<double>& v) { return v[i] + w * (v[i + 1] - v[i]); };
     return {in(cl_), in(cd_), in(cm_), std::clamp(in(f_st_), 0.0, 1.0), in(cl_fs_)};

@@ -336,18 +336,37 @@ UnsteadyOutput evaluate(const UnsteadyAirfoil& af, const UnsteadySettings& s, do
     return outputs(af, s, chord, u, x, &e.chain);
 }
 
-UnsteadyOutput step(const UnsteadyAirfoil& af, const UnsteadySettings& s, double chord, double dt,
-                    const UnsteadyInput& in, MinnemaPierceState& x, MinnemaPierceMemo& memo) {
-    require_model(s);
-    const UnsteadyInput u = fixed(in);
+namespace {
+
+// The chain of (u, dt) from the state x: the memo's, else computed. The memo is
+// emptied, as the state is about to change.
+Chain chain_for_step(const UnsteadyAirfoil& af, const UnsteadySettings& s, double chord, double dt,
+                     const UnsteadyInput& u, const MinnemaPierceState& x, MinnemaPierceMemo& memo) {
     const Chain* kept = nullptr;
     for (const auto& e : memo.entries)
         if (same_input(e, u, dt)) kept = &e.chain;
     const Chain kc = kept ? *kept : kelvin_chain(af, s, chord, dt, u, x);
-    memo = MinnemaPierceMemo{}; // the state changes
+    memo = MinnemaPierceMemo{};
+    return kc;
+}
+
+} // namespace
+
+UnsteadyOutput step(const UnsteadyAirfoil& af, const UnsteadySettings& s, double chord, double dt,
+                    const UnsteadyInput& in, MinnemaPierceState& x, MinnemaPierceMemo& memo) {
+    require_model(s);
+    const UnsteadyInput u = fixed(in);
+    const Chain kc = chain_for_step(af, s, chord, dt, u, x, memo);
     const UnsteadyOutput y = outputs(af, s, chord, u, x, x.first_pass ? nullptr : &kc);
     update(af.constants(), kc, x);
     return y;
+}
+
+void advance(const UnsteadyAirfoil& af, const UnsteadySettings& s, double chord, double dt,
+             const UnsteadyInput& in, MinnemaPierceState& x, MinnemaPierceMemo& memo) {
+    require_model(s);
+    const UnsteadyInput u = fixed(in);
+    update(af.constants(), chain_for_step(af, s, chord, dt, u, x, memo), x);
 }
 
 } // namespace yamsc::aero

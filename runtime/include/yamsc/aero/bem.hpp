@@ -41,6 +41,9 @@ struct ElementInput {
     double theta = 0; // twist + pitch [rad]
     double chord = 0; // [m]
     const Airfoil* airfoil = nullptr;
+    // The airfoil's first table with its segment index (BemRotor sets it), or
+    // null: the table is searched (the same coefficients).
+    const IndexedPolar* polar = nullptr;
     // Skewed wake: chi0 the angle between the rotor axis and the disk-averaged
     // relative wind, psi the blade's azimuth from the skew plane (AeroDyn's psi_s),
     // tip_ratio r / R_tip [rad, rad, -].
@@ -70,6 +73,11 @@ struct ElementSolution {
     bool valid = false; // a BEM root was found (else the wake-free phi)
 };
 
+// The element's steady coefficients at alpha: its polar's.
+inline Coefficients coefficients(const ElementInput& in, double alpha) {
+    return in.polar ? in.polar->at(alpha) : lookup(*in.airfoil, alpha);
+}
+
 // The residual of Ning's equation at phi and the inductions it implies (before
 // the limits and corrections); exposed for tests.
 struct Residual {
@@ -78,9 +86,29 @@ struct Residual {
 };
 Residual bem_residual(const ElementInput& in, const BemOptions& opt, double phi);
 
+// What every residual of one element shares (its loss constants, solidity,
+// Vy/Vx), computed once per solve with the operations bem_residual would repeat.
+struct ElementTerms {
+    ElementTerms(const ElementInput& in, const BemOptions& opt);
+    const ElementInput& in;
+    const BemOptions& opt;
+    double c_tip, c_hub; // Prandtl's loss constants, tip and hub
+    bool fixed;          // AeroDyn's FixedInductions: a = 1, a' = 0
+    bool no_inflow;      // Vx or Vy below 1 mm/s
+    double sigma;        // B c / (2 pi r)
+    double lambda;       // Vy / Vx
+};
+Residual bem_residual(const ElementTerms& element, double phi);
+
 // Solves the element: the residual's root, the inductions, the coefficients and
 // the loads per length for air density rho. Allocates nothing.
 ElementSolution solve_element(const ElementInput& in, const BemOptions& opt, double rho);
+// solve_element in two parts. solve_inductions: the root and the inductions at
+// it (phi_bem, valid, F, a_bem, ap_bem), all DBEMT needs of the steady solve;
+// finish_element: the skew correction, the low-TSR blend, the inflow angle,
+// coefficients and loads (what DBEMT's filtered inductions replace).
+ElementSolution solve_inductions(const ElementInput& in, const BemOptions& opt);
+void finish_element(const ElementInput& in, const BemOptions& opt, double rho, ElementSolution& s);
 
 // The element at given inductions a, a' (after every correction): its inflow
 // angle, coefficients and loads per length, written into s (s's BEM root and

@@ -9,6 +9,7 @@
 // (DiskAvgValues), solves each element (bem.hpp) and integrates the rotor's
 // loads about the hub (RtFld*).
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 #include "yamsc/aero/bem.hpp"
@@ -36,6 +37,9 @@ struct RotorResult {
     double skew = 0;                             // RtSkew [rad]
     double v_avg_xh = 0;                         // RtVAvgxh [m/s]
     double r_max = 0;                            // largest local radius [m]
+    // The nodes' loads and the integrals are those of their solutions; false:
+    // only the roots and inductions are (BemRotor::evaluate without loads).
+    bool loads = true;
 };
 
 /// Ground axes throughout; orientations as rotation matrices whose columns are
@@ -63,8 +67,11 @@ public:
     /// The rotor in uniform wind `wind` (ground axes) at `motion`; warm_start
     /// tries each node's previous inflow angle first (AeroDyn's constraint
     /// state). The result's storage is reused.
+    /// Without `loads`, each node only its root and inductions (solve_inductions):
+    /// a caller that replaces the inductions (DBEMT) needs no more; an evaluate
+    /// with loads at a point kept without them completes them.
     const RotorResult& evaluate(const RotorMotion& motion, const Eigen::Vector3d& wind,
-                                bool warm_start);
+                                bool warm_start, bool loads = true);
     const RotorResult& result() const { return result_; }
     /// The nodes' element inputs at `motion` (their frames, relative winds, radii,
     /// the disk's average wind, skew and TSR) without solving the BEM: the nodes'
@@ -85,6 +92,8 @@ public:
     /// solutions, after a caller replaced them (dynamic inflow, unsteady
     /// airfoil coefficients); `motion` as given to the last evaluate.
     const RotorResult& integrate(const RotorMotion& motion);
+    /// The nodes' loads and the integrals of an evaluate without loads.
+    void complete_loads(const RotorMotion& motion) { finish(motion); }
     /// The nodes' results, for such a replacement.
     std::vector<std::vector<NodeResult>>& nodes() { return result_.blades; }
     /// A caller replacing the nodes keeps its result with the solution just
@@ -109,6 +118,7 @@ private:
     double hub_radius_;
     BemOptions options_;
     std::vector<std::vector<double>> z_local_;
+    std::vector<std::optional<IndexedPolar>> polars_; // per airfoil: its first table, indexed
     RotorResult result_;
     bool solved_ = false;
     struct Induced {
@@ -117,6 +127,7 @@ private:
     std::vector<std::vector<Induced>> frozen_; // [blade][node]; empty: the BEM is solved
     RotorCache cache_;
     void set_inputs(const RotorMotion& motion, const Eigen::Vector3d& wind, bool warm_start);
+    void finish(const RotorMotion& motion); // the loads (finish_element) and integrals
     void frozen_element(NodeResult& n, const Induced& induced) const;
 };
 

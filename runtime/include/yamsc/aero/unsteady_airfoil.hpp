@@ -10,6 +10,7 @@
 // Per-airfoil data (polar columns, the separation function of Oye's model) is computed
 // once by UnsteadyAirfoil; a step allocates nothing.
 #include "yamsc/aero/airfoil.hpp"
+#include "yamsc/aero/polar.hpp"
 #include "yamsc/aero/rotor_input.hpp"
 
 #include <vector>
@@ -70,6 +71,7 @@ public:
 
 private:
     std::vector<double> alpha_, cl_, cd_, cm_, f_st_, cl_fs_;
+    SegmentIndex index_;
     UnsteadyConstants k_;
     bool has_cm_ = false, has_unsteady_ = false, constant_ = false;
     double cutout_blend_ = 0;
@@ -142,6 +144,10 @@ UnsteadyOutput evaluate(const UnsteadyAirfoil& airfoil, const UnsteadySettings& 
 UnsteadyOutput step(const UnsteadyAirfoil& airfoil, const UnsteadySettings& settings, double chord,
                     double dt, const UnsteadyInput& u, MinnemaPierceState& state,
                     MinnemaPierceMemo& memo);
+// step() without its outputs: the state of t alone (AeroDyn's UpdateStates; the
+// outputs at t are apply()'s evaluate of the same chain).
+void advance(const UnsteadyAirfoil& airfoil, const UnsteadySettings& settings, double chord,
+             double dt, const UnsteadyInput& u, MinnemaPierceState& state, MinnemaPierceMemo& memo);
 
 // UA_Mod 6 state of one element: x4 (f, the separation point), FirstPass, and the
 // derivative history of the multistep integrators (OtherState%xdot, %n).
