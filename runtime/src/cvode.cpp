@@ -186,6 +186,12 @@ CvodeStats simulate_cvode(const ModelView& view, const std::vector<double>& x0,
         realtype reached = grid[k - 1];
         const int flag = CVode(mem, grid[k], x.get(), &reached, CV_NORMAL);
         check(callbacks, flag, "step", false, reached);
+        if (view.project) {
+            // Back onto the constraints at each output point, and CVODE restarted
+            // from there (its history belongs to the unprojected solution).
+            view.project(grid[k], state, callbacks.inputs_at(grid[k]));
+            check(callbacks, CVodeReInit(mem, grid[k], x.get()), "CVodeReInit");
+        }
         keep_going = !observe || observe(grid[k], state);
     }
 

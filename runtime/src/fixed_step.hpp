@@ -99,12 +99,13 @@ std::size_t simulate_fixed_step(const char* method, const ModelView& view,
         if (view.update_discrete) x_start = x;
         stepper(t, grid[k] - t, x.data(), derivative.known());
         if (!all_finite(x)) throw_diverged(method, grid[k], dt);
+        if (view.nu > 0 && (view.project || view.update_discrete)) u(grid[k], u_end.data());
+        // Back onto the constraints. ABM4's history needs nothing: each step's
+        // newest derivative is evaluated at its start, the projected point.
+        if (view.project) view.project(grid[k], x.data(), u_end.data());
         if (view.update_discrete) {
             // The blocks' discrete states, from t to grid[k] (load_block.hpp).
-            if (view.nu > 0) {
-                u(t, u_start.data());
-                u(grid[k], u_end.data());
-            }
+            if (view.nu > 0) u(t, u_start.data());
             view.update_discrete(t, x_start.data(), u_start.data(), grid[k], x.data(),
                                  u_end.data());
         }

@@ -316,6 +316,17 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
     v.output_names = base->output_names;
     v.output_names.insert(v.output_names.end(), out_names.begin(), out_names.end());
     v.ny = static_cast<int>(v.output_names.size());
+    // The constraint rows read q, q' and u only, as before the block.
+    v.nh = base->nh;
+    v.nc = base->nc;
+    v.constraint_names = base->constraint_names;
+    v.constraint_dependent = base->constraint_dependent;
+    v.constraint_sources = base->constraint_sources;
+    v.constraint_residuals = base->constraint_residuals;
+    v.constraint_matrix = base->constraint_matrix;
+    v.constraint_bias = base->constraint_bias;
+    v.constraint_jacobians = base->constraint_jacobians;
+    v.project = base->project;
     v.nz = base->nz + c.nz;
     v.block_state_names = base->block_state_names;
     v.block_initial_states = base->block_initial_states;

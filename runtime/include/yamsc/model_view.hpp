@@ -83,6 +83,17 @@ struct ModelView {
                        const double* lambda, const double* a, double* dBTl_dq, double* dacc_dq,
                        double* dacc_dqd, double* dBTl_du, double* dacc_du)>
         constraint_jacobians;
+    // d(M(q, t, u) a)/dq at a given a (nq x nq row-major): the term the constrained
+    // rhs_jacobian needs at the constrained q'' (optional: without it the runtime
+    // takes central differences of mass_matrix).
+    std::function<void(double t, const double* q, const double* a, const double* u, double* dMa_dq)>
+        mass_action_jacobian;
+
+    // Called by the integrators after each accepted step at its end (before
+    // update_discrete, which then sees the projected state): moves x in place
+    // back onto the constraints (q onto Phi = 0, q' onto r = 0; constraints.hpp).
+    // Empty without constraints.
+    std::function<void(double t, double* x, const double* u)> project;
 
     int nx() const { return 2 * nq + nz; }
 };
