@@ -63,6 +63,7 @@ struct kw_output : TAO_PEGTL_KEYWORD("output") {};
 struct kw_point : TAO_PEGTL_KEYWORD("point") {};
 struct kw_external : TAO_PEGTL_KEYWORD("external") {};
 struct kw_load : TAO_PEGTL_KEYWORD("load") {};
+struct kw_constraint : TAO_PEGTL_KEYWORD("constraint") {};
 
 struct kw_order : TAO_PEGTL_KEYWORD("order") {};
 struct kw_deg : TAO_PEGTL_KEYWORD("deg") {};
@@ -85,7 +86,7 @@ struct kw_damping : TAO_PEGTL_KEYWORD("damping") {};
 struct statement_keyword
     : p::sor<kw_model, kw_param, kw_input, kw_dof, kw_gravity, kw_rigid, kw_flexible, kw_joint,
              kw_force, kw_torque, kw_spring, kw_genforce, kw_approx, kw_linearize, kw_initial,
-             kw_output, kw_point, kw_external, kw_load> {};
+             kw_output, kw_point, kw_external, kw_load, kw_constraint> {};
 
 struct digits : p::plus<p::digit> {};
 struct mantissa
@@ -216,7 +217,10 @@ struct line_expression : expression<line_context> {};
 template <class Rule, bool InBlock> struct recoverable : p::seq<Rule> {};
 
 struct item_separator : p::sor<blank, newline, comment, p::one<';'>> {};
-struct block_stop : p::sor<p::one<'}'>, p::eof, statement_keyword> {};
+/// A `}`, the end, or a statement's keyword (the block was not closed), unless the keyword is
+/// the name of a property (`joint = revolute` in a constraint).
+struct block_stop
+    : p::sor<p::one<'}'>, p::eof, p::seq<statement_keyword, p::not_at<blanks, p::one<'='>>>> {};
 template <class Item> struct item_line : p::seq<Item, p::must<end_of_statement>> {};
 template <class Item>
 struct block_items : p::seq<p::star<item_separator>,
@@ -529,15 +533,33 @@ struct load_block : p::seq<load_open, block_items<load_item>, p::must<load_close
 struct load_statement : p::seq<kw_load, blanks, p::must<load_kind>, blanks, p::must<load_name>,
                                blanks, p::must<load_block>> {};
 
+// ---------------------------------------------------------------- constraints
+
+/// `constraint loop closing { a = crank.tip; b = rocker; joint = revolute; axis = z }`: rows
+/// the coordinates must satisfy (docs/language.md, Constraints). The same shape as a load
+/// block: a kind, a name and `role = value` properties; the checker knows the kinds
+/// (model/constraint_kinds.cpp) and their roles.
+struct constraint_kind : identifier {};
+struct constraint_name : identifier {};
+struct constraint_open : p::one<'{'> {};
+struct constraint_close : p::one<'}'> {};
+struct unknown_constraint_item {};
+struct constraint_item : p::sor<property, p::raise<unknown_constraint_item>> {};
+struct constraint_block
+    : p::seq<constraint_open, block_items<constraint_item>, p::must<constraint_close>> {};
+struct constraint_statement : p::seq<kw_constraint, blanks, p::must<constraint_kind>, blanks,
+                                     p::must<constraint_name>, blanks, p::must<constraint_block>> {
+};
+
 // ---------------------------------------------------------------- the file
 
 struct unknown_statement {};
-struct statement
-    : p::sor<model_statement, param_statement, input_statement, dof_statement, gravity_statement,
-             rigid_statement, flexible_statement, joint_statement, force_statement,
-             torque_statement, spring_statement, genforce_statement, approx_statement,
-             linearize_statement, initial_statement, output_statement, point_statement,
-             external_statement, load_statement, p::raise<unknown_statement>> {};
+struct statement : p::sor<model_statement, param_statement, input_statement, dof_statement,
+                          gravity_statement, rigid_statement, flexible_statement, joint_statement,
+                          force_statement, torque_statement, spring_statement, genforce_statement,
+                          approx_statement, linearize_statement, initial_statement,
+                          output_statement, point_statement, external_statement, load_statement,
+                          constraint_statement, p::raise<unknown_statement>> {};
 struct statement_line : p::seq<statement, p::must<end_of_statement>> {};
 struct top_separator : p::plus<item_separator> {};
 struct model_file

@@ -63,7 +63,19 @@ void compile(const std::string& compiler, const std::string& source, const std::
 } // namespace
 
 std::string shared_model_source(const ir::System& eq, codegen::RoutineSet routines) {
-    const codegen::RoutineSet wanted = normalised(routines);
+    codegen::RoutineSet wanted = normalised(routines);
+    // A model with constraints is constrained in every command: its rows always,
+    // with M, F and their Jacobians (the runtime's constrained view solves and
+    // differentiates M q'' = F + B^T lambda from them), and no generated
+    // rhs_jacobian (that view forms it).
+    if (eq.constraints.empty())
+        wanted = wanted.without(codegen::constraint_routines());
+    else {
+        wanted = wanted.without(codegen::RoutineSet{codegen::RoutineId::rhs_jacobian});
+        wanted.insert(codegen::constraint_routines());
+        wanted.insert({codegen::RoutineId::mass_matrix, codegen::RoutineId::forcing,
+                       codegen::RoutineId::jacobians});
+    }
     codegen::Options module_options;
     module_options.linear_model = false;
     codegen::Module module = codegen::build_module(eq, module_options);

@@ -1,5 +1,7 @@
 #include "analysis/loaded_model.hpp"
 
+#include "analysis/constrained_model.hpp"
+
 #include "analysis/external_library.hpp"
 #include "analysis/jit.hpp"
 #include "diag/diagnostics.hpp"
@@ -131,7 +133,8 @@ void bind_parameters(Loaded& l, const std::vector<Assignment>& set) {
     std::vector<Assignment> all = l.sid_values;
     all.insert(all.end(), set.begin(), set.end());
     l.params = bind_named(l.library->param_names(), defaults, all, "parameter");
-    l.view = l.library->view(l.params);
+    // A model with constraints moves with them in every command (constrained_model.hpp).
+    l.view = constrained_view(l.library->view(l.params));
 }
 
 Loaded load_library(const std::string& path, const std::vector<Assignment>& set) {

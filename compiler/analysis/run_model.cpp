@@ -4,7 +4,9 @@
 #include "analysis/channels.hpp"
 #include "analysis/commands.hpp"
 #include "analysis/compare.hpp"
+#include "analysis/constrained_model.hpp"
 #include "analysis/controller_loop.hpp"
+#include "analysis/linear_report.hpp"
 #include "analysis/load_blocks.hpp"
 #include "analysis/loaded_model.hpp"
 #include "analysis/openfast_lin_model.hpp"
@@ -47,15 +49,6 @@ using driver::Sweep;
 namespace json = driver::json;
 
 namespace {
-
-/// The rows of a row-major nrow x ncol matrix.
-std::vector<std::vector<double>> rows(const std::vector<double>& m, int nrow, int ncol) {
-    std::vector<std::vector<double>> out(static_cast<std::size_t>(nrow));
-    for (int i = 0; i < nrow; ++i)
-        for (int j = 0; j < ncol; ++j)
-            out[static_cast<std::size_t>(i)].push_back(m[static_cast<std::size_t>(i * ncol + j)]);
-    return out;
-}
 
 double max_abs(const std::vector<double>& v) {
     double m = 0;
@@ -198,6 +191,7 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     add_block_routines(block_options(o), false, routines);
     auto loaded = load(o.model, o.set, o.sid, false, err, outputs, routines, o.external);
     if (!loaded || refuse_without_dofs(*loaded, "lin", "linearize", err)) return 1;
+    if (loaded->view.nc > 0) refuse_constrained_options(o);
     if (o.sweep) return campbell(*loaded, o, out);
     // The linear model's blocks differentiate as a linearization does (a
     // frozen wake); the trim's Newton steps take the quasi-steady loads'.
@@ -206,6 +200,7 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     std::vector<double> q, qd, u;
     operating_point(*loaded, loaded->params, o.at, o.u, q, qd, u);
     if (!o.wind.empty()) set_wind_at_start(*loaded, v, u, o.wind);
+    if (v.nc > 0) return constrained_lin(v, o, q, qd, u, out, err);
     if (o.trim) {
         const runtime::TrimResult r = trim_point(
             any_blocks(block_options(o)) ? with_load_blocks(*loaded, trim_block_options(o)) : v, q,
@@ -229,45 +224,23 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     if (o.json) {
         out << "{\"dofs\":" << json::strings(v.dof_names)
             << ",\"inputs\":" << json::strings(v.input_names)
-            << ",\"M0\":" << json::matrix(rows(lm.M0, nq, nq))
-            << ",\"C0\":" << json::matrix(rows(lm.C0, nq, nq))
-            << ",\"K0\":" << json::matrix(rows(lm.K0, nq, nq))
-            << ",\"Q0\":" << json::matrix(rows(lm.Q0, nq, nu))
-            << ",\"A\":" << json::matrix(rows(lm.A, 2 * nq, 2 * nq))
-            << ",\"B\":" << json::matrix(rows(lm.B, 2 * nq, nu)) << ",\"q0\":" << json::array(q)
-            << ",\"qd0\":" << json::array(qd) << ",\"u0\":" << json::array(u)
-            << ",\"residual\":" << json::array(lm.F0)
-            << ",\"equilibrium_residual\":" << json::number(residual) << ",\"modes\":[";
-        for (std::size_t i = 0; i < modes.size(); ++i) {
-            const auto& m = modes[i];
-            out << (i ? "," : "") << "{\"freq_hz\":" << json::number(m.freq_hz)
-                << ",\"damping_ratio\":" << json::number(m.damping_ratio)
-                << ",\"rigid_body\":" << (m.rigid_body ? "true" : "false") << "}";
-        }
-        out << "]}\n";
+            << ",\"M0\":" << json::matrix(matrix_rows(lm.M0, nq, nq))
+            << ",\"C0\":" << json::matrix(matrix_rows(lm.C0, nq, nq))
+            << ",\"K0\":" << json::matrix(matrix_rows(lm.K0, nq, nq))
+            << ",\"Q0\":" << json::matrix(matrix_rows(lm.Q0, nq, nu))
+            << ",\"A\":" << json::matrix(matrix_rows(lm.A, 2 * nq, 2 * nq))
+            << ",\"B\":" << json::matrix(matrix_rows(lm.B, 2 * nq, nu))
+            << ",\"q0\":" << json::array(q) << ",\"qd0\":" << json::array(qd)
+            << ",\"u0\":" << json::array(u) << ",\"residual\":" << json::array(lm.F0)
+            << ",\"equilibrium_residual\":" << json::number(residual)
+            << ",\"modes\":" << modes_json(modes) << "}\n";
         return 0;
     }
     if (residual > 1e-9)
         err << "yamsc: warning: the operating point is not an equilibrium (max |q''| = " << residual
             << ", max |F(q0, q0', u0)| = " << max_abs(lm.F0)
             << "); the linear model is about a moving point\n";
-    char line[160];
-    out << "mode  frequency [Hz]  damping ratio  shape (largest DOF)\n";
-    for (std::size_t i = 0; i < modes.size(); ++i) {
-        const auto& m = modes[i];
-        std::size_t big = 0;
-        for (std::size_t k = 0; k < m.shape.size(); ++k)
-            if (std::abs(m.shape[k]) > std::abs(m.shape[big])) big = k;
-        std::string dof = m.shape.empty() ? "" : v.dof_names[big];
-        if (m.rigid_body)
-            std::snprintf(line, sizeof line, "%4zu  %14s  %13s  %s (rigid-body mode)\n", i + 1, "0",
-                          "-", dof.c_str());
-        else
-            std::snprintf(line, sizeof line, "%4zu  %14.6g  %13.4g  %s%s\n", i + 1, m.freq_hz,
-                          std::fabs(m.damping_ratio) < 1e-12 ? 0.0 : m.damping_ratio, dof.c_str(),
-                          m.real ? " (non-oscillating)" : "");
-        out << line;
-    }
+    out << format_mode_table(v.dof_names, modes);
     return 0;
 }
 

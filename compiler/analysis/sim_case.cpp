@@ -1,5 +1,6 @@
 #include "analysis/sim_case.hpp"
 
+#include "analysis/constrained_model.hpp"
 #include "analysis/controller_loop.hpp"
 #include "analysis/load_blocks.hpp"
 #include "analysis/wind_input.hpp"
@@ -24,6 +25,9 @@ runtime::ModelView linear_model(const Loaded& l, const SimOptions& o, std::ostre
     operating_point(l, l.params, o.at, o.u, q0, qd0, u0);
     std::vector<double> x0 = q0;
     x0.insert(x0.end(), qd0.begin(), qd0.end());
+    // About a point on the constraints: the linear model in all coordinates then
+    // moves on their tangent plane.
+    consistent_start(l.view, 0.0, x0, u0, false, out);
     const runtime::LinearSystem system = runtime::linearize_view(l.view, x0, u0);
     if (o.verbose) {
         out << "linear model about q0 = (";
@@ -70,6 +74,13 @@ SimRun simulate_case(const Loaded& l, const SimOptions& o, std::ostream& out, st
     s.x0.insert(s.x0.end(), v.block_initial_states.begin(), v.block_initial_states.end());
     s.u = inputs_of(v, o.u);
     if (!o.wind.empty()) s.u_of_t = wind_inputs(l, v, s.u, o.wind);
+    // The rows: the run's view's, or with --linear the nonlinear model's.
+    const runtime::ModelView& rows = o.linear ? l.view : v;
+    if (rows.nc > 0) {
+        std::vector<double> u0 = s.u;
+        if (s.u_of_t) s.u_of_t(s.t_start, u0.data());
+        consistent_start(rows, s.t_start, s.x0, u0, o.verbose, err);
+    }
     int last_percent = -1;
     auto progress = [&](double t, double t_end) {
         int percent = static_cast<int>(100.0 * t / t_end);
@@ -83,6 +94,18 @@ SimRun simulate_case(const Loaded& l, const SimOptions& o, std::ostream& out, st
                      ? runtime::simulate(v, s, progress)
                      : simulate_with_controller(v, s, o.controller, o.controller_input,
                                                 output_root_of(o.output), actuators_of(l));
+    if (o.verbose && v.nc > 0 && run.result.rows() > 0) {
+        // The drift left after the last step's projection (docs/constraints.md).
+        std::vector<double> u(static_cast<std::size_t>(v.nu));
+        if (s.u_of_t)
+            s.u_of_t(run.result.time.back(), u.data());
+        else
+            u = s.u;
+        const runtime::ConstraintResiduals e = runtime::constraint_residual_norms(
+            v, run.result.time.back(), run.result.state_row(run.result.rows() - 1), u.data());
+        err << "yamsc: constraints at t = " << run.result.time.back()
+            << " s: max |phi| = " << e.position << ", max |r| = " << e.velocity << "\n";
+    }
     return run;
 }
 

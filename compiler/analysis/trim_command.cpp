@@ -1,6 +1,7 @@
 // `yamsc trim`: the operating point at rest in the model's own equations
 // (yamsc/trim.hpp), from the model's `linearize` point moved by --at/--u;
 // with --aero and --wind, in steady wind, the --adjust inputs trimmed too.
+#include "analysis/constrained_model.hpp"
 #include "analysis/load_blocks.hpp"
 #include "analysis/loaded_model.hpp"
 #include "analysis/trim_point.hpp"
@@ -25,6 +26,10 @@ int trim(const TrimOptions& o, std::ostream& out, std::ostream& err) {
     std::vector<double> q, qd, u0;
     operating_point(*loaded, loaded->params, o.at, o.u, q, qd, u0);
     if (!o.wind.empty()) set_wind_at_start(*loaded, v, u0, o.wind);
+    if (v.nc > 0) {
+        refuse_constrained_options(o);
+        return constrained_trim(v, o, q, qd, u0, out);
+    }
     const runtime::TrimResult r =
         trim_point(v, q, qd, u0, o.hold, o.adjust, trim_settings(*loaded, block_options(o)));
     const std::vector<double>& u = r.u;

@@ -256,6 +256,17 @@ struct Load {
     Loc end; // the closing `}`
 };
 
+/// `constraint KIND NAME { role = value ... }`: rows the coordinates (or their rates) must
+/// satisfy, closing a loop of the tree, rolling without slip, relating or prescribing
+/// coordinates. The checker knows the kinds (model/constraint_kinds.hpp).
+struct Constraint {
+    Named kind;
+    Named id;
+    std::vector<Property> roles;
+    Loc loc; // the `constraint` keyword
+    Loc end; // the closing `}`
+};
+
 struct ModelFile {
     std::shared_ptr<const diag::SourceFile> source;
     std::optional<Named> model; // the model's name
@@ -279,6 +290,7 @@ struct ModelFile {
     std::vector<Output> outputs;
     std::vector<External> externals;
     std::vector<Load> loads;
+    std::vector<Constraint> constraints;
 };
 
 /// A readable dump of the tree, for `yamsc --dump=ast` and tests.

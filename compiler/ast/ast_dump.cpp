@@ -306,6 +306,10 @@ std::string dump(const ModelFile& file) {
         out += "load " + l.kind.name + " " + l.id.name + at(l.loc) + "\n";
         for (const Property& p : l.roles) out += "  " + property(p);
     }
+    for (const Constraint& c : file.constraints) {
+        out += "constraint " + c.kind.name + " " + c.id.name + at(c.loc) + "\n";
+        for (const Property& p : c.roles) out += "  " + property(p);
+    }
     return out;
 }
 

@@ -4,9 +4,9 @@ namespace yamsc::ast {
 
 const std::vector<std::string>& statement_keywords() {
     static const std::vector<std::string> words{
-        "model",   "param",  "input",  "dof",      "gravity",  "rigid",  "flexible",
-        "joint",   "force",  "torque", "spring",   "genforce", "approx", "linearize",
-        "initial", "output", "point",  "external", "load"};
+        "model",   "param",  "input",  "dof",      "gravity",  "rigid",     "flexible",
+        "joint",   "force",  "torque", "spring",   "genforce", "approx",    "linearize",
+        "initial", "output", "point",  "external", "load",     "constraint"};
     return words;
 }
 

@@ -71,6 +71,14 @@ std::vector<NameArray> name_arrays(const ModelInfo& m) {
     for (const NamedDoc& u : m.inputs) arrays[1].names.push_back(u.name);
     for (const ParamInfo& p : m.params) arrays[2].names.push_back(p.name);
     for (const NamedDoc& y : m.outputs) arrays[3].names.push_back(y.name);
+    if (!m.constraints.empty()) {
+        arrays.push_back({"constraint_names", {}});
+        arrays.push_back({"constraint_sources", {}});
+        for (const ConstraintInfo& c : m.constraints) {
+            arrays[4].names.push_back(c.name);
+            arrays[5].names.push_back(c.source);
+        }
+    }
     return arrays;
 }
 
@@ -85,12 +93,22 @@ std::string declarations(const Module& module, const CNames& names,
     std::string out =
         fmt::format("enum {{ {0}_nq = {1}, {0}_nu = {2}, {0}_np = {3}, {0}_ny = {4} }};\n\n", x,
                     m.nq(), m.nu(), m.np(), m.ny());
+    if (!m.constraints.empty())
+        out +=
+            fmt::format("// Constraints: nc rows r = B q' + c = 0, the first nh holonomic (phi = "
+                        "0).\nenum {{ {0}_nh = {1}, {0}_nc = {2} }};\n\n",
+                        x, m.nh(), m.nc());
     out += fmt::format("// The floating-point type of every argument and parameter (--real).\n"
                        "typedef {} {};\n\n",
                        names.single_precision ? "float" : "double", names.real());
     out += fmt::format("extern const char* const {}_model_name;\n", x);
     for (const NameArray& a : name_arrays(m))
         out += fmt::format("extern const char* const {}_{}[{}];\n", x, a.suffix, array_size(a));
+    if (!m.constraints.empty())
+        out +=
+            fmt::format("// The DOF each constraint row's declaration names `dependent`, or -1.\n"
+                        "extern const int {}_constraint_dependent[{}];\n",
+                        x, m.nc());
     out += fmt::format("\n// The parameters; {}_default_params() gives their defaults (NaN: no\n"
                        "// default, set it before use).\n",
                        x);
@@ -131,6 +149,13 @@ std::string data_definitions(const Module& module, const CNames& names) {
         if (a.names.empty()) items = "\"\"";
         out += fmt::format("const char* const {}_{}[{}] = {{{}}};\n", x, a.suffix, array_size(a),
                            items);
+    }
+    if (!module.model.constraints.empty()) {
+        std::string dependent;
+        for (const ConstraintInfo& c : module.model.constraints)
+            dependent += (dependent.empty() ? "" : ", ") + std::to_string(c.dependent);
+        out += fmt::format("const int {}_constraint_dependent[{}] = {{{}}};\n", x,
+                           module.model.nc(), dependent);
     }
     return out;
 }

@@ -73,7 +73,42 @@ std::string params_struct(const ModelInfo& m) {
     return out + "};\n";
 }
 
-std::string model_struct(const std::string& ns, const std::vector<FunctionPlan>& plans) {
+/// The constraints' sizes and rows (only in models with constraints: the others
+/// print as before).
+std::string constraint_declarations(const ModelInfo& m) {
+    if (m.constraints.empty()) return "";
+    std::vector<std::string> names, sources;
+    std::string dependent;
+    for (const ConstraintInfo& c : m.constraints) {
+        names.push_back(c.name);
+        sources.push_back(c.source);
+        dependent += (dependent.empty() ? "" : ", ") + std::to_string(c.dependent);
+    }
+    return fmt::format(
+               "// Constraints: nc rows r = B q' + c = 0, the first nh holonomic (phi = 0).\n"
+               "inline constexpr int nh = {}, nc = {};\n",
+               m.nh(), m.nc()) +
+           name_array("constraint_names", "nc", m.nc(), names) +
+           fmt::format("// The DOF each row's declaration names `dependent`, or -1.\n"
+                       "inline constexpr int constraint_dependent[nc] = {{{}}};\n",
+                       dependent) +
+           name_array("constraint_sources", "nc", m.nc(), sources);
+}
+
+std::string constraint_members(const ModelInfo& m, const std::string& q) {
+    if (m.constraints.empty()) return "";
+    return fmt::format("    static constexpr int nh = {0}nh, nc = {0}nc;\n"
+                       "    static constexpr const char* const* constraint_names = "
+                       "{0}constraint_names;\n"
+                       "    static constexpr const int* constraint_dependent = "
+                       "{0}constraint_dependent;\n"
+                       "    static constexpr const char* const* constraint_sources = "
+                       "{0}constraint_sources;\n",
+                       q);
+}
+
+std::string model_struct(const std::string& ns, const ModelInfo& m,
+                         const std::vector<FunctionPlan>& plans) {
     const std::string q = "::" + ns + "::";
     std::string out = fmt::format(
         "// Everything above in one type, for templates (the runtime's from_generated<Model>).\n"
@@ -86,6 +121,7 @@ std::string model_struct(const std::string& ns, const std::vector<FunctionPlan>&
         "    static constexpr const char* const* param_names = {0}param_names;\n"
         "    static constexpr const char* const* output_names = {0}output_names;\n",
         q);
+    out += constraint_members(m, q);
     for (const FunctionPlan& plan : plans) {
         if (plan.short_form) continue;
         out += fmt::format("    static {} {{\n        {}{}({});\n    }}\n", signature(plan), q,
@@ -120,6 +156,7 @@ std::string declarations(const Module& module, const std::string& ns,
     out += name_array("input_names", "nu", m.nu(), inputs);
     out += name_array("param_names", "np", m.np(), params);
     out += name_array("output_names", "ny", m.ny(), outputs);
+    out += constraint_declarations(m);
     out += "\n" + params_struct(m) + "\n";
     out += "// The parameters as an array of np values, in declaration order, and back.\n"
            "void params_to_array(const Params& p, double* a);\n"
@@ -131,7 +168,7 @@ std::string declarations(const Module& module, const std::string& ns,
                                           : plan.routine->summary);
         out += signature(plan) + ";\n";
     }
-    out += "\n" + model_struct(ns, plans) + "\n";
+    out += "\n" + model_struct(ns, m, plans) + "\n";
     return out + fmt::format("}} // namespace {}\n", ns);
 }
 

@@ -358,6 +358,10 @@ std::string external_wrapper_body(const Module& module, RoutineId id) {
     case RoutineId::mass_matrix:
     case RoutineId::linear_sensitivities:
     case RoutineId::operating_point:
+    case RoutineId::constraints:
+    case RoutineId::constraint_matrix:
+    case RoutineId::constraint_bias:
+    case RoutineId::constraint_jacobians:
         throw diag::InternalError(std::string("code generation: ") + routine_name(id) +
                                   " has no externals' wrapper");
     }

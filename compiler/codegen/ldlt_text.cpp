@@ -192,7 +192,8 @@ std::string solve_text(const LdltPlan& plan, const Syntax& syntax, const std::st
 } // namespace
 
 bool straight_line_step(const LdltPlan& plan, const Step& step) {
-    return plan.straight_line && step.n == plan.n;
+    // Only M has the model's pattern (the constrained rhs factors another matrix).
+    return plan.straight_line && step.n == plan.n && step.matrix == "M";
 }
 
 std::string solver_statement(const LdltPlan& plan, const Step& step, const Syntax& syntax) {

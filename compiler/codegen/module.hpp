@@ -168,6 +168,14 @@ struct ParamInfo {
     std::optional<double> default_value; // none: must be set at run time
 };
 
+/// One row of the model's constraints (ir::ConstraintRow without its expressions).
+struct ConstraintInfo {
+    std::string name;
+    bool holonomic = true;
+    int dependent = -1;
+    std::string source;
+};
+
 struct ModelInfo {
     std::string name;
     std::string title;
@@ -177,8 +185,15 @@ struct ModelInfo {
     std::vector<NamedDoc> inputs; // name as written (theta_p''), doc
     std::vector<ParamInfo> params;
     std::vector<NamedDoc> outputs;
+    std::vector<ConstraintInfo> constraints; // the nh holonomic rows first
 
     int nq() const { return static_cast<int>(dofs.size()); }
+    int nc() const { return static_cast<int>(constraints.size()); }
+    int nh() const {
+        int n = 0;
+        for (const ConstraintInfo& c : constraints) n += c.holonomic ? 1 : 0;
+        return n;
+    }
     int nu() const { return static_cast<int>(inputs.size()); }
     int np() const { return static_cast<int>(params.size()); }
     int ny() const { return static_cast<int>(outputs.size()); }

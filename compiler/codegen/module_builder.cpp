@@ -1,6 +1,7 @@
 // build_module: lowers the System's rows to routines. Every routine reads the
 // one graph of the System (a copy: lowering adds a few nodes such as K0's
 // differences), so they all share the same value numbers.
+#include "codegen/constraint_routines.hpp"
 #include "codegen/linear_routines.hpp"
 #include "codegen/module.hpp"
 #include "codegen/output_routines.hpp"
@@ -65,6 +66,8 @@ ModelInfo model_info(const ir::System& s) {
     for (int i = 0; i < declared; ++i) m.inputs.push_back({s.inputs[i].name, s.inputs[i].doc});
     for (const ir::Parameter& p : s.params) m.params.push_back({p.name, p.doc, p.value});
     for (const ir::Output& y : s.outputs) m.outputs.push_back({y.name, y.doc});
+    for (const ir::ConstraintRow& c : s.constraints)
+        m.constraints.push_back({c.name, c.holonomic, c.dependent, c.source});
     return m;
 }
 
@@ -238,6 +241,19 @@ void check_passes(const ir::System& s, const Options& options) {
     if (options.linear_model && s.nq() > 0)
         built.insert({RoutineId::linear, RoutineId::state_space, RoutineId::output_matrices});
     if (!options.sensitivity_params.empty()) built.insert(RoutineId::linear_sensitivities);
+    if (!s.constraints.empty()) {
+        // The constrained motion's Jacobian and linear model are the runtime's
+        // (in the independent coordinates); M^-1 F alone would be the tree's.
+        built = built.without(RoutineSet{RoutineId::rhs_jacobian, RoutineId::linear,
+                                         RoutineId::state_space, RoutineId::output_matrices,
+                                         RoutineId::linear_sensitivities});
+        built.insert(constraint_routines());
+        if (s.tangent_form)
+            throw diag::UserError("a model with constraints is compiled with unrolled "
+                                  "Jacobians (--jacobians unrolled)");
+        if (!options.sensitivity_params.empty())
+            throw diag::UserError("--sensitivities of a model with constraints is not supported");
+    }
     if (s.tangent_form) built = RoutineSet{};
     const ir::PassSet tangent{ir::Pass::derive_tangent};
     if (s.tangent_form && !s.passes.contains_all(tangent))
@@ -284,6 +300,12 @@ Module build_module(const ir::System& s, const Options& options) {
     m.routines.push_back(forcing_routine(graph, in, nq, options));
     m.routines.push_back(jacobians_routine(graph, in, nq, s.nu(), options));
     add_output_routines(graph, in.y, nq, s.outputs_read_accelerations(), options, m.routines);
+    if (!s.constraints.empty()) {
+        m.routines.push_back(constrained_rhs_routine(graph, s, options));
+        add_constraint_routines(graph, s, options, m.routines);
+        if (!s.externals.empty()) add_external_routines(graph, s, in, options, m);
+        return m;
+    }
     m.routines.push_back(rhs_routine(graph, in, rates, nq, options));
     m.routines.push_back(rhs_jacobian_routine(graph, in, nq, options));
     const LinearSources sources{in.M, in.F, in.dF_dq, in.dF_dqd, in.dF_du, in.dMa_dq};

@@ -29,6 +29,8 @@ const char* symbol_kind_name(SymbolKind kind) {
         return "a";
     case SymbolKind::seed:
         return "seed";
+    case SymbolKind::multiplier:
+        return "lambda";
     }
     return "?";
 }

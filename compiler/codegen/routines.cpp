@@ -133,6 +133,47 @@ const std::array<RoutineRow, routine_count> table{{
      false,
      false,
      {}},
+    {R::constraints,
+     "constraints",
+     "the constraint residuals: phi(q, t, u) (nh holonomic rows), r = B q' + c (nc rows)",
+     F::t_q_qd_u_p,
+     {"phi", "r"},
+     "yamsc_constraints",
+     "YAMSC_EXPORT_CONSTRAINTS",
+     false,
+     false,
+     {Pass::constraint_derivatives}},
+    {R::constraint_matrix,
+     "constraint_matrix",
+     "B = dr/dq' (nc x nq, row-major; its first nh rows are dphi/dq)",
+     F::t_q_u_p,
+     {"B"},
+     "yamsc_constraint_matrix",
+     "YAMSC_EXPORT_CONSTRAINT_MATRIX",
+     false,
+     false,
+     {Pass::constraint_derivatives}},
+    {R::constraint_bias,
+     "constraint_bias",
+     "gamma = dr/dt - B q'' (nc) and dr/dq (nc x nq): B q'' + gamma = 0",
+     F::t_q_qd_u_p,
+     {"gamma", "dr_dq"},
+     "yamsc_constraint_bias",
+     "YAMSC_EXPORT_CONSTRAINT_BIAS",
+     false,
+     false,
+     {Pass::constraint_derivatives}},
+    {R::constraint_jacobians,
+     "constraint_jacobians",
+     "d(B^T lambda)/dq (nq x nq), d(B a + gamma)/dq (nc x nq), dgamma/dq' (nc x nq), "
+     "d(B^T lambda)/du (nq x nu), d(B a + gamma)/du (nc x nu)",
+     F::t_q_qd_u_lambda_a_p,
+     {"dBTl_dq", "dacc_dq", "dacc_dqd", "dBTl_du", "dacc_du"},
+     "yamsc_constraint_jacobians",
+     "YAMSC_EXPORT_CONSTRAINT_JACOBIANS",
+     false,
+     false,
+     {Pass::constraint_derivatives}},
 }};
 
 } // namespace
@@ -158,6 +199,10 @@ RoutineSet abi_routines() {
     for (const RoutineRow& row : table)
         if (row.abi_symbol) set.insert(row.id);
     return set;
+}
+
+RoutineSet constraint_routines() {
+    return {R::constraints, R::constraint_matrix, R::constraint_bias, R::constraint_jacobians};
 }
 
 std::string routine_names(RoutineSet set) {

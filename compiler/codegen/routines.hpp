@@ -30,18 +30,24 @@ enum class RoutineId : std::uint8_t {
     output_matrices,
     linear_sensitivities,
     operating_point,
+    // Only in models with constraints (constraint_routines()).
+    constraints,
+    constraint_matrix,
+    constraint_bias,
+    constraint_jacobians,
 };
-inline constexpr std::size_t routine_count = 12;
+inline constexpr std::size_t routine_count = 16;
 using RoutineSet = ir::EnumSet<RoutineId, routine_count>;
 
 /// The arguments before a routine's outputs.
 enum class ArgumentForm {
-    t_q_u_p,        // (t, q, u, p): M reads no rates
-    t_q_qd_u_p,     // (t, q, qd, u, p)
-    t_q_qd_qdd_u_p, // (t, q, qd, qdd, u, p)
-    t_x_u_p,        // (t, x, u, p), x = [q, q']
-    point,          // (q0, qd0, u0, p): the linear model, at t = 0
-    p,              // (p)
+    t_q_u_p,             // (t, q, u, p): M reads no rates
+    t_q_qd_u_p,          // (t, q, qd, u, p)
+    t_q_qd_qdd_u_p,      // (t, q, qd, qdd, u, p)
+    t_x_u_p,             // (t, x, u, p), x = [q, q']
+    point,               // (q0, qd0, u0, p): the linear model, at t = 0
+    p,                   // (p)
+    t_q_qd_u_lambda_a_p, // (t, q, qd, u, lambda, a, p): the constraint Jacobians
 };
 
 struct RoutineRow {
@@ -49,7 +55,7 @@ struct RoutineRow {
     const char* name;    // in the generated API
     const char* summary; // its comment (linear_sensitivities adds the parameters' names)
     ArgumentForm form;
-    std::array<const char*, 4> outputs; // the output arrays, unused ones null
+    std::array<const char*, 5> outputs; // the output arrays, unused ones null
     const char* abi_symbol;             // the C ABI's symbol; null: not exported
     const char* abi_macro;              // abi_export.hpp's YAMSC_EXPORT_<ROUTINE>
     /// Computes derivatives: with externals it needs their arguments' Jacobian.
@@ -72,6 +78,9 @@ inline const char* routine_name(RoutineId id) {
 std::optional<RoutineId> routine_named(std::string_view name);
 /// The routines the C ABI exports.
 RoutineSet abi_routines();
+/// The routines of the constraint rows: a module has them exactly when its model
+/// has constraints (and the JIT then compiles them for every command).
+RoutineSet constraint_routines();
 /// "rhs, outputs": the names, in the table's order.
 std::string routine_names(RoutineSet set);
 

@@ -66,6 +66,8 @@ RoutineBuilder::Binding bind(SymbolSource source) {
             return from(s.qdd, 0);
         case SymbolKind::seed:
             return from(s.seed, 0);
+        case SymbolKind::multiplier:
+            return from(s.lambda, 0);
         }
         return std::nullopt;
     };
@@ -106,6 +108,9 @@ RoutineBuilder::Signature api_signature(RoutineId id) {
         break;
     case ArgumentForm::p:
         inputs({"p"});
+        break;
+    case ArgumentForm::t_q_qd_u_lambda_a_p:
+        inputs({"t", "q", "qd", "u", "lambda", "a", "p"});
         break;
     }
     for (const char* o : row.outputs)

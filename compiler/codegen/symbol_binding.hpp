@@ -27,9 +27,10 @@ struct SymbolSource {
     std::string qd = "qd";
     int qd_offset = 0;
     std::string u = "u";
-    std::string a;    // the vector `a` of M a
-    std::string qdd;  // q''
-    std::string seed; // the tangent form's direction
+    std::string a;      // the vector `a` of M a
+    std::string qdd;    // q''
+    std::string seed;   // the tangent form's direction
+    std::string lambda; // the constraint reactions λ
 
     /// q, q' from the state vector x = [q, q'].
     static SymbolSource state_vector(int nq);

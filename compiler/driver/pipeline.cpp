@@ -181,9 +181,14 @@ bool uses_tangent_form(const model::Model& m, Until until, Derivatives derivativ
         throw diag::UsageError("--jacobians tangent: the model declares external functions, "
                                "whose chain rule needs the unrolled Jacobians (use auto or "
                                "unrolled)");
+    // The constrained rhs (Schur complement of B M^-1 B^T) needs M itself.
+    const bool constraints = !m.constraints.empty();
+    if (constraints && derivatives == Derivatives::tangent && until == Until::jacobians)
+        throw diag::UsageError("--jacobians tangent: the model declares constraints, whose "
+                               "rows need the unrolled form (use auto or unrolled)");
     // Without DOFs there are no Jacobians to form column by column.
     return until == Until::jacobians && !m.dofs.empty() && m.approximations.empty() &&
-           !accelerations && !externals &&
+           !accelerations && !externals && !constraints &&
            (derivatives == Derivatives::tangent ||
             (derivatives == Derivatives::automatic && m.dofs.size() >= tangent_form_min_dofs));
 }

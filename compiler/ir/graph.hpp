@@ -29,8 +29,9 @@ enum class SymbolKind : std::uint8_t {
     param,        // parameter
     acceleration, // the vector `a` of M a and dMa_dq
     seed,         // a direction of the tangent form
+    multiplier,   // the constraint reactions λ of Bᵀλ (passes::constraint_derivatives)
 };
-inline constexpr int symbol_kind_count = 8;
+inline constexpr int symbol_kind_count = 9;
 
 struct SymbolRef {
     SymbolKind kind = SymbolKind::time;
@@ -43,7 +44,7 @@ struct SymbolRef {
 struct Variables {
     int nq = 0, nu = 0, np = 0;
     int count() const { return 2 * nq + nu + np; }
-    /// The variable of a symbol, or -1 (t, q'', `a`, seeds).
+    /// The variable of a symbol, or -1 (t, q'', `a`, seeds, λ).
     int of(SymbolRef s) const;
 };
 

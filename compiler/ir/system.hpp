@@ -76,19 +76,31 @@ struct External {
     Matrix dargs_du;            // nargs x (declared channels)
 };
 
+/// One row of the model's constraints (docs/theory.md, Constraint rows).
+struct ConstraintRow {
+    std::string name;      // `closing.x`
+    bool holonomic = true; // Φ = 0, its r = dΦ/dt; else a velocity row only
+    int dependent = -1;    // the DOF the model names dependent for this row, or -1
+    std::string source;    // "file:line:col" of the declaration
+    NodeId phi = 0;        // holonomic: Φ(q, t, u, p)
+    NodeId r = 0;          // B(q, t, u) q' + c(q, t, u)
+    NodeId r_t = 0;        // ∂r/∂t + Σ ∂r/∂u u' (the part of dr/dt not through q, q')
+};
+
 /// The passes (compiler/passes/passes.hpp) as values. Each declares what it
 /// adds to a System and which passes must have run before it
 /// (passes/pass_order.hpp); a System records the passes that ran on it.
 enum class Pass : std::uint8_t {
-    separate_externals,    // adds: externals[k].args
-    approximate,           // adds: exact_M, exact_F; replaces M and F
-    derive_jacobians,      // adds: dF_dq, dF_dqd, dF_du, dMa_dq (and Ma)
-    output_jacobians,      // adds: C, D
-    derive_tangent,        // adds: dG, dY, tangent_form
-    external_jacobians,    // adds: externals[k].dargs_dq, dargs_dqd, dargs_du
-    parameter_derivatives, // adds: sensitivity_params, sensitivities
+    separate_externals,     // adds: externals[k].args
+    approximate,            // adds: exact_M, exact_F; replaces M and F
+    derive_jacobians,       // adds: dF_dq, dF_dqd, dF_du, dMa_dq (and Ma)
+    output_jacobians,       // adds: C, D
+    derive_tangent,         // adds: dG, dY, tangent_form
+    external_jacobians,     // adds: externals[k].dargs_dq, dargs_dqd, dargs_du
+    parameter_derivatives,  // adds: sensitivity_params, sensitivities
+    constraint_derivatives, // adds: B, dr_dq, gamma and the constraint Jacobians
 };
-inline constexpr std::size_t pass_count = 7;
+inline constexpr std::size_t pass_count = 8;
 using PassSet = EnumSet<Pass, pass_count>;
 
 struct System {
@@ -134,6 +146,16 @@ struct System {
 
     OperatingPoint point;
 
+    /// The constraints' rows, the nh holonomic ones first (empty without constraints).
+    std::vector<ConstraintRow> constraints;
+    // passes::constraint_derivatives: B = ∂r/∂q' (nc x nq), ∂r/∂q (nc x nq),
+    // γ = (∂r/∂q) q' + r_t (nc), and with λ (SymbolKind::multiplier) and `a`:
+    // ∂(Bᵀλ)/∂q (nq x nq), ∂(B a + γ)/∂q (nc x nq), ∂γ/∂q' (nc x nq),
+    // ∂(Bᵀλ)/∂u (nq x nu), ∂(B a + γ)/∂u (nc x nu).
+    Matrix B, dr_dq;
+    Row gamma;
+    Matrix dBTl_dq, dacc_dq, dacc_dqd, dBTl_du, dacc_du;
+
     /// The external functions; their results are the last input channels.
     std::vector<External> externals;
 
@@ -145,6 +167,12 @@ struct System {
     int nu() const { return static_cast<int>(inputs.size()); }
     int np() const { return static_cast<int>(params.size()); }
     int ny() const { return static_cast<int>(outputs.size()); }
+    int nc() const { return static_cast<int>(constraints.size()); }
+    int nh() const {
+        int n = 0;
+        for (const ConstraintRow& r : constraints) n += r.holonomic ? 1 : 0;
+        return n;
+    }
     /// The input channels a caller gives (nu() less the externals' results).
     int declared_nu() const {
         int n = nu();

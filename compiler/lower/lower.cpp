@@ -43,6 +43,9 @@ ir::System lower_with(const symbolic::Equations& eq, const symbolic::OperatingPo
     for (const symbolic::Output& y : eq.outputs)
         s.outputs.push_back(
             {y.name, y.doc, importer.import(y.value), import_row(importer, y.dqdd)});
+    for (const symbolic::ConstraintRow& c : eq.constraints)
+        s.constraints.push_back({c.name, c.holonomic, c.dependent, c.source, importer.import(c.phi),
+                                 importer.import(c.r), importer.import(c.r_t)});
     if (point != nullptr) {
         s.point.q = import_row(importer, point->q);
         s.point.qd = import_row(importer, point->qd);

@@ -1,5 +1,7 @@
 #include "model/checker.hpp"
 
+#include "model/constraint_check.hpp"
+
 #include "model/expr_check.hpp"
 #include "model/flexible.hpp"
 #include "model/load_check.hpp"
@@ -50,6 +52,7 @@ public:
         check_loads();
         check_outputs();
         model_.loads = check_load_blocks(file_, model_, names_, diags_);
+        model_.constraints = check_constraints(file_, model_, names_, exprs_, diags_);
         if (!diags_.has_errors()) add_mesh_channels(model_);
         check_externals();
         check_dof_usage();

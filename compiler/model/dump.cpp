@@ -129,6 +129,23 @@ std::string dump(const Model& m) {
             if (!l.bound[r].empty()) out << " " << kind.roles[r].name << " = " << l.bound[r] << ";";
         out << " }\n";
     }
+    for (const Constraint& c : m.constraints) {
+        out << "  constraint " << constraint_kind_info(c.kind).name << " " << c.name << " {";
+        if (c.kind == ConstraintKind::loop)
+            out << " a = " << c.a.text << "; b = " << c.b.text << ";";
+        if (c.kind == ConstraintKind::prescribed)
+            out << " coordinate = " << m.dofs[static_cast<std::size_t>(c.coordinate)].name << ";";
+        if (c.kind == ConstraintKind::rolling)
+            out << " wheel = " << frame_name(m, c.wheel)
+                << "; radius = " << ast::to_string(c.radius) << ";";
+        if (!c.value.text.empty() || !c.value.args.empty())
+            out << " value = " << ast::to_string(c.value) << ";";
+        for (int d : c.dependent)
+            out << " dependent " << m.dofs[static_cast<std::size_t>(d)].name << ";";
+        out << " }\n";
+        for (const ConstraintRow& r : c.rows)
+            out << "    row " << r.name << (r.holonomic ? " holonomic" : " nonholonomic") << "\n";
+    }
     return out.str();
 }
 

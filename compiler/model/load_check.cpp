@@ -1,5 +1,6 @@
 #include "model/load_check.hpp"
 
+#include "model/declaration_check.hpp"
 #include "model/mesh_channels.hpp"
 
 #include <algorithm>
@@ -116,36 +117,15 @@ public:
 
 private:
     const LoadKindInfo* kind_of(const ast::Named& kind) {
-        std::vector<std::string> names;
-        for (const LoadKindInfo& k : load_kinds()) {
-            if (k.name == kind.name) return &k;
-            names.push_back(k.name);
-        }
-        if (!kind.name.empty())
-            diags_.error(Kind::UnknownName, kind.loc,
-                         "unknown load block kind " + quoted(kind.name) +
-                             diag::did_you_mean(kind.name, names));
-        return nullptr;
+        return find_kind(load_kinds(), kind, "load block kind", diags_);
     }
 
     /// The block's name: an identifier of its own; its outputs NAME_<output>
     /// follow the model's and may not repeat one.
     bool check_name(const ast::Load& decl, const LoadKindInfo* info) {
         const std::string& name = decl.id.name;
-        if (name.empty()) return false;
-        const std::string why = reserved_reason(name);
-        if (!why.empty()) {
-            diags_.error(Kind::ReservedName, decl.id.loc, quoted(name) + " " + why);
+        if (name.empty() || !fresh_declaration_name(decl.id, "load block", seen_, diags_))
             return false;
-        }
-        auto [it, fresh] = seen_.emplace(name, decl.id.loc);
-        if (!fresh) {
-            diags_.error(Kind::DuplicateName, decl.id.loc,
-                         "load block " + quoted(name) + " is already declared at " +
-                             std::to_string(it->second.line) + ":" +
-                             std::to_string(it->second.col));
-            return false;
-        }
         if (!info) return true;
         for (const std::string& o : info->outputs) {
             const std::string full = info->output_name(name, o);

@@ -4,6 +4,7 @@
 // to bodies. Expressions are still ast::Expr, but every name in them is known to
 // be declared and allowed where it stands (see checker.hpp). Plain data.
 #include "ast/ast.hpp"
+#include "model/constraint_kinds.hpp"
 #include "model/load_kinds.hpp"
 #include "sid/sid.hpp"
 
@@ -207,6 +208,50 @@ struct LoadBlock {
     }
 };
 
+/// A frame of the tree a constraint names: a body's frame (ground when body is -1), a
+/// point fixed in a body (`at`, body axes; the body's axes), or the frame of a node of a
+/// flexible body (as a joint on it would start).
+struct FrameRef {
+    int body = -1;
+    int node = -1;         // >= 0: that SID node of flexible `body`
+    std::optional<Vec> at; // a point's position in the body's axes
+    std::string text;      // as written, for dumps
+    Loc loc;
+};
+
+enum class LoopJoint { point, revolute, prismatic, weld };
+enum class RollingContact { kept, by_tree };
+
+/// One row of a constraint: its name (`closing.x`) and whether it is holonomic.
+struct ConstraintRow {
+    std::string name;
+    bool holonomic = true;
+};
+
+/// `constraint KIND NAME { role = value ... }` checked: the fields of its kind's roles
+/// (model/constraint_kinds.hpp) resolved; the others keep their defaults.
+struct Constraint {
+    ConstraintKind kind = ConstraintKind::loop;
+    std::string name;
+    // loop
+    FrameRef a, b;
+    LoopJoint joint = LoopJoint::point;
+    int axis = 2;                                       // revolute, prismatic: 0, 1, 2 (x, y, z)
+    std::array<bool, 3> components{{true, true, true}}; // position rows kept
+    // relation, speed, prescribed
+    Expr value;
+    int coordinate = -1; // prescribed
+    // rolling
+    int wheel = -1;
+    Expr radius;
+    int axle = 1;
+    int normal = 2;
+    RollingContact contact = RollingContact::kept;
+    std::vector<int> dependent;      // DOFs named `dependent`
+    std::vector<ConstraintRow> rows; // holonomic rows first
+    Loc loc, end;                    // the statement: `constraint` to its closing `}`
+};
+
 struct Model {
     std::string name, title;
     std::vector<std::string> files_read; // data files (SID, ElastoDyn), for digests and depfiles
@@ -227,6 +272,7 @@ struct Model {
     std::optional<InitialState> initial_state;     // the `initial` block, if any
     std::vector<Approximation> approximations;     // `approx` groups, in file order
     std::vector<LoadBlock> loads;                  // `load` blocks, in file order
+    std::vector<Constraint> constraints;           // `constraint`s, in file order
 
     int body_index(const std::string& name) const;
     int point_index(const std::string& name) const;

@@ -589,6 +589,25 @@ YAMSC_ACTION(load_close) {
     st.file.loads.back().end = st.loc(in.position());
 }
 
+// ---------------------------------------------------------------- constraints
+
+YAMSC_ACTION(kw_constraint) {
+    st.file.constraints.emplace_back().loc = st.loc(in.position());
+}
+YAMSC_ACTION(constraint_kind) {
+    st.file.constraints.back().kind = ast::Named{in.string(), st.loc(in.position()), {}};
+}
+YAMSC_ACTION(constraint_name) {
+    st.file.constraints.back().id = ast::Named{in.string(), st.loc(in.position()), {}};
+}
+YAMSC_ACTION(constraint_open) {
+    st.property_sinks.push_back(&st.file.constraints.back().roles);
+}
+YAMSC_ACTION(constraint_close) {
+    st.property_sinks.pop_back();
+    st.file.constraints.back().end = st.loc(in.position());
+}
+
 #undef YAMSC_ACTION
 #undef YAMSC_CONTEXT_ACTION
 

@@ -30,6 +30,7 @@ template <> struct opens_bracket<grammar::joint_block> : std::true_type {};
 template <> struct opens_bracket<grammar::linearize_block> : std::true_type {};
 template <> struct opens_bracket<grammar::initial_block> : std::true_type {};
 template <> struct opens_bracket<grammar::load_block> : std::true_type {};
+template <> struct opens_bracket<grammar::constraint_block> : std::true_type {};
 
 /// Rules that recurse into expressions: their depth is limited.
 template <class Rule> struct nests : std::false_type {};

@@ -169,4 +169,9 @@ ErrorMessage error_message<grammar::unknown_load_item>::compose(std::string_view
     return {fill_message("expected 'role = value' in the load block, found {found}", rest, st)};
 }
 
+ErrorMessage error_message<grammar::unknown_constraint_item>::compose(std::string_view rest,
+                                                                      const ParseState& st) {
+    return {fill_message("expected 'role = value' in the constraint, found {found}", rest, st)};
+}
+
 } // namespace yamsc::parse

@@ -205,6 +205,14 @@ YAMSC_ERROR_MESSAGE(load_name, "expected a name for the load block after its kin
 YAMSC_ERROR_MESSAGE(load_block, "expected '{' after the load block's name, found {found}");
 YAMSC_UNCLOSED_BLOCK_MESSAGE(load_close, "expected '}' to close the load block started at {open}");
 YAMSC_COMPOSED_ERROR_MESSAGE(unknown_load_item);
+YAMSC_ERROR_MESSAGE(constraint_kind,
+                    "expected the kind of constraint after 'constraint', found {found}");
+YAMSC_ERROR_MESSAGE(constraint_name,
+                    "expected a name for the constraint after its kind, found {found}");
+YAMSC_ERROR_MESSAGE(constraint_block, "expected '{' after the constraint's name, found {found}");
+YAMSC_UNCLOSED_BLOCK_MESSAGE(constraint_close,
+                             "expected '}' to close the constraint started at {open}");
+YAMSC_COMPOSED_ERROR_MESSAGE(unknown_constraint_item);
 
 #undef YAMSC_ERROR_MESSAGE
 #undef YAMSC_UNCLOSED_BLOCK_MESSAGE

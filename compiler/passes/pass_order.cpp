@@ -52,6 +52,12 @@ const std::array<PassInfo, ir::pass_count> table{{
      {Pass::derive_jacobians},
      {},
      false},
+    {Pass::constraint_derivatives,
+     "constraint_derivatives",
+     "B, dr_dq, gamma, dBTl_dq, dacc_dq, dacc_dqd, dBTl_du, dacc_du",
+     {},
+     {},
+     false},
 }};
 
 std::string names(ir::PassSet set) {

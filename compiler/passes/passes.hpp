@@ -44,4 +44,9 @@ void external_jacobians(ir::System& s);
 /// model, docs/linearization.md). Needs derive_jacobians.
 void parameter_derivatives(ir::System& s, const std::vector<std::size_t>& params);
 
+/// B, ∂r/∂q, γ of the constraint rows and the Jacobians of Bᵀλ and B a + γ
+/// (ir::System::B ...; docs/theory.md, Constraint rows). Run whenever the model
+/// has constraints.
+void constraint_derivatives(ir::System& s);
+
 } // namespace yamsc::passes

@@ -43,6 +43,10 @@ void run_pipeline(ir::System& s, const PassPlan& plan, const std::function<void(
             done(ir::Pass::parameter_derivatives);
         }
     }
+    if (!s.constraints.empty()) {
+        constraint_derivatives(s);
+        done(ir::Pass::constraint_derivatives);
+    }
 }
 
 } // namespace yamsc::passes

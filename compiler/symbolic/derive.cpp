@@ -1,6 +1,7 @@
 #include "symbolic/derive.hpp"
 
 #include "model/names.hpp"
+#include "symbolic/constraints/registry.hpp"
 #include "symbolic/flexible_body.hpp"
 #include "symbolic/kinematics.hpp"
 #include "symbolic/projection.hpp"
@@ -65,6 +66,7 @@ public:
             eq_.F[r] = all.empty() ? ex(0) : ex(add(all));
         }
         outputs();
+        eq_.constraints = derive_constraints(m_, sym_, frames_);
         eq_.model_name = m_.name;
         eq_.title = m_.title;
         return std::move(eq_);

@@ -48,6 +48,17 @@ struct Output {
     Row dqdd = {};   // ∂value/∂q''_s, one per DOF; empty when value does not read q''
 };
 
+/// One row of the model's constraints (docs/theory.md, Constraint rows).
+struct ConstraintRow {
+    std::string name;      // `closing.x`
+    bool holonomic = true; // Φ = 0 (its r is dΦ/dt), else a velocity row only
+    int dependent = -1;    // the DOF the model names dependent for this row, or -1
+    std::string source;    // "file:line:col" of the declaration
+    GiNaC::ex phi = 0;     // holonomic: Φ(q, t, u, p)
+    GiNaC::ex r = 0;       // B(q, t, u) q' + c(q, t, u)
+    GiNaC::ex r_t = 0;     // ∂r/∂t + Σ ∂r/∂u u': the part of dr/dt not through q, q'
+};
+
 struct Equations {
     std::string model_name;
     std::string title;
@@ -75,10 +86,19 @@ struct Equations {
     // derive() together with `a`; when empty, passes::derive_jacobians forms Σ_s M_rs a_s.
     Row Ma;
 
+    // The constraints' rows, the nh holonomic ones first (empty without constraints).
+    std::vector<ConstraintRow> constraints;
+
     int nq() const { return static_cast<int>(dofs.size()); }
     int nu() const { return static_cast<int>(inputs.size()); }
     int np() const { return static_cast<int>(params.size()); }
     int ny() const { return static_cast<int>(outputs.size()); }
+    int nc() const { return static_cast<int>(constraints.size()); }
+    int nh() const {
+        int n = 0;
+        for (const ConstraintRow& r : constraints) n += r.holonomic ? 1 : 0;
+        return n;
+    }
 };
 
 } // namespace yamsc::symbolic

@@ -69,6 +69,17 @@ ex Symbols::time_derivative(const ex& e, bool with_qdd) {
         ex b = diff(e, d.qd);
         if (!b.is_zero() && with_qdd) terms.push_back(b * d.qdd);
     }
+    explicit_time_terms(e, terms);
+    return terms.empty() ? ex(0) : ex(add(terms));
+}
+
+ex Symbols::explicit_time_derivative(const ex& e) {
+    exvector terms;
+    explicit_time_terms(e, terms);
+    return terms.empty() ? ex(0) : ex(add(terms));
+}
+
+void Symbols::explicit_time_terms(const ex& e, exvector& terms) {
     for (std::size_t i = 0; i < channels_.size(); ++i) {
         ex a = diff(e, channels_[i].sym);
         if (a.is_zero()) continue;
@@ -79,7 +90,6 @@ ex Symbols::time_derivative(const ex& e, bool with_qdd) {
     }
     ex a = diff(e, t_);
     if (!a.is_zero()) terms.push_back(a);
-    return terms.empty() ? ex(0) : ex(add(terms));
 }
 
 ex exact_number(const std::string& text) {

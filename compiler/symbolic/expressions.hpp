@@ -29,11 +29,15 @@ public:
     /// d/dt e = Σ ∂e/∂q q' + ∂e/∂q' q'' + Σ ∂e/∂u⁽ʲ⁾ u⁽ʲ⁺¹⁾ + ∂e/∂t. With
     /// `with_qdd == false` the q'' terms are left out (the "bias" part).
     GiNaC::ex time_derivative(const GiNaC::ex& e, bool with_qdd);
+    /// ∂e/∂t + Σ ∂e/∂u⁽ʲ⁾ u⁽ʲ⁺¹⁾: the part of d/dt e not through q and q'.
+    GiNaC::ex explicit_time_derivative(const GiNaC::ex& e);
 
     /// ∂e/∂s, memoised per symbol across calls.
     GiNaC::ex diff(const GiNaC::ex& e, const GiNaC::symbol& s);
 
 private:
+    void explicit_time_terms(const GiNaC::ex& e, GiNaC::exvector& terms);
+
     GiNaC::symbol t_;
     std::vector<Dof> dofs_;
     std::vector<InputChannel> channels_;

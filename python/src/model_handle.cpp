@@ -1,5 +1,7 @@
 #include "model_handle.hpp"
 
+#include "analysis/constrained_model.hpp"
+
 #include "diag/errors.hpp"
 
 #include <algorithm>
@@ -84,7 +86,8 @@ const runtime::ModelView& ModelHandle::view_at(const double* p) {
     if (n == 0 || std::equal(p, p + n, loaded_.params.begin())) return loaded_.view;
     if (other_params_.size() != n || !std::equal(p, p + n, other_params_.begin())) {
         const std::vector<double> params(p, p + n);
-        other_view_ = analysis::with_load_blocks(loaded_, library().view(params), params, blocks_);
+        other_view_ = analysis::with_load_blocks(
+            loaded_, analysis::constrained_view(library().view(params)), params, blocks_);
         other_params_.assign(p, p + n);
     }
     return other_view_;

@@ -6,6 +6,8 @@
 #include "input_table.hpp"
 #include "model_handle.hpp"
 
+#include "analysis/constrained_model.hpp"
+
 #include "diag/errors.hpp"
 
 #include <yamsc/dynamic_model.hpp>
@@ -19,6 +21,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -88,12 +91,54 @@ template <class F> void require(const F& routine, const char* name) {
                               " routine (yamsc.load(..., routines=...))");
 }
 
+py::list modes_of(const std::vector<yamsc::runtime::Mode>& modes) {
+    py::list out;
+    for (const yamsc::runtime::Mode& m : modes) {
+        py::dict d;
+        d["freq_hz"] = m.freq_hz;
+        d["damping_ratio"] = m.damping_ratio;
+        d["rigid_body"] = m.rigid_body;
+        out.append(d);
+    }
+    return out;
+}
+
+/// linear() of a model with constraints: in its independent coordinates and
+/// speeds (runtime::reduced_linear_model, docs/constraints.md).
+py::dict constrained_linear(const yamsc::runtime::ModelView& v, std::vector<double> q,
+                            std::vector<double> qd, const std::vector<double>& u) {
+    std::vector<double> x = q;
+    x.insert(x.end(), qd.begin(), qd.end());
+    x.insert(x.end(), v.block_initial_states.begin(), v.block_initial_states.end());
+    std::ostringstream quiet;
+    yamsc::analysis::consistent_start(v, 0.0, x, u, false, quiet);
+    const yamsc::runtime::ReducedLinearModel m = yamsc::analysis::located_constraint_errors(
+        v, [&] { return yamsc::runtime::reduced_linear_model(v, x, u); });
+    const int ns = static_cast<int>(m.state_names.size()), mq = m.n_coordinates;
+    py::dict out;
+    out["states"] = m.state_names;
+    out["A"] = matrix(m.A, ns, ns);
+    out["B"] = matrix(m.B, ns, v.nu);
+    out["T"] = matrix(m.T, v.nx(), ns);
+    if (m.second_order && !m.M.empty()) {
+        out["M"] = matrix(m.M, mq, mq);
+        out["C"] = matrix(m.C, mq, mq);
+        out["K"] = matrix(m.K, mq, mq);
+    }
+    out["q0"] = vector_of(std::vector<double>(x.begin(), x.begin() + v.nq));
+    out["qd0"] = vector_of(std::vector<double>(x.begin() + v.nq, x.begin() + 2 * v.nq));
+    out["u0"] = vector_of(u);
+    out["modes"] = modes_of(m.modes);
+    return out;
+}
+
 py::dict linear(ModelHandle& h, const Assignments& at, const Assignments& u_given,
                 const OptArray& p) {
     Call c(h, p);
     std::vector<double> q, qd, u;
     yamsc::analysis::operating_point(h.loaded(), h.params_at(p ? p->data() : nullptr),
                                      assignments(at), assignments(u_given), q, qd, u);
+    if (c.v.nc > 0) return constrained_linear(c.v, q, qd, u);
     const yamsc::runtime::SecondOrderModel lm =
         yamsc::runtime::second_order_model(c.v, q, qd, u, 0.0);
     std::vector<double> x0 = q;
@@ -116,15 +161,7 @@ py::dict linear(ModelHandle& h, const Assignments& at, const Assignments& u_give
     out["u0"] = vector_of(u);
     out["residual"] = vector_of(lm.F0);
     out["equilibrium_residual"] = lm.equilibrium_residual;
-    py::list modes;
-    for (const yamsc::runtime::Mode& m : lm.modes) {
-        py::dict d;
-        d["freq_hz"] = m.freq_hz;
-        d["damping_ratio"] = m.damping_ratio;
-        d["rigid_body"] = m.rigid_body;
-        modes.append(d);
-    }
-    out["modes"] = modes;
+    out["modes"] = modes_of(lm.modes);
     return out;
 }
 
@@ -172,6 +209,13 @@ py::dict simulate(ModelHandle& h, double t_end, double dt, const OptArray& x0, c
     const double* x = data_of(x0, v.nx(), "x0", zeros);
     s.x0.assign(x, x + v.nx());
     set_inputs(s, u, v.nu);
+    if (v.nc > 0) {
+        // On the constraints from the start, as `yamsc sim` (docs/constraints.md).
+        std::vector<double> u0 = s.u;
+        if (s.u_of_t) s.u_of_t(0.0, u0.data());
+        std::ostringstream quiet;
+        yamsc::analysis::consistent_start(v, 0.0, s.x0, u0, false, quiet);
+    }
     bool interrupted = false;
     // Ctrl-C stops the run: Python's signal handlers need the GIL to run.
     auto progress = [&interrupted](double, double) {

@@ -32,6 +32,11 @@ struct SharedModel::Library {
     // Optional: the outputs given the q'' of rhs (abi_export.hpp).
     yamsc_outputs_from_qdd_fn outputs_from_qdd = nullptr;
     yamsc_outputs_from_qdd_bound_fn outputs_from_qdd_bound = nullptr;
+    // Optional: the constraint rows (abi_export.hpp).
+    yamsc_constraints_fn constraints = nullptr;
+    yamsc_constraint_matrix_fn constraint_matrix = nullptr;
+    yamsc_constraint_bias_fn constraint_bias = nullptr;
+    yamsc_constraint_jacobians_fn constraint_jacobians = nullptr;
 
     Library() = default;
     Library(const Library&) = delete;
@@ -124,7 +129,35 @@ SharedModel::SharedModel(const std::string& path) : path_(path) {
     input_names_ = names_of(library->name, yamsc_name_input, nu_, path);
     param_names_ = names_of(library->name, yamsc_name_param, np_, path);
     output_names_ = names_of(library->name, yamsc_name_output, ny_, path);
+    read_constraints(*library, h);
     library_ = std::move(library);
+}
+
+void SharedModel::read_constraints(Library& library, void* h) {
+    const auto sizes = optional_routine<yamsc_constraint_sizes_fn>(h, "yamsc_constraint_sizes");
+    const auto row = optional_routine<yamsc_constraint_row_fn>(h, "yamsc_constraint_row");
+    if (!sizes || !row) return;
+    sizes(&nh_, &nc_);
+    if (nh_ < 0 || nc_ < nh_)
+        throw SharedModelError("'" + path_ + "' reports bad constraint sizes");
+    for (int i = 0; i < nc_; ++i) {
+        int dependent = -1;
+        const char* source = nullptr;
+        const char* name = row(i, &dependent, &source);
+        if (!name || !source)
+            throw SharedModelError("'" + path_ + "' has no name for constraint row " +
+                                   std::to_string(i));
+        constraint_names_.emplace_back(name);
+        constraint_sources_.emplace_back(source);
+        constraint_dependent_.push_back(dependent);
+    }
+    library.constraints = optional_routine<yamsc_constraints_fn>(h, "yamsc_constraints");
+    library.constraint_matrix =
+        optional_routine<yamsc_constraint_matrix_fn>(h, "yamsc_constraint_matrix");
+    library.constraint_bias =
+        optional_routine<yamsc_constraint_bias_fn>(h, "yamsc_constraint_bias");
+    library.constraint_jacobians =
+        optional_routine<yamsc_constraint_jacobians_fn>(h, "yamsc_constraint_jacobians");
 }
 
 std::vector<double> SharedModel::default_params() const {
@@ -137,12 +170,17 @@ std::vector<double> SharedModel::default_params() const {
 }
 
 std::vector<std::string> SharedModel::routines() const {
-    const std::pair<const char*, bool> all[] = {{"rhs", library_->rhs != nullptr},
-                                                {"rhs_jacobian", library_->rhs_jacobian != nullptr},
-                                                {"mass_matrix", library_->mass_matrix != nullptr},
-                                                {"forcing", library_->forcing != nullptr},
-                                                {"jacobians", library_->jacobians != nullptr},
-                                                {"outputs", library_->outputs != nullptr}};
+    const std::pair<const char*, bool> all[] = {
+        {"rhs", library_->rhs != nullptr},
+        {"rhs_jacobian", library_->rhs_jacobian != nullptr},
+        {"mass_matrix", library_->mass_matrix != nullptr},
+        {"forcing", library_->forcing != nullptr},
+        {"jacobians", library_->jacobians != nullptr},
+        {"outputs", library_->outputs != nullptr},
+        {"constraints", library_->constraints != nullptr},
+        {"constraint_matrix", library_->constraint_matrix != nullptr},
+        {"constraint_bias", library_->constraint_bias != nullptr},
+        {"constraint_jacobians", library_->constraint_jacobians != nullptr}};
     std::vector<std::string> present;
     for (const auto& [name, here] : all)
         if (here) present.emplace_back(name);
@@ -228,6 +266,33 @@ ModelView SharedModel::view(std::vector<double> params) const {
         v.outputs_from_qdd = [lib, p](double t, const double* q, const double* qd,
                                       const double* qdd, const double* u, double* y) {
             lib->outputs_from_qdd(t, q, qd, qdd, u, p->data(), y);
+        };
+    v.nh = nh_;
+    v.nc = nc_;
+    v.constraint_names = constraint_names_;
+    v.constraint_dependent = constraint_dependent_;
+    v.constraint_sources = constraint_sources_;
+    if (lib->constraints)
+        v.constraint_residuals = [lib, p](double t, const double* q, const double* qd,
+                                          const double* u, double* phi, double* r) {
+            lib->constraints(t, q, qd, u, p->data(), phi, r);
+        };
+    if (lib->constraint_matrix)
+        v.constraint_matrix = [lib, p](double t, const double* q, const double* u, double* B) {
+            lib->constraint_matrix(t, q, u, p->data(), B);
+        };
+    if (lib->constraint_bias)
+        v.constraint_bias = [lib, p](double t, const double* q, const double* qd, const double* u,
+                                     double* gamma, double* dr_dq) {
+            lib->constraint_bias(t, q, qd, u, p->data(), gamma, dr_dq);
+        };
+    if (lib->constraint_jacobians)
+        v.constraint_jacobians = [lib, p](double t, const double* q, const double* qd,
+                                          const double* u, const double* lambda, const double* a,
+                                          double* dBTl_dq, double* dacc_dq, double* dacc_dqd,
+                                          double* dBTl_du, double* dacc_du) {
+            lib->constraint_jacobians(t, q, qd, u, lambda, a, p->data(), dBTl_dq, dacc_dq, dacc_dqd,
+                                      dBTl_du, dacc_du);
         };
     return v;
 }

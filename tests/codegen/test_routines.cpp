@@ -29,7 +29,10 @@ TEST_CASE("the routine table has one row per RoutineId, in order, with distinct 
     }
     CHECK(!routine_named("inner_rhs"));
     CHECK(routine_names(abi_routines()) ==
-          "rhs, rhs_jacobian, mass_matrix, forcing, jacobians, outputs");
+          "rhs, rhs_jacobian, mass_matrix, forcing, jacobians, outputs, constraints, "
+          "constraint_matrix, constraint_bias, constraint_jacobians");
+    CHECK(routine_names(constraint_routines()) ==
+          "constraints, constraint_matrix, constraint_bias, constraint_jacobians");
 }
 
 TEST_CASE("the module's public routines are the table's, with its signatures") {
@@ -49,8 +52,9 @@ TEST_CASE("the module's public routines are the table's, with its signatures") {
             CHECK(r.arguments[i].name == s.arguments[i].name);
         CHECK(&m.routine(*r.id) == &r);
     }
-    // Everything but the sensitivities and the operating point (added apart).
-    CHECK(public_routines == static_cast<int>(routine_count) - 2);
+    // Everything but the sensitivities and the operating point (added apart) and
+    // the routines of constraints (this model has none).
+    CHECK(public_routines == static_cast<int>(routine_count) - 6);
     CHECK_THROWS_AS(m.routine(RoutineId::operating_point), yamsc::diag::InternalError);
 }
 

@@ -75,9 +75,10 @@ private:
         case ir::SymbolKind::acceleration:
             return eq_.a.at(i);
         case ir::SymbolKind::seed:
+        case ir::SymbolKind::multiplier:
             break;
         }
-        throw std::runtime_error("ir_to_ginac: a seed symbol");
+        throw std::runtime_error("ir_to_ginac: a seed or multiplier symbol");
     }
 
     static GiNaC::ex call(ir::Function f, const std::vector<std::pair<GiNaC::ex, double>>& a) {

@@ -13,10 +13,11 @@
 // Compile with `-shared -fPIC -fvisibility=hidden`: only the functions below are
 // exported, so the model's own symbols can never be interposed by the host.
 //
-// The routines (rhs, rhs_jacobian, mass_matrix, forcing, jacobians, outputs)
-// are optional: YAMSC_EXPORT_MODEL_INFO plus one YAMSC_EXPORT_<ROUTINE> per
-// routine the source defines. The loader requires the model information and
-// leaves a routine the library lacks empty in its views.
+// The routines (rhs, rhs_jacobian, mass_matrix, forcing, jacobians, outputs,
+// and for a model with constraints constraints, constraint_matrix,
+// constraint_bias, constraint_jacobians) are optional: YAMSC_EXPORT_MODEL_INFO plus one
+// YAMSC_EXPORT_<ROUTINE> per routine the source defines. The loader requires the model information
+// and leaves a routine the library lacks empty in its views.
 //
 // YAMSC_EXPORT_OUTPUTS also gives outputs_from_qdd (the outputs given the q''
 // of rhs, which the generated outputs calls: docs/generated-api.md): a
@@ -80,6 +81,21 @@ typedef void (*yamsc_outputs_from_qdd_bound_fn)(double t, const double* q, const
                                                 const void* params, double* y);
 typedef void (*yamsc_outputs_from_qdd_routines_fn)(yamsc_outputs_from_qdd_fn* with_array,
                                                    yamsc_outputs_from_qdd_bound_fn* with_bound);
+// Constraints (optional symbols; a library without them has none).
+typedef void (*yamsc_constraint_sizes_fn)(int* nh, int* nc);
+typedef const char* (*yamsc_constraint_row_fn)(int i, int* dependent, const char** source);
+typedef void (*yamsc_constraints_fn)(double t, const double* q, const double* qd, const double* u,
+                                     const double* p, double* phi, double* r);
+typedef void (*yamsc_constraint_matrix_fn)(double t, const double* q, const double* u,
+                                           const double* p, double* B);
+typedef void (*yamsc_constraint_bias_fn)(double t, const double* q, const double* qd,
+                                         const double* u, const double* p, double* gamma,
+                                         double* dr_dq);
+typedef void (*yamsc_constraint_jacobians_fn)(double t, const double* q, const double* qd,
+                                              const double* u, const double* lambda,
+                                              const double* a, const double* p, double* dBTl_dq,
+                                              double* dacc_dq, double* dacc_dqd, double* dBTl_du,
+                                              double* dacc_du);
 }
 
 // Name kinds of yamsc_name().
@@ -125,6 +141,27 @@ struct OutputsFromQdd<Model, std::void_t<decltype(&Model::outputs_from_qdd)>> {
         *bound = &with_bound;
     }
 };
+
+// The constraint rows of a Model (nh = nc = 0 when it has none).
+template <class Model, class = void> struct Constraints {
+    static void sizes(int* nh, int* nc) {
+        *nh = 0;
+        *nc = 0;
+    }
+    static const char* row(int, int*, const char**) { return nullptr; }
+};
+template <class Model> struct Constraints<Model, std::void_t<decltype(Model::nc)>> {
+    static void sizes(int* nh, int* nc) {
+        *nh = Model::nh;
+        *nc = Model::nc;
+    }
+    static const char* row(int i, int* dependent, const char** source) {
+        if (i < 0 || i >= Model::nc) return nullptr;
+        *dependent = Model::constraint_dependent[i];
+        *source = Model::constraint_sources[i];
+        return Model::constraint_names[i];
+    }
+};
 } // namespace yamsc_abi_detail
 
 // The sizes, names and parameters: every library exports these.
@@ -164,6 +201,13 @@ struct OutputsFromQdd<Model, std::void_t<decltype(&Model::outputs_from_qdd)>> {
     }                                                                                              \
     YAMSC_ABI_VISIBLE void yamsc_params_bind(const double* p, void* params) {                      \
         ::new (params) NS::Model::Params(NS::Model::params_from_array(p));                         \
+    }                                                                                              \
+    YAMSC_ABI_VISIBLE void yamsc_constraint_sizes(int* nh, int* nc) {                              \
+        yamsc_abi_detail::Constraints<NS::Model>::sizes(nh, nc);                                   \
+    }                                                                                              \
+    YAMSC_ABI_VISIBLE const char* yamsc_constraint_row(int i, int* dependent,                      \
+                                                       const char** source) {                      \
+        return yamsc_abi_detail::Constraints<NS::Model>::row(i, dependent, source);                \
     }                                                                                              \
     }
 
@@ -218,6 +262,33 @@ struct OutputsFromQdd<Model, std::void_t<decltype(&Model::outputs_from_qdd)>> {
         yamsc_abi_detail::OutputsFromQdd<NS::Model>::routines(with_array, with_bound);             \
     }
 
+// The routines of a model with constraints (docs/generated-api.md, Constraints).
+#define YAMSC_EXPORT_CONSTRAINTS(NS)                                                               \
+    extern "C" YAMSC_ABI_VISIBLE void yamsc_constraints(double t, const double* q,                 \
+                                                        const double* qd, const double* u,         \
+                                                        const double* p, double* phi, double* r) { \
+        NS::Model::constraints(t, q, qd, u, NS::Model::params_from_array(p), phi, r);              \
+    }
+#define YAMSC_EXPORT_CONSTRAINT_MATRIX(NS)                                                         \
+    extern "C" YAMSC_ABI_VISIBLE void yamsc_constraint_matrix(                                     \
+        double t, const double* q, const double* u, const double* p, double* B) {                  \
+        NS::Model::constraint_matrix(t, q, u, NS::Model::params_from_array(p), B);                 \
+    }
+#define YAMSC_EXPORT_CONSTRAINT_BIAS(NS)                                                           \
+    extern "C" YAMSC_ABI_VISIBLE void yamsc_constraint_bias(                                       \
+        double t, const double* q, const double* qd, const double* u, const double* p,             \
+        double* gamma, double* dr_dq) {                                                            \
+        NS::Model::constraint_bias(t, q, qd, u, NS::Model::params_from_array(p), gamma, dr_dq);    \
+    }
+#define YAMSC_EXPORT_CONSTRAINT_JACOBIANS(NS)                                                      \
+    extern "C" YAMSC_ABI_VISIBLE void yamsc_constraint_jacobians(                                  \
+        double t, const double* q, const double* qd, const double* u, const double* lambda,        \
+        const double* a, const double* p, double* dBTl_dq, double* dacc_dq, double* dacc_dqd,      \
+        double* dBTl_du, double* dacc_du) {                                                        \
+        NS::Model::constraint_jacobians(t, q, qd, u, lambda, a, NS::Model::params_from_array(p),   \
+                                        dBTl_dq, dacc_dq, dacc_dqd, dBTl_du, dacc_du);             \
+    }
+
 // Everything: a model compiled with all its routines (the generated default).
 #define YAMSC_EXPORT_MODEL(NS)                                                                     \
     YAMSC_EXPORT_MODEL_INFO(NS)                                                                    \
@@ -227,5 +298,19 @@ struct OutputsFromQdd<Model, std::void_t<decltype(&Model::outputs_from_qdd)>> {
     YAMSC_EXPORT_FORCING(NS)                                                                       \
     YAMSC_EXPORT_JACOBIANS(NS)                                                                     \
     YAMSC_EXPORT_OUTPUTS(NS)
+
+// Everything of a model with constraints: its rhs gives the constrained motion and
+// it has no rhs_jacobian (the runtime's constrained view forms it).
+#define YAMSC_EXPORT_CONSTRAINED_MODEL(NS)                                                         \
+    YAMSC_EXPORT_MODEL_INFO(NS)                                                                    \
+    YAMSC_EXPORT_RHS(NS)                                                                           \
+    YAMSC_EXPORT_MASS_MATRIX(NS)                                                                   \
+    YAMSC_EXPORT_FORCING(NS)                                                                       \
+    YAMSC_EXPORT_JACOBIANS(NS)                                                                     \
+    YAMSC_EXPORT_OUTPUTS(NS)                                                                       \
+    YAMSC_EXPORT_CONSTRAINTS(NS)                                                                   \
+    YAMSC_EXPORT_CONSTRAINT_MATRIX(NS)                                                             \
+    YAMSC_EXPORT_CONSTRAINT_BIAS(NS)                                                               \
+    YAMSC_EXPORT_CONSTRAINT_JACOBIANS(NS)
 
 #endif // YAMSC_ABI_EXPORT_HPP

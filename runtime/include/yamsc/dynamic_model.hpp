@@ -49,10 +49,14 @@ public:
 
 private:
     struct Library;
+    void read_constraints(Library& library, void* handle);
     std::shared_ptr<const Library> library_;
     std::string path_;
     int nq_ = 0, nu_ = 0, np_ = 0, ny_ = 0;
     std::vector<std::string> dof_names_, input_names_, param_names_, output_names_;
+    int nh_ = 0, nc_ = 0; // constraint rows (yamsc_constraint_sizes; 0 without)
+    std::vector<std::string> constraint_names_, constraint_sources_;
+    std::vector<int> constraint_dependent_;
 };
 
 } // namespace yamsc::runtime

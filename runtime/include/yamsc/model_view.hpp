@@ -104,6 +104,41 @@ template <class Model, class = void> struct has_outputs_from_qdd : std::false_ty
 template <class Model>
 struct has_outputs_from_qdd<Model, std::void_t<decltype(&Model::outputs_from_qdd)>>
     : std::true_type {};
+// A model with constraints has no generated rhs_jacobian (docs/generated-api.md).
+template <class Model, class = void> struct has_rhs_jacobian : std::false_type {};
+template <class Model>
+struct has_rhs_jacobian<Model, std::void_t<decltype(&Model::rhs_jacobian)>> : std::true_type {};
+template <class Model, class = void> struct has_constraints : std::false_type {};
+template <class Model>
+struct has_constraints<Model, std::void_t<decltype(Model::nc)>> : std::true_type {};
+
+// The constraint rows and routines of a generated model with constraints.
+template <class Model> void add_constraints(ModelView& v, const typename Model::Params& p) {
+    v.nh = Model::nh;
+    v.nc = Model::nc;
+    for (int i = 0; i < Model::nc; ++i) {
+        v.constraint_names.emplace_back(Model::constraint_names[i]);
+        v.constraint_dependent.push_back(Model::constraint_dependent[i]);
+        v.constraint_sources.emplace_back(Model::constraint_sources[i]);
+    }
+    v.constraint_residuals = [p](double t, const double* q, const double* qd, const double* u,
+                                 double* phi,
+                                 double* r) { Model::constraints(t, q, qd, u, p, phi, r); };
+    v.constraint_matrix = [p](double t, const double* q, const double* u, double* B) {
+        Model::constraint_matrix(t, q, u, p, B);
+    };
+    v.constraint_bias = [p](double t, const double* q, const double* qd, const double* u,
+                            double* gamma, double* dr_dq) {
+        Model::constraint_bias(t, q, qd, u, p, gamma, dr_dq);
+    };
+    v.constraint_jacobians = [p](double t, const double* q, const double* qd, const double* u,
+                                 const double* lambda, const double* a, double* dBTl_dq,
+                                 double* dacc_dq, double* dacc_dqd, double* dBTl_du,
+                                 double* dacc_du) {
+        Model::constraint_jacobians(t, q, qd, u, lambda, a, p, dBTl_dq, dacc_dq, dacc_dqd, dBTl_du,
+                                    dacc_du);
+    };
+}
 } // namespace detail
 
 /// A view of a generated C++ model. `Model` is the `<namespace>::Model` bundle the
@@ -120,9 +155,10 @@ template <class Model> ModelView from_generated(const typename Model::Params& pa
     v.rhs = [p](double t, const double* x, const double* u, double* xdot) {
         Model::rhs(t, x, u, p, xdot);
     };
-    v.rhs_jacobian = [p](double t, const double* x, const double* u, double* J) {
-        Model::rhs_jacobian(t, x, u, p, J);
-    };
+    if constexpr (detail::has_rhs_jacobian<Model>::value)
+        v.rhs_jacobian = [p](double t, const double* x, const double* u, double* J) {
+            Model::rhs_jacobian(t, x, u, p, J);
+        };
     v.mass_matrix = [p](double t, const double* q, const double* u, double* M) {
         Model::mass_matrix(t, q, u, p, M);
     };
@@ -138,6 +174,7 @@ template <class Model> ModelView from_generated(const typename Model::Params& pa
         v.outputs_from_qdd = [p](double t, const double* q, const double* qd, const double* qdd,
                                  const double* u,
                                  double* y) { Model::outputs_from_qdd(t, q, qd, qdd, u, p, y); };
+    if constexpr (detail::has_constraints<Model>::value) detail::add_constraints<Model>(v, p);
     return v;
 }
 
