@@ -68,20 +68,33 @@ inline Matrices matrices(const Parameters& p) {
     return m;
 }
 
-/// The four eigenvalues at forward speed v, sorted by real part then imaginary part.
-inline std::array<std::complex<double>, 4> eigenvalues(const Matrices& m, double g, double v) {
+/// Orders eigenvalues by real part, then imaginary part.
+inline bool by_real_then_imag(std::complex<double> a, std::complex<double> b) {
+    return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag();
+}
+
+/// The eigenvalues of a 4 x 4 matrix, sorted by_real_then_imag.
+inline std::array<std::complex<double>, 4> sorted_eigenvalues(const Eigen::Matrix4d& A) {
+    Eigen::EigenSolver<Eigen::Matrix4d> es(A, false);
+    std::array<std::complex<double>, 4> out;
+    for (int i = 0; i < 4; ++i) out[std::size_t(i)] = es.eigenvalues()[i];
+    std::sort(out.begin(), out.end(), by_real_then_imag);
+    return out;
+}
+
+/// The first-order form [0 I; -M^-1 (g K0 + v^2 K2)  -v M^-1 C1] at forward speed v.
+inline Eigen::Matrix4d state_matrix(const Matrices& m, double g, double v) {
     Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
     A.topRightCorner<2, 2>().setIdentity();
     const Eigen::Matrix2d Minv = m.M.inverse();
     A.bottomLeftCorner<2, 2>() = -Minv * (g * m.K0 + v * v * m.K2);
     A.bottomRightCorner<2, 2>() = -Minv * (v * m.C1);
-    Eigen::EigenSolver<Eigen::Matrix4d> es(A, false);
-    std::array<std::complex<double>, 4> out;
-    for (int i = 0; i < 4; ++i) out[std::size_t(i)] = es.eigenvalues()[i];
-    std::sort(out.begin(), out.end(), [](auto a, auto b) {
-        return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag();
-    });
-    return out;
+    return A;
+}
+
+/// The four eigenvalues at forward speed v, sorted by_real_then_imag.
+inline std::array<std::complex<double>, 4> eigenvalues(const Matrices& m, double g, double v) {
+    return sorted_eigenvalues(state_matrix(m, g, v));
 }
 
 /// The largest real part of the eigenvalues (the spectral abscissa).
@@ -165,9 +178,7 @@ inline std::array<TableRow, 11> published_table() {
     for (int i = 1; i <= 10; ++i) {
         std::array<C, 4> ev{C(capsize[i]), C(weave_re[i], -weave_im[i]),
                             C(weave_re[i], weave_im[i]), C(castor[i])};
-        std::sort(ev.begin(), ev.end(), [](auto a, auto b) {
-            return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag();
-        });
+        std::sort(ev.begin(), ev.end(), by_real_then_imag);
         t[std::size_t(i)] = {double(i), ev};
     }
     return t;

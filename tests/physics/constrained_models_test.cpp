@@ -106,23 +106,10 @@ struct Bicycle {
     }
 };
 
-std::array<std::complex<double>, 4> sorted_eigenvalues(const Eigen::Matrix4d& A) {
-    Eigen::EigenSolver<Eigen::Matrix4d> es(A, false);
-    std::array<std::complex<double>, 4> ev;
-    for (int i = 0; i < 4; ++i) ev[std::size_t(i)] = es.eigenvalues()[i];
-    std::sort(ev.begin(), ev.end(), [](auto a, auto b) {
-        return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag();
-    });
-    return ev;
-}
-
 /// The linearized benchmark from lean/steer initial values, by RK4 (h = 1e-4).
 std::vector<double> linear_lean(const bicycle::Matrices& mat, double v, double lean_rate, double dt,
                                 int rows) {
-    Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
-    A.topRightCorner<2, 2>().setIdentity();
-    A.bottomLeftCorner<2, 2>() = -mat.M.inverse() * (9.81 * mat.K0 + v * v * mat.K2);
-    A.bottomRightCorner<2, 2>() = -mat.M.inverse() * (v * mat.C1);
+    const Eigen::Matrix4d A = bicycle::state_matrix(mat, 9.81, v);
     Eigen::Vector4d z(0, 0, lean_rate, 0);
     std::vector<double> out{z[0]};
     const int sub = int(std::lround(dt / 1e-4));
@@ -145,7 +132,7 @@ TEST_CASE("whipple bicycle: lin gives the benchmark's eigenvalues from 0 to 10 m
     const bicycle::Parameters p;
     const auto mat = bicycle::matrices(p);
     for (const auto& row : bicycle::published_table()) {
-        const auto ev = sorted_eigenvalues(bike.lean_steer(row.v));
+        const auto ev = bicycle::sorted_eigenvalues(bike.lean_steer(row.v));
         const auto oracle = bicycle::eigenvalues(mat, p.g, row.v);
         for (std::size_t i = 0; i < 4; ++i) {
             INFO("v = " << row.v << ": " << ev[i] << " vs oracle " << oracle[i] << ", table "
@@ -184,7 +171,7 @@ TEST_CASE("whipple bicycle: the linear model's lean/steer block is the benchmark
 TEST_CASE("whipple bicycle: weave and capsize speeds from yamsc's linear model") {
     const Bicycle bike;
     auto abscissa = [&](double v) {
-        return bicycle::abscissa(sorted_eigenvalues(bike.lean_steer(v)));
+        return bicycle::abscissa(bicycle::sorted_eigenvalues(bike.lean_steer(v)));
     };
     const double weave = bicycle::bisect(abscissa, 4, 5);
     const double capsize = bicycle::bisect(abscissa, 6, 7);
