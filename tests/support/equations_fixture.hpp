@@ -125,6 +125,7 @@ inline Compiled compile_model(const symbolic::Equations& eq,
     ir::System s = lower::lower(eq);
     passes::derive_jacobians(s);
     passes::output_jacobians(s);
+    if (!s.constraints.empty()) passes::constraint_derivatives(s); // as the pass pipeline
     c.library = analysis::load_compiled_model(s, o);
     std::vector<double> p = c.library->default_params();
     for (const auto& [name, value] : params) {
