@@ -39,6 +39,7 @@
 //   constraint_matrix     17 adds, 26 muls, 0 divs, 6 calls
 //   constraint_bias       45 adds, 47 muls, 0 divs, 6 calls
 //   constraint_jacobians  137 adds, 101 muls, 0 divs, 6 calls
+//   mass_action_jacobian  5 adds, 18 muls, 0 divs, 2 calls
 //   operating_point       0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step              396 adds, 575 muls, 25 divs, 24 calls
 
@@ -579,6 +580,27 @@ void four_bar_constraint_jacobians(four_bar_real t, const four_bar_real* q, cons
     dBTl_du[2] = 0.0;
     dacc_du[0] = 0.0;
     dacc_du[1] = 0.0;
+}
+
+// d(M a)/dq (nq x nq) for a given vector a
+void four_bar_mass_action_jacobian(four_bar_real t, const four_bar_real* q, const four_bar_real* a, const four_bar_real* u, const four_bar_params* p, four_bar_real* dMa_dq) {
+    (void)t;
+    (void)u;
+    const double t0 = cos(q[1]);
+    const double t1 = sin(q[1]);
+    const double t2 = p->m3*t1;
+    const double t3 = p->r2*p->r2*a[0]*t0*t2;
+    const double t4 = p->r2*a[0];
+    const double t5 = t4*(p->r3*t2);
+    dMa_dq[0] = 0.0;
+    dMa_dq[1] = 2.0*t3 - 0.5*t5 - 0.5*(2.0*t3 + p->r2*(p->r3*(a[0] + a[1]) + 2.0*t0*t4)*t2);
+    dMa_dq[2] = 0.0;
+    dMa_dq[3] = 0.0;
+    dMa_dq[4] = -0.5*t5;
+    dMa_dq[5] = 0.0;
+    dMa_dq[6] = 0.0;
+    dMa_dq[7] = 0.0;
+    dMa_dq[8] = 0.0;
 }
 
 // the model's operating point (no linearize block: zeros)

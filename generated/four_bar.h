@@ -39,6 +39,7 @@
 //   constraint_matrix     17 adds, 26 muls, 0 divs, 6 calls
 //   constraint_bias       45 adds, 47 muls, 0 divs, 6 calls
 //   constraint_jacobians  137 adds, 101 muls, 0 divs, 6 calls
+//   mass_action_jacobian  5 adds, 18 muls, 0 divs, 2 calls
 //   operating_point       0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step              396 adds, 575 muls, 25 divs, 24 calls
 
@@ -108,6 +109,8 @@ void four_bar_constraint_matrix(four_bar_real t, const four_bar_real* q, const f
 void four_bar_constraint_bias(four_bar_real t, const four_bar_real* q, const four_bar_real* qd, const four_bar_real* u, const four_bar_params* p, four_bar_real* gamma, four_bar_real* dr_dq);
 // d(B^T lambda)/dq (nq x nq), d(B a + gamma)/dq (nc x nq), dgamma/dq' (nc x nq), d(B^T lambda)/du (nq x nu), d(B a + gamma)/du (nc x nu)
 void four_bar_constraint_jacobians(four_bar_real t, const four_bar_real* q, const four_bar_real* qd, const four_bar_real* u, const four_bar_real* lambda, const four_bar_real* a, const four_bar_params* p, four_bar_real* dBTl_dq, four_bar_real* dacc_dq, four_bar_real* dacc_dqd, four_bar_real* dBTl_du, four_bar_real* dacc_du);
+// d(M a)/dq (nq x nq) for a given vector a
+void four_bar_mass_action_jacobian(four_bar_real t, const four_bar_real* q, const four_bar_real* a, const four_bar_real* u, const four_bar_params* p, four_bar_real* dMa_dq);
 // the model's operating point (no linearize block: zeros)
 void four_bar_operating_point(const four_bar_params* p, four_bar_real* q0, four_bar_real* qd0, four_bar_real* u0);
 // x += one classical RK4 step of h from t (x = [q, q'], u held over the step)

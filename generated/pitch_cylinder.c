@@ -49,6 +49,7 @@
 //   constraint_matrix     24 adds, 57 muls, 0 divs, 6 calls
 //   constraint_bias       55 adds, 108 muls, 0 divs, 6 calls
 //   constraint_jacobians  110 adds, 159 muls, 0 divs, 6 calls
+//   mass_action_jacobian  40 adds, 115 muls, 0 divs, 4 calls
 //   operating_point       0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step              730 adds, 1505 muls, 29 divs, 24 calls
 
@@ -786,6 +787,58 @@ void pitch_cylinder_constraint_jacobians(pitch_cylinder_real t, const pitch_cyli
     dacc_du[1] = 0.0;
     dacc_du[2] = 0.0;
     dacc_du[3] = 0.0;
+}
+
+// d(M a)/dq (nq x nq) for a given vector a
+void pitch_cylinder_mass_action_jacobian(pitch_cylinder_real t, const pitch_cylinder_real* q, const pitch_cylinder_real* a, const pitch_cylinder_real* u, const pitch_cylinder_params* p, pitch_cylinder_real* dMa_dq) {
+    (void)t;
+    (void)u;
+    const double t0 = sin(q[1]);
+    const double t1 = cos(q[1]);
+    const double t2 = a[0]*t1;
+    const double t3 = a[0]*p->R_h;
+    const double t4 = p->m_b*p->z_b;
+    const double t5 = (p->z_b*t2 + t1*t3)*t4;
+    const double t6 = t0*a[0];
+    const double t7 = (p->z_b*t6 + t0*t3)*t4;
+    const double t8 = sin(q[2]);
+    const double t9 = cos(q[2]);
+    const double t10 = a[0]*t8;
+    const double t11 = t10*(p->m_barrel*t9);
+    const double t12 = p->R_h*p->R_h*t11;
+    const double t13 = a[0]*t9;
+    const double t14 = p->m_barrel*p->L_barrel;
+    const double t15 = p->R_h*t13;
+    const double t16 = q[3]*a[2];
+    const double t17 = 2.0*t15 + p->L_rod*a[2] - 2.0*t16;
+    const double t18 = t8*p->m_rod;
+    const double t19 = t9*p->m_rod;
+    const double t20 = p->R_h*p->R_h*t10*t19;
+    const double t21 = p->L_rod*t10;
+    const double t22 = p->y_c + q[3]*t8;
+    const double t23 = t21 - 2.0*a[0]*t22;
+    const double t24 = p->m_rod*p->L_rod;
+    const double t25 = 2.0*q[3]*t13 - p->L_rod*t13;
+    const double t26 = p->R_h*t10;
+    const double t27 = p->R_h*p->m_rod;
+    const double t28 = t9*t27;
+    const double t29 = p->m_rod*t22;
+    dMa_dq[0] = 0.0;
+    dMa_dq[1] = t0*(t5 + p->J_edge*t2) + t1*(p->J_edge*t6 + t7) - t0*(t5 + p->J_flap*t2) - t1*(p->J_flap*t6 + t7);
+    dMa_dq[2] = 2.0*t12 + 0.5*p->y_c*t13*t14 + 0.08333333333333333*(t9*(3.0*t23*t24 + p->m_rod*p->L_rod*p->L_rod*t10) - t8*(3.0*t25*t24 - p->m_rod*p->L_rod*p->L_rod*t13)) + 0.08333333333333333*(4.0*p->L_barrel*p->L_barrel*t11 + t9*(3.0*(p->L_barrel*t10 + 2.0*p->y_c*a[0])*t14 + p->m_barrel*p->L_barrel*p->L_barrel*t10)) + 0.5*(p->R_h*p->m_barrel*t8*(p->L_barrel*a[2] - 2.0*t15) - 2.0*t12) + t20 - 0.5*(p->R_h*t17*t18 + 2.0*t20) - (a[3] - t26)*t28 - 0.5*(q[3]*t23*t19 - t25*t29);
+    dMa_dq[3] = -a[2]*t28 - 0.5*a[0]*t8*t8*t24 - 0.5*(t23*t18 - 2.0*t10*t29);
+    dMa_dq[4] = 0.0;
+    dMa_dq[5] = 0.0;
+    dMa_dq[6] = 0.0;
+    dMa_dq[7] = 0.0;
+    dMa_dq[8] = 0.0;
+    dMa_dq[9] = 0.0;
+    dMa_dq[10] = q[3]*t10*t27 + 0.5*t14*t26 - 0.5*t27*t21;
+    dMa_dq[11] = -0.5*a[2]*t24 - 0.5*(p->m_rod*t17 - 2.0*p->m_rod*t16);
+    dMa_dq[12] = 0.0;
+    dMa_dq[13] = 0.0;
+    dMa_dq[14] = -t13*t27;
+    dMa_dq[15] = 0.0;
 }
 
 // the model's operating point (no linearize block: zeros)

@@ -49,6 +49,7 @@
 //   constraint_matrix     24 adds, 57 muls, 0 divs, 6 calls
 //   constraint_bias       55 adds, 108 muls, 0 divs, 6 calls
 //   constraint_jacobians  110 adds, 159 muls, 0 divs, 6 calls
+//   mass_action_jacobian  40 adds, 115 muls, 0 divs, 4 calls
 //   operating_point       0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step              730 adds, 1505 muls, 29 divs, 24 calls
 
@@ -126,6 +127,8 @@ void pitch_cylinder_constraint_matrix(pitch_cylinder_real t, const pitch_cylinde
 void pitch_cylinder_constraint_bias(pitch_cylinder_real t, const pitch_cylinder_real* q, const pitch_cylinder_real* qd, const pitch_cylinder_real* u, const pitch_cylinder_params* p, pitch_cylinder_real* gamma, pitch_cylinder_real* dr_dq);
 // d(B^T lambda)/dq (nq x nq), d(B a + gamma)/dq (nc x nq), dgamma/dq' (nc x nq), d(B^T lambda)/du (nq x nu), d(B a + gamma)/du (nc x nu)
 void pitch_cylinder_constraint_jacobians(pitch_cylinder_real t, const pitch_cylinder_real* q, const pitch_cylinder_real* qd, const pitch_cylinder_real* u, const pitch_cylinder_real* lambda, const pitch_cylinder_real* a, const pitch_cylinder_params* p, pitch_cylinder_real* dBTl_dq, pitch_cylinder_real* dacc_dq, pitch_cylinder_real* dacc_dqd, pitch_cylinder_real* dBTl_du, pitch_cylinder_real* dacc_du);
+// d(M a)/dq (nq x nq) for a given vector a
+void pitch_cylinder_mass_action_jacobian(pitch_cylinder_real t, const pitch_cylinder_real* q, const pitch_cylinder_real* a, const pitch_cylinder_real* u, const pitch_cylinder_params* p, pitch_cylinder_real* dMa_dq);
 // the model's operating point (no linearize block: zeros)
 void pitch_cylinder_operating_point(const pitch_cylinder_params* p, pitch_cylinder_real* q0, pitch_cylinder_real* qd0, pitch_cylinder_real* u0);
 // x += one classical RK4 step of h from t (x = [q, q'], u held over the step)

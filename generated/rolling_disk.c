@@ -35,6 +35,7 @@
 //   constraint_matrix     29 adds, 66 muls, 10 divs, 7 calls
 //   constraint_bias       79 adds, 153 muls, 18 divs, 8 calls
 //   constraint_jacobians  370 adds, 599 muls, 88 divs, 9 calls
+//   mass_action_jacobian  51 adds, 124 muls, 0 divs, 6 calls
 //   operating_point       0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step              904 adds, 1783 muls, 145 divs, 32 calls
 
@@ -1028,6 +1029,89 @@ void rolling_disk_constraint_jacobians(rolling_disk_real t, const rolling_disk_r
     double w[133];
     rolling_disk_constraint_jacobians_part0(t, q, qd, u, lambda, a, p, dBTl_dq, dacc_dq, dacc_dqd, dBTl_du, dacc_du, w);
     rolling_disk_constraint_jacobians_part1(t, q, qd, u, lambda, a, p, dBTl_dq, dacc_dq, dacc_dqd, dBTl_du, dacc_du, w);
+}
+
+// d(M a)/dq (nq x nq) for a given vector a
+void rolling_disk_mass_action_jacobian(rolling_disk_real t, const rolling_disk_real* q, const rolling_disk_real* a, const rolling_disk_real* u, const rolling_disk_params* p, rolling_disk_real* dMa_dq) {
+    (void)t;
+    (void)u;
+    const double t0 = sin(q[2]);
+    const double t1 = sin(q[3]);
+    const double t2 = sin(q[4]);
+    const double t3 = t1*t2;
+    const double t4 = cos(q[4]);
+    const double t5 = cos(q[2]);
+    const double t6 = t4*t5;
+    const double t7 = t0*t3 - t6;
+    const double t8 = t0*t4;
+    const double t9 = t8 + t5*t3;
+    const double t10 = a[1]*t7 + a[0]*t9;
+    const double t11 = p->m*t7;
+    const double t12 = t1*t4;
+    const double t13 = p->r*a[2];
+    const double t14 = t12*t13 + a[1]*t9 - a[0]*t7;
+    const double t15 = p->m*t14;
+    const double t16 = t5*t2;
+    const double t17 = t0*t12 + t16;
+    const double t18 = t0*t2;
+    const double t19 = t18 - t5*t12;
+    const double t20 = a[1]*t17 - a[0]*t19;
+    const double t21 = p->m*t17;
+    const double t22 = t3*t13 + a[0]*t17 + a[1]*t19;
+    const double t23 = p->m*t22;
+    const double t24 = cos(q[3]);
+    const double t25 = t5*t24;
+    const double t26 = a[1]*t25;
+    const double t27 = t0*t24;
+    const double t28 = a[0]*t27;
+    const double t29 = t26 - p->r*a[3] - t28;
+    const double t30 = p->m*t24;
+    const double t31 = t5*t29;
+    const double t32 = a[0]*t25 + a[1]*t27;
+    const double t33 = t0*t30;
+    const double t34 = p->m*t1;
+    const double t35 = t0*t29;
+    const double t36 = a[0]*t0*t1 - a[1]*t1*t5;
+    const double t37 = t22*t30;
+    const double t38 = a[2]*t24;
+    const double t39 = t2*p->r;
+    const double t40 = t4*t28 + t38*t39 - t4*t26;
+    const double t41 = t4*p->r;
+    const double t42 = t2*t28 - t38*t41 - t2*t26;
+    const double t43 = t14*t30;
+    const double t44 = t5*t30;
+    const double t45 = p->m*t9;
+    const double t46 = p->m*t19;
+    const double t47 = t34*t41;
+    const double t48 = t34*t39;
+    const double t49 = a[2]*t1;
+    const double t50 = t49*t30;
+    const double t51 = p->m*p->r;
+    dMa_dq[0] = 0.0;
+    dMa_dq[1] = 0.0;
+    dMa_dq[2] = t10*t11 + t20*t21 + t32*t33 - t9*t15 - t19*t23 - t30*t31;
+    dMa_dq[3] = t34*t35 + t8*t37 + t40*t21 + t42*t11 - t36*t33 - t18*t43;
+    dMa_dq[4] = 0.0;
+    dMa_dq[5] = 0.0;
+    dMa_dq[6] = 0.0;
+    dMa_dq[7] = t20*t46 + t17*t23 - t30*t35 - t32*t44 - t7*t15 - t10*t45;
+    dMa_dq[8] = t36*t44 + t16*t43 + t40*t46 - t34*t31 - t42*t45 - t6*t37;
+    dMa_dq[9] = 0.0;
+    dMa_dq[10] = 0.0;
+    dMa_dq[11] = 0.0;
+    dMa_dq[12] = t20*t48 - t10*t47;
+    dMa_dq[13] = t41*t43 + t40*t48 + t39*t37 + 0.5*(p->r*p->r*(a[4] + t49)*t30 + p->r*p->r*t50) - t42*t47 - 0.25*(p->r*p->r*t4*(t4*t38 + a[3]*t2)*t34 + p->r*p->r*t4*t4*t50) - 0.25*(p->r*p->r*t2*t2*t50 + p->r*p->r*t2*(t2*t38 - a[3]*t4)*t34);
+    dMa_dq[14] = 0.0;
+    dMa_dq[15] = 0.0;
+    dMa_dq[16] = 0.0;
+    dMa_dq[17] = t32*t51;
+    dMa_dq[18] = -t36*t51;
+    dMa_dq[19] = 0.0;
+    dMa_dq[20] = 0.0;
+    dMa_dq[21] = 0.0;
+    dMa_dq[22] = 0.0;
+    dMa_dq[23] = 0.5*p->r*p->r*a[2]*t30;
+    dMa_dq[24] = 0.0;
 }
 
 // the model's operating point (no linearize block: zeros)

@@ -35,6 +35,7 @@
 //   constraint_matrix     29 adds, 66 muls, 10 divs, 7 calls
 //   constraint_bias       79 adds, 153 muls, 18 divs, 8 calls
 //   constraint_jacobians  370 adds, 599 muls, 88 divs, 9 calls
+//   mass_action_jacobian  51 adds, 124 muls, 0 divs, 6 calls
 //   operating_point       0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step              904 adds, 1783 muls, 145 divs, 32 calls
 
@@ -99,6 +100,8 @@ void rolling_disk_constraint_matrix(rolling_disk_real t, const rolling_disk_real
 void rolling_disk_constraint_bias(rolling_disk_real t, const rolling_disk_real* q, const rolling_disk_real* qd, const rolling_disk_real* u, const rolling_disk_params* p, rolling_disk_real* gamma, rolling_disk_real* dr_dq);
 // d(B^T lambda)/dq (nq x nq), d(B a + gamma)/dq (nc x nq), dgamma/dq' (nc x nq), d(B^T lambda)/du (nq x nu), d(B a + gamma)/du (nc x nu)
 void rolling_disk_constraint_jacobians(rolling_disk_real t, const rolling_disk_real* q, const rolling_disk_real* qd, const rolling_disk_real* u, const rolling_disk_real* lambda, const rolling_disk_real* a, const rolling_disk_params* p, rolling_disk_real* dBTl_dq, rolling_disk_real* dacc_dq, rolling_disk_real* dacc_dqd, rolling_disk_real* dBTl_du, rolling_disk_real* dacc_du);
+// d(M a)/dq (nq x nq) for a given vector a
+void rolling_disk_mass_action_jacobian(rolling_disk_real t, const rolling_disk_real* q, const rolling_disk_real* a, const rolling_disk_real* u, const rolling_disk_params* p, rolling_disk_real* dMa_dq);
 // the model's operating point (no linearize block: zeros)
 void rolling_disk_operating_point(const rolling_disk_params* p, rolling_disk_real* q0, rolling_disk_real* qd0, rolling_disk_real* u0);
 // x += one classical RK4 step of h from t (x = [q, q'], u held over the step)

@@ -34,6 +34,7 @@
 //   constraint_matrix     29 adds, 66 muls, 10 divs, 7 calls
 //   constraint_bias       79 adds, 153 muls, 18 divs, 8 calls
 //   constraint_jacobians  370 adds, 599 muls, 88 divs, 9 calls
+//   mass_action_jacobian  51 adds, 124 muls, 0 divs, 6 calls
 //   operating_point       0 adds, 0 muls, 0 divs, 0 calls
 
 #pragma once
@@ -87,6 +88,8 @@ void constraint_matrix(double t, const double* q, const double* u, const Params&
 void constraint_bias(double t, const double* q, const double* qd, const double* u, const Params& p, double* gamma, double* dr_dq);
 // d(B^T lambda)/dq (nq x nq), d(B a + gamma)/dq (nc x nq), dgamma/dq' (nc x nq), d(B^T lambda)/du (nq x nu), d(B a + gamma)/du (nc x nu)
 void constraint_jacobians(double t, const double* q, const double* qd, const double* u, const double* lambda, const double* a, const Params& p, double* dBTl_dq, double* dacc_dq, double* dacc_dqd, double* dBTl_du, double* dacc_du);
+// d(M a)/dq (nq x nq) for a given vector a
+void mass_action_jacobian(double t, const double* q, const double* a, const double* u, const Params& p, double* dMa_dq);
 // the model's operating point (no linearize block: zeros)
 void operating_point(const Params& p, double* q0, double* qd0, double* u0);
 
@@ -132,6 +135,9 @@ struct Model {
     }
     static void constraint_jacobians(double t, const double* q, const double* qd, const double* u, const double* lambda, const double* a, const Params& p, double* dBTl_dq, double* dacc_dq, double* dacc_dqd, double* dBTl_du, double* dacc_du) {
         ::rolling_disk::constraint_jacobians(t, q, qd, u, lambda, a, p, dBTl_dq, dacc_dq, dacc_dqd, dBTl_du, dacc_du);
+    }
+    static void mass_action_jacobian(double t, const double* q, const double* a, const double* u, const Params& p, double* dMa_dq) {
+        ::rolling_disk::mass_action_jacobian(t, q, a, u, p, dMa_dq);
     }
     static void operating_point(const Params& p, double* q0, double* qd0, double* u0) {
         ::rolling_disk::operating_point(p, q0, qd0, u0);

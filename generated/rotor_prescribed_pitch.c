@@ -46,6 +46,7 @@
 //   constraint_matrix     0 adds, 0 muls, 0 divs, 0 calls
 //   constraint_bias       0 adds, 0 muls, 0 divs, 0 calls
 //   constraint_jacobians  0 adds, 0 muls, 0 divs, 0 calls
+//   mass_action_jacobian  68 adds, 174 muls, 0 divs, 8 calls
 //   operating_point       0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step              568 adds, 1015 muls, 33 divs, 40 calls
 
@@ -851,6 +852,94 @@ void rotor_prescribed_pitch_constraint_jacobians(rotor_prescribed_pitch_real t, 
     dacc_du[5] = 0.0;
     dacc_du[6] = 0.0;
     dacc_du[7] = -1.0;
+}
+
+// d(M a)/dq (nq x nq) for a given vector a
+void rotor_prescribed_pitch_mass_action_jacobian(rotor_prescribed_pitch_real t, const rotor_prescribed_pitch_real* q, const rotor_prescribed_pitch_real* a, const rotor_prescribed_pitch_real* u, const rotor_prescribed_pitch_params* p, rotor_prescribed_pitch_real* dMa_dq) {
+    (void)t;
+    (void)u;
+    const double t0 = cos(q[1]);
+    const double t1 = sin(q[3]);
+    const double t2 = sin(q[1]);
+    const double t3 = a[0]*t2;
+    const double t4 = t0*t3;
+    const double t5 = cos(q[3]);
+    const double t6 = p->R_h*a[0];
+    const double t7 = t2*t5;
+    const double t8 = a[3] - t3;
+    const double t9 = t6*t7 - p->z_b*t8;
+    const double t10 = p->m_b*p->z_b;
+    const double t11 = a[0]*t0;
+    const double t12 = t0*t5;
+    const double t13 = p->z_b*t11 + t6*t12;
+    const double t14 = p->J_edge*t11 + t13*t10;
+    const double t15 = t5*t3;
+    const double t16 = p->z_b*t15 + t2*t6;
+    const double t17 = t16*t10 + p->J_flap*t15;
+    const double t18 = t5*t11 - a[1]*t1;
+    const double t19 = p->z_b*t18 + t0*t6;
+    const double t20 = t19*t10 + p->J_flap*t18;
+    const double t21 = p->R_h*p->m_b;
+    const double t22 = t9*t21;
+    const double t23 = a[1]*t5 + t1*t11;
+    const double t24 = t1*t2;
+    const double t25 = p->J_pitch*t23;
+    const double t26 = sin(q[2]);
+    const double t27 = cos(q[2]);
+    const double t28 = sin(q[4]);
+    const double t29 = a[0]*t26;
+    const double t30 = t27*t29;
+    const double t31 = cos(q[4]);
+    const double t32 = a[0]*p->z_b;
+    const double t33 = t27*t31;
+    const double t34 = t27*t32 + t6*t33;
+    const double t35 = t26*t31;
+    const double t36 = a[4] - t29;
+    const double t37 = p->z_b*t36 - t6*t35;
+    const double t38 = a[0]*t27;
+    const double t39 = a[2]*t28 - t31*t38;
+    const double t40 = t27*t6 - p->z_b*t39;
+    const double t41 = p->J_flap*t39 - t40*t10;
+    const double t42 = t31*t29;
+    const double t43 = p->z_b*t42 + t26*t6;
+    const double t44 = p->J_flap*t42 + t43*t10;
+    const double t45 = t28*t38 + a[2]*t31;
+    const double t46 = p->J_pitch*t28;
+    const double t47 = t45*t46;
+    const double t48 = t34*t10 + p->J_edge*t38;
+    const double t49 = p->z_b*t21;
+    const double t50 = p->m_b*a[0];
+    const double t51 = p->R_h*p->R_h*t1*t5*t2*t2*t50;
+    const double t52 = p->J_flap*t23 + p->m_b*p->z_b*p->z_b*t23;
+    const double t53 = t1*p->J_pitch;
+    const double t54 = t28*t21;
+    const double t55 = p->R_h*p->R_h*t26*t26*t31*t28*t50;
+    const double t56 = p->m_b*p->z_b*p->z_b*t45 + p->J_flap*t45;
+    dMa_dq[0] = 0.0;
+    dMa_dq[1] = 2.0*p->R_h*p->R_h*p->m_b*t1*t1*t4 + t0*(t9*t10 - p->J_edge*t8) + t2*t14 + t13*t21*t7 + t12*t22 - t17*t12 - t20*t7 - t0*t16*t21 - t2*t19*t21 - p->J_pitch*t1*t1*t4 - t24*t25;
+    dMa_dq[2] = 2.0*p->R_h*p->R_h*p->m_b*t28*t28*t30 + t34*t21*t35 + t41*t35 + t26*t48 - t37*t21*t33 - t44*t33 - t27*t43*t21 - t26*t40*t21 - p->J_pitch*t28*t28*t30 - t26*t47 - t27*(p->J_edge*t36 + t37*t10);
+    dMa_dq[3] = 2.0*t51 + t0*t18*t53 + t12*t25 - t0*t23*t49 - t1*t2*t2*t21*t32 - t24*t22 - t51 - t0*t1*t20 - t52*t12;
+    dMa_dq[4] = 2.0*t55 + p->J_pitch*t45*t33 + t27*t28*t41 + t26*t37*t54 - t26*t26*t32*t54 - t27*t45*t49 - t27*t39*t46 - t56*t33 - t55;
+    dMa_dq[5] = 0.0;
+    dMa_dq[6] = t1*t17 - t53*t15;
+    dMa_dq[7] = 0.0;
+    dMa_dq[8] = t1*t52 + p->J_pitch*t5*t18 - t5*t20 - t23*t53;
+    dMa_dq[9] = 0.0;
+    dMa_dq[10] = 0.0;
+    dMa_dq[11] = 0.0;
+    dMa_dq[12] = t28*t44 - t46*t42;
+    dMa_dq[13] = 0.0;
+    dMa_dq[14] = t28*t56 + t31*t41 - p->J_pitch*t31*t39 - t47;
+    dMa_dq[15] = 0.0;
+    dMa_dq[16] = -t14;
+    dMa_dq[17] = 0.0;
+    dMa_dq[18] = t1*t3*t49;
+    dMa_dq[19] = 0.0;
+    dMa_dq[20] = 0.0;
+    dMa_dq[21] = 0.0;
+    dMa_dq[22] = -t48;
+    dMa_dq[23] = 0.0;
+    dMa_dq[24] = t28*t29*t49;
 }
 
 // the model's operating point (no linearize block: zeros)

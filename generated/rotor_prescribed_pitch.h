@@ -46,6 +46,7 @@
 //   constraint_matrix     0 adds, 0 muls, 0 divs, 0 calls
 //   constraint_bias       0 adds, 0 muls, 0 divs, 0 calls
 //   constraint_jacobians  0 adds, 0 muls, 0 divs, 0 calls
+//   mass_action_jacobian  68 adds, 174 muls, 0 divs, 8 calls
 //   operating_point       0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step              568 adds, 1015 muls, 33 divs, 40 calls
 
@@ -117,6 +118,8 @@ void rotor_prescribed_pitch_constraint_matrix(rotor_prescribed_pitch_real t, con
 void rotor_prescribed_pitch_constraint_bias(rotor_prescribed_pitch_real t, const rotor_prescribed_pitch_real* q, const rotor_prescribed_pitch_real* qd, const rotor_prescribed_pitch_real* u, const rotor_prescribed_pitch_params* p, rotor_prescribed_pitch_real* gamma, rotor_prescribed_pitch_real* dr_dq);
 // d(B^T lambda)/dq (nq x nq), d(B a + gamma)/dq (nc x nq), dgamma/dq' (nc x nq), d(B^T lambda)/du (nq x nu), d(B a + gamma)/du (nc x nu)
 void rotor_prescribed_pitch_constraint_jacobians(rotor_prescribed_pitch_real t, const rotor_prescribed_pitch_real* q, const rotor_prescribed_pitch_real* qd, const rotor_prescribed_pitch_real* u, const rotor_prescribed_pitch_real* lambda, const rotor_prescribed_pitch_real* a, const rotor_prescribed_pitch_params* p, rotor_prescribed_pitch_real* dBTl_dq, rotor_prescribed_pitch_real* dacc_dq, rotor_prescribed_pitch_real* dacc_dqd, rotor_prescribed_pitch_real* dBTl_du, rotor_prescribed_pitch_real* dacc_du);
+// d(M a)/dq (nq x nq) for a given vector a
+void rotor_prescribed_pitch_mass_action_jacobian(rotor_prescribed_pitch_real t, const rotor_prescribed_pitch_real* q, const rotor_prescribed_pitch_real* a, const rotor_prescribed_pitch_real* u, const rotor_prescribed_pitch_params* p, rotor_prescribed_pitch_real* dMa_dq);
 // the model's operating point (no linearize block: zeros)
 void rotor_prescribed_pitch_operating_point(const rotor_prescribed_pitch_params* p, rotor_prescribed_pitch_real* q0, rotor_prescribed_pitch_real* qd0, rotor_prescribed_pitch_real* u0);
 // x += one classical RK4 step of h from t (x = [q, q'], u held over the step)

@@ -39,6 +39,7 @@
 //   constraint_matrix     14 adds, 20 muls, 0 divs, 4 calls
 //   constraint_bias       40 adds, 41 muls, 0 divs, 4 calls
 //   constraint_jacobians  127 adds, 95 muls, 0 divs, 4 calls
+//   mass_action_jacobian  5 adds, 18 muls, 0 divs, 2 calls
 //   operating_point       0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step              392 adds, 527 muls, 25 divs, 16 calls
 
@@ -551,6 +552,27 @@ void slider_crank_constraint_jacobians(slider_crank_real t, const slider_crank_r
     dacc_du[1] = 0.0;
     dacc_du[2] = 0.0;
     dacc_du[3] = 0.0;
+}
+
+// d(M a)/dq (nq x nq) for a given vector a
+void slider_crank_mass_action_jacobian(slider_crank_real t, const slider_crank_real* q, const slider_crank_real* a, const slider_crank_real* u, const slider_crank_params* p, slider_crank_real* dMa_dq) {
+    (void)t;
+    (void)u;
+    const double t0 = cos(q[1]);
+    const double t1 = sin(q[1]);
+    const double t2 = p->m_rod*t1;
+    const double t3 = p->r*p->r*a[0]*t0*t2;
+    const double t4 = p->r*a[0];
+    const double t5 = t4*(p->l*t2);
+    dMa_dq[0] = 0.0;
+    dMa_dq[1] = 2.0*t3 - 0.5*t5 - 0.5*(p->r*(p->l*(a[0] + a[1]) + 2.0*t0*t4)*t2 + 2.0*t3);
+    dMa_dq[2] = 0.0;
+    dMa_dq[3] = 0.0;
+    dMa_dq[4] = -0.5*t5;
+    dMa_dq[5] = 0.0;
+    dMa_dq[6] = 0.0;
+    dMa_dq[7] = 0.0;
+    dMa_dq[8] = 0.0;
 }
 
 // the model's operating point (no linearize block: zeros)

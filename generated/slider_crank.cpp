@@ -38,6 +38,7 @@
 //   constraint_matrix     14 adds, 20 muls, 0 divs, 4 calls
 //   constraint_bias       40 adds, 41 muls, 0 divs, 4 calls
 //   constraint_jacobians  127 adds, 95 muls, 0 divs, 4 calls
+//   mass_action_jacobian  5 adds, 18 muls, 0 divs, 2 calls
 //   operating_point       0 adds, 0 muls, 0 divs, 0 calls
 
 #include "slider_crank.hpp"
@@ -533,6 +534,27 @@ void constraint_jacobians(double t, const double* q, const double* qd, const dou
     dacc_du[1] = 0.0;
     dacc_du[2] = 0.0;
     dacc_du[3] = 0.0;
+}
+
+// d(M a)/dq (nq x nq) for a given vector a
+void mass_action_jacobian(double t, const double* q, const double* a, const double* u, const Params& p, double* dMa_dq) {
+    (void)t;
+    (void)u;
+    const double t0 = std::cos(q[1]);
+    const double t1 = std::sin(q[1]);
+    const double t2 = p.m_rod*t1;
+    const double t3 = p.r*p.r*a[0]*t0*t2;
+    const double t4 = p.r*a[0];
+    const double t5 = t4*(p.l*t2);
+    dMa_dq[0] = 0.0;
+    dMa_dq[1] = 2.0*t3 - 0.5*t5 - 0.5*(p.r*(p.l*(a[0] + a[1]) + 2.0*t0*t4)*t2 + 2.0*t3);
+    dMa_dq[2] = 0.0;
+    dMa_dq[3] = 0.0;
+    dMa_dq[4] = -0.5*t5;
+    dMa_dq[5] = 0.0;
+    dMa_dq[6] = 0.0;
+    dMa_dq[7] = 0.0;
+    dMa_dq[8] = 0.0;
 }
 
 // the model's operating point (no linearize block: zeros)

@@ -39,6 +39,7 @@
 //   constraint_matrix     14 adds, 20 muls, 0 divs, 4 calls
 //   constraint_bias       40 adds, 41 muls, 0 divs, 4 calls
 //   constraint_jacobians  127 adds, 95 muls, 0 divs, 4 calls
+//   mass_action_jacobian  5 adds, 18 muls, 0 divs, 2 calls
 //   operating_point       0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step              392 adds, 527 muls, 25 divs, 16 calls
 
@@ -107,6 +108,8 @@ void slider_crank_constraint_matrix(slider_crank_real t, const slider_crank_real
 void slider_crank_constraint_bias(slider_crank_real t, const slider_crank_real* q, const slider_crank_real* qd, const slider_crank_real* u, const slider_crank_params* p, slider_crank_real* gamma, slider_crank_real* dr_dq);
 // d(B^T lambda)/dq (nq x nq), d(B a + gamma)/dq (nc x nq), dgamma/dq' (nc x nq), d(B^T lambda)/du (nq x nu), d(B a + gamma)/du (nc x nu)
 void slider_crank_constraint_jacobians(slider_crank_real t, const slider_crank_real* q, const slider_crank_real* qd, const slider_crank_real* u, const slider_crank_real* lambda, const slider_crank_real* a, const slider_crank_params* p, slider_crank_real* dBTl_dq, slider_crank_real* dacc_dq, slider_crank_real* dacc_dqd, slider_crank_real* dBTl_du, slider_crank_real* dacc_du);
+// d(M a)/dq (nq x nq) for a given vector a
+void slider_crank_mass_action_jacobian(slider_crank_real t, const slider_crank_real* q, const slider_crank_real* a, const slider_crank_real* u, const slider_crank_params* p, slider_crank_real* dMa_dq);
 // the model's operating point (no linearize block: zeros)
 void slider_crank_operating_point(const slider_crank_params* p, slider_crank_real* q0, slider_crank_real* qd0, slider_crank_real* u0);
 // x += one classical RK4 step of h from t (x = [q, q'], u held over the step)

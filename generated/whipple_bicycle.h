@@ -64,6 +64,7 @@
 //   constraint_matrix     200 adds, 342 muls, 102 divs, 18 calls
 //   constraint_bias       517 adds, 846 muls, 228 divs, 20 calls
 //   constraint_jacobians  3307 adds, 4188 muls, 1086 divs, 22 calls
+//   mass_action_jacobian  852 adds, 1241 muls, 172 divs, 15 calls
 //   operating_point       0 adds, 0 muls, 0 divs, 0 calls
 //   rk4_step              5978 adds, 8685 muls, 1541 divs, 80 calls
 
@@ -152,6 +153,8 @@ void whipple_bicycle_constraint_matrix(whipple_bicycle_real t, const whipple_bic
 void whipple_bicycle_constraint_bias(whipple_bicycle_real t, const whipple_bicycle_real* q, const whipple_bicycle_real* qd, const whipple_bicycle_real* u, const whipple_bicycle_params* p, whipple_bicycle_real* gamma, whipple_bicycle_real* dr_dq);
 // d(B^T lambda)/dq (nq x nq), d(B a + gamma)/dq (nc x nq), dgamma/dq' (nc x nq), d(B^T lambda)/du (nq x nu), d(B a + gamma)/du (nc x nu)
 void whipple_bicycle_constraint_jacobians(whipple_bicycle_real t, const whipple_bicycle_real* q, const whipple_bicycle_real* qd, const whipple_bicycle_real* u, const whipple_bicycle_real* lambda, const whipple_bicycle_real* a, const whipple_bicycle_params* p, whipple_bicycle_real* dBTl_dq, whipple_bicycle_real* dacc_dq, whipple_bicycle_real* dacc_dqd, whipple_bicycle_real* dBTl_du, whipple_bicycle_real* dacc_du);
+// d(M a)/dq (nq x nq) for a given vector a
+void whipple_bicycle_mass_action_jacobian(whipple_bicycle_real t, const whipple_bicycle_real* q, const whipple_bicycle_real* a, const whipple_bicycle_real* u, const whipple_bicycle_params* p, whipple_bicycle_real* dMa_dq);
 // the model's operating point (no linearize block: zeros)
 void whipple_bicycle_operating_point(const whipple_bicycle_params* p, whipple_bicycle_real* q0, whipple_bicycle_real* qd0, whipple_bicycle_real* u0);
 // x += one classical RK4 step of h from t (x = [q, q'], u held over the step)
