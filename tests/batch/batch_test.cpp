@@ -451,3 +451,37 @@ TEST_CASE("an edited row runs again; the others are kept") {
     CHECK(has(itself.err, "/cases.csv would replace "));
     CHECK(read_file(dir + "/cases.csv").rfind("id,model", 0) == 0);
 }
+
+TEST_CASE("constrained models run as `yamsc sim` runs them; a bad start fails its case alone") {
+    const std::string dir = scratch_dir("batch", "constrained");
+    const std::string slider = source_dir + "/models/slider_crank.mbd";
+    const std::string four_bar = source_dir + "/models/four_bar.mbd";
+    write_file(dir + "/cases.csv", "id,model,tmax,dt,ic\n"
+                                   "plain," +
+                                       slider +
+                                       ",1,0.01,\n"
+                                       "turned," +
+                                       slider +
+                                       ",1,0.01,th=1\n"
+                                       "singular," +
+                                       four_bar + ",1,0.01,\"th2=0,phi3=0,th4=0\"\n");
+    const Run b = run_in(dir, "$Y batch cases.csv -o out --threads 2");
+    INFO(b.err);
+    CHECK(b.status == 1);
+    CHECK(has(b.out, "3 cases, 2 ok, 1 failed"));
+    const Run s = run_in(dir, "$Y sim " + slider + " --tmax 1 --dt 0.01 -o plain.csv && $Y sim " +
+                                  slider + " --tmax 1 --dt 0.01 --ic th=1 -o turned.csv");
+    INFO(s.err);
+    REQUIRE(s.status == 0);
+    for (const char* id : {"plain", "turned"}) {
+        INFO(id);
+        const std::string from_sim = read_file(dir + "/" + id + ".csv");
+        CHECK(has(from_sim, "constraint_position_error"));
+        CHECK(read_file(dir + "/out/" + id + ".csv") == from_sim);
+    }
+    // The failed case names the row and where the model declares it.
+    const std::string summary = read_file(dir + "/out/summary.csv");
+    CHECK(has(summary, "3,singular,error,,cases.csv:4:1: error: "));
+    CHECK(has(summary, "four_bar.mbd:40:1"));
+    CHECK(has(summary, "redundant"));
+}
