@@ -22,27 +22,8 @@ constexpr double rigid_rank_tolerance = 1e-3;
 
 using ComplexVector = Eigen::VectorXcd;
 
-std::vector<std::complex<double>> normalized_shape(const ComplexVector& q_part) {
-    Eigen::Index largest = 0;
-    q_part.cwiseAbs().maxCoeff(&largest);
-    const std::complex<double> scale = q_part[largest];
-    std::vector<std::complex<double>> shape(static_cast<std::size_t>(q_part.size()));
-    for (Eigen::Index i = 0; i < q_part.size(); ++i)
-        shape[static_cast<std::size_t>(i)] = scale == 0.0 ? q_part[i] : q_part[i] / scale;
-    shape[static_cast<std::size_t>(largest)] = 1.0; // exactly, not 1 +- rounding
-    return shape;
-}
-
-Mode dynamic_mode(std::complex<double> lambda, const ComplexVector& q_part) {
-    Mode mode;
-    mode.eigenvalue = lambda;
-    mode.omega_n = std::abs(lambda);
-    mode.freq_hz = mode.omega_n / two_pi;
-    mode.damped_freq_hz = std::abs(lambda.imag()) / two_pi;
-    mode.damping_ratio = -lambda.real() / mode.omega_n;
-    mode.real = lambda.imag() == 0.0;
-    mode.shape = normalized_shape(q_part);
-    return mode;
+std::vector<std::complex<double>> to_std(const ComplexVector& v) {
+    return {v.data(), v.data() + v.size()};
 }
 
 // One rigid-body mode per independent direction spanned by the q parts of the
@@ -56,13 +37,38 @@ std::vector<Mode> rigid_body_modes(const Eigen::MatrixXcd& zero_q_parts) {
         if (sigma[i] <= rigid_rank_tolerance * sigma[0]) break;
         Mode mode;
         mode.rigid_body = true;
-        mode.shape = normalized_shape(svd.matrixU().col(i));
+        mode.shape = normalized_shape(to_std(svd.matrixU().col(i)));
         modes.push_back(mode);
     }
     return modes;
 }
 
 } // namespace
+
+std::vector<std::complex<double>> normalized_shape(const std::vector<std::complex<double>>& shape) {
+    if (shape.empty()) return shape;
+    std::size_t largest = 0;
+    for (std::size_t i = 1; i < shape.size(); ++i)
+        if (std::abs(shape[i]) > std::abs(shape[largest])) largest = i;
+    const std::complex<double> scale = shape[largest];
+    std::vector<std::complex<double>> out(shape.size());
+    for (std::size_t i = 0; i < shape.size(); ++i)
+        out[i] = scale == 0.0 ? shape[i] : shape[i] / scale;
+    out[largest] = 1.0; // exactly, not 1 +- rounding
+    return out;
+}
+
+Mode dynamic_mode(std::complex<double> lambda, const std::vector<std::complex<double>>& shape) {
+    Mode mode;
+    mode.eigenvalue = lambda;
+    mode.omega_n = std::abs(lambda);
+    mode.freq_hz = mode.omega_n / two_pi;
+    mode.damped_freq_hz = std::abs(lambda.imag()) / two_pi;
+    mode.damping_ratio = -lambda.real() / mode.omega_n;
+    mode.real = lambda.imag() == 0.0;
+    mode.shape = normalized_shape(shape);
+    return mode;
+}
 
 std::vector<Mode> modal_analysis(const std::vector<double>& A, int nq,
                                  const ModalOptions& options) {
@@ -96,7 +102,7 @@ std::vector<Mode> modal_analysis(const std::vector<double>& A, int nq,
         // Eigen returns complex pairs as exact conjugates and real eigenvalues
         // with an imaginary part of exactly 0: keep the upper member of each pair.
         if (lambda.imag() < 0.0) continue;
-        modes.push_back(dynamic_mode(lambda, vectors.col(k).head(nq)));
+        modes.push_back(dynamic_mode(lambda, to_std(vectors.col(k).head(nq))));
     }
 
     Eigen::MatrixXcd zero_q_parts(nq, static_cast<Eigen::Index>(zero_indices.size()));

@@ -38,6 +38,13 @@ struct ModalOptions {
     double zero_tolerance = 1e-6;
 };
 
+/// A shape scaled so that its largest entry is exactly 1 (unchanged when it is 0).
+std::vector<std::complex<double>> normalized_shape(const std::vector<std::complex<double>>& shape);
+
+/// The mode of eigenvalue lambda (Im >= 0, not zero) whose coordinates move as
+/// `shape`: its frequencies, damping ratio and the shape normalized.
+Mode dynamic_mode(std::complex<double> lambda, const std::vector<std::complex<double>>& shape);
+
 /// The modes of the row-major 2nq x 2nq state matrix A, sorted by frequency
 /// (then by damping ratio). Rigid-body modes come first, one per independent
 /// free direction. Throws std::invalid_argument when A has the wrong size or is

@@ -18,8 +18,6 @@ using constraints::Vector;
 
 namespace {
 
-constexpr double two_pi = 6.283185307179586476925286766559;
-
 std::vector<double> flat(const Matrix& m) {
     return std::vector<double>(m.data(), m.data() + m.size());
 }
@@ -32,14 +30,9 @@ std::vector<int> independent_rows(const ModelView& v, const DependentChoice& c) 
     return rows;
 }
 
+/// A shape in all coordinates, its largest entry 1.
 std::vector<std::complex<double>> normalized(const Eigen::VectorXcd& q) {
-    Eigen::Index largest = 0;
-    q.cwiseAbs().maxCoeff(&largest);
-    const std::complex<double> scale = q[largest] == 0.0 ? 1.0 : q[largest];
-    std::vector<std::complex<double>> shape(at(static_cast<int>(q.size())));
-    for (Eigen::Index i = 0; i < q.size(); ++i) shape[at(static_cast<int>(i))] = q[i] / scale;
-    shape[at(static_cast<int>(largest))] = 1.0;
-    return shape;
+    return normalized_shape({q.data(), q.data() + q.size()});
 }
 
 /// The modes of a reduced A that is not [q, q'] (nonholonomic rows or block
@@ -51,19 +44,15 @@ std::vector<Mode> general_modes(const Matrix& A, const Matrix& Tq) {
     for (Eigen::Index k = 0; k < A.rows(); ++k) {
         const std::complex<double> l = es.eigenvalues()[k];
         if (l.imag() < 0) continue;
-        Mode m;
-        m.shape = normalized(Tq.cast<std::complex<double>>() * es.eigenvectors().col(k));
+        const Eigen::VectorXcd q = Tq.cast<std::complex<double>>() * es.eigenvectors().col(k);
         if (std::abs(l) < zero) {
+            Mode m;
             m.rigid_body = true;
+            m.shape = normalized(q);
+            modes.push_back(std::move(m));
         } else {
-            m.eigenvalue = l;
-            m.omega_n = std::abs(l);
-            m.freq_hz = m.omega_n / two_pi;
-            m.damped_freq_hz = std::abs(l.imag()) / two_pi;
-            m.damping_ratio = -l.real() / m.omega_n;
-            m.real = l.imag() == 0.0;
+            modes.push_back(dynamic_mode(l, {q.data(), q.data() + q.size()}));
         }
-        modes.push_back(std::move(m));
     }
     std::stable_sort(modes.begin(), modes.end(), [](const Mode& a, const Mode& b) {
         if (a.rigid_body != b.rigid_body) return a.rigid_body;
