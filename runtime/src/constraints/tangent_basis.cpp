@@ -13,7 +13,10 @@ Matrix tangent_basis(const ModelView& v, double t, const double* x, const double
     Matrix dr_dq(v.nc, nq);
     Vector gamma(v.nc);
     v.constraint_bias(t, x, x + nq, u, gamma.data(), dr_dq.data());
-    const auto Hd = columns_of(B.topRows(v.nh), c.coordinates).fullPivLu();
+    // Without holonomic rows there is nothing to factor (and Eigen refuses an
+    // empty matrix): every coordinate is independent.
+    const Eigen::FullPivLU<Matrix> Hd =
+        v.nh ? columns_of(B.topRows(v.nh), c.coordinates).fullPivLu() : Eigen::FullPivLU<Matrix>();
     const auto Bd = columns_of(B, c.speeds).fullPivLu();
     Matrix T = Matrix::Zero(2 * nq + nz, mq + mv + nz);
     for (int k = 0; k < mq; ++k) {
