@@ -55,6 +55,9 @@ case $target in
   fuzz_aerodyn_primary)
     seeds=("$root"/tests/data/reference/operating/deck/*AeroDyn15.dat)
     dict= ;;
+  fuzz_map_input)
+    seeds=("$root"/tests/data/mooring/*.map)
+    dict= ;;
   fuzz_aerodyn_blade)
     seeds=("$root"/tests/data/reference/operating/deck/*AeroDyn_blade.dat)
     dict= ;;
