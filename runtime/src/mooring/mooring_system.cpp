@@ -71,9 +71,10 @@ MooringLoads mooring_loads(const std::vector<Line>& lines, const Pose& pose,
         const Vec3 arm = rotate(pose.rotation, lines[n].fairlead);
         const Vec3 f = {pose.position[0] + arm[0], pose.position[1] + arm[1],
                         pose.position[2] + arm[2]};
-        Mat3 df{};
         LineState& state = out.lines[n];
-        line_force(lines[n], f, warm ? &previous->lines[n].solution : nullptr, state, df);
+        line_force(lines[n], f, warm ? &previous->lines[n].solution : nullptr, state,
+                   state.force_derivative);
+        const Mat3& df = state.force_derivative;
         const Vec3& force = state.force_on_body;
         const Vec3 m = cross(arm, force);
         for (int i = 0; i < 3; ++i) {

@@ -27,9 +27,10 @@ struct Pose {
 
 struct LineState {
     CatenarySolution solution;
-    Vec3 fairlead{};        // the fairlead in the inertial frame
-    Vec3 force_on_body{};   // what the line does to the body at its fairlead
-    double tension() const; // the fairlead's effective tension, sqrt(H^2 + V^2)
+    Vec3 fairlead{};         // the fairlead in the inertial frame
+    Vec3 force_on_body{};    // what the line does to the body at its fairlead
+    Mat3 force_derivative{}; // d(force_on_body)/d(fairlead), inertial frame
+    double tension() const;  // the fairlead's effective tension, sqrt(H^2 + V^2)
 };
 
 struct MooringLoads {
