@@ -78,4 +78,20 @@ assert checked == 2
 x0, z0 = exact[0.0]
 assert abs(x0 + math.sin(0.5) + 0.8 * math.sin(0.2)) < 1e-15
 assert abs(z0 + math.cos(0.5) + 0.8 * math.cos(0.2)) < 1e-15
+# The CSV beside the scene is the one `sim -o` writes without --vtk (the scene's
+# outputs left out), byte for byte.
+plain = os.path.join(out, "plain.csv")
+args = ["--tmax", "1", "--dt", "0.01", "--dt-out", "0.1", "--ic", "th1=0.5,th2=-0.3"]
+r = subprocess.run([yamsc_exe, "sim", model] + args + ["-o", plain], capture_output=True, text=True)
+assert r.returncode == 0, r.stderr
+assert open(plain, "rb").read() == open(os.path.join(out, name + ".csv"), "rb").read()
+# A link among the run's files is refused (exit 2), and nothing is written.
+linked = out + "_linked"
+shutil.rmtree(linked, ignore_errors=True)
+os.makedirs(linked)
+os.symlink(plain, os.path.join(linked, name + ".pvd"))
+r = subprocess.run([yamsc_exe, "sim", model] + args + ["--vtk", linked], capture_output=True,
+                   text=True)
+assert r.returncode == 2 and "not a regular file" in r.stderr, (r.returncode, r.stderr)
+assert sorted(os.listdir(linked)) == [name + ".pvd"], os.listdir(linked)
 print("ok: the tip at t = 0 and t = 1 s equals x_tip, z_tip to 1e-12")
