@@ -13,6 +13,7 @@
 #include "analysis/rotor_campbell.hpp"
 #include "analysis/rotor_modes.hpp"
 #include "analysis/scene_files.hpp"
+#include "analysis/scene_surfaces.hpp"
 #include "analysis/sim_case.hpp"
 #include "analysis/svg_plot.hpp"
 #include "analysis/sweep_point.hpp"
@@ -153,7 +154,8 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     std::optional<Scene> scene;
     runtime::SimulationResult with_scene;
     if (!o.vtk.empty() && run.result.rows() > 0) {
-        scene.emplace(*loaded->front.model, run.result);
+        scene.emplace(*loaded->front.model, run.result,
+                      scene_surfaces(*loaded->front.model, o.aero));
         with_scene = std::move(run.result);
         run.result = without_outputs(with_scene, scene->scene_outputs());
     }
