@@ -142,6 +142,7 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     inputs.push_back({"--external", o.external});
     if (wind_file(o.wind)) inputs.push_back({"--wind", o.wind});
     check_outputs(inputs, outputs);
+    if (!o.vtk.empty()) check_scene_folder(o.vtk);
     // A bad reference fails before anything is simulated or written.
     std::optional<Table> reference;
     if (!o.compare.empty()) reference = read_table(o.compare);
