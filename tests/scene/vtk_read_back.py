@@ -94,4 +94,43 @@ r = subprocess.run([yamsc_exe, "sim", model] + args + ["--vtk", linked], capture
                    text=True)
 assert r.returncode == 2 and "not a regular file" in r.stderr, (r.returncode, r.stderr)
 assert sorted(os.listdir(linked)) == [name + ".pvd"], os.listdir(linked)
+# The box of inertia (tests/scene/box.mbd: a uniform 1 x 2 x 3 m box of 12 kg, its
+# centre of mass at (0.5, 0, 0) in a body turning freely about ground z at 1 rad/s
+# from 0.3 rad, so th = 0.3 + t): sides 1, 2 and 3 m, along the body's axes,
+# about the centre of mass.
+box_out = out + "_box"
+shutil.rmtree(box_out, ignore_errors=True)
+r = subprocess.run([yamsc_exe, "sim", os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                    "box.mbd"),
+                    "--tmax", "1", "--dt", "0.01", "--dt-out", "1", "--ic", "th=0.3,th'=1",
+                    "--vtk", box_out], capture_output=True, text=True)
+assert r.returncode == 0, r.stderr
+reader = vtk.vtkXMLPolyDataReader()
+reader.SetFileName(os.path.join(box_out, "box_body_000001.vtp"))
+reader.Update()
+poly = reader.GetOutput()
+kind = vtk_to_numpy(poly.GetCellData().GetArray("kind"))
+points = vtk_to_numpy(poly.GetPoints().GetData())
+ids = vtk.vtkIdList()
+corners = set()
+for c in range(poly.GetNumberOfCells()):
+    if kind[c] == 4:
+        poly.GetCellPoints(c, ids)
+        corners.update(ids.GetId(k) for k in range(ids.GetNumberOfIds()))
+assert len(corners) == 8 and list(kind).count(4) == 6
+box = points[sorted(corners)]
+th = 1.3
+centre = box.mean(axis=0)
+assert max(abs(centre - [0.5 * math.cos(th), 0.5 * math.sin(th), 1.0])) < 1e-12, centre
+edges = sorted({round(float(d), 9) for d in
+                (((box[:, None, :] - box[None, :, :]) ** 2).sum(axis=2) ** 0.5).ravel()})
+# Between corners: the sides 1, 2, 3, the face diagonals and the space diagonal.
+expected = sorted(round(math.sqrt(a * a + b * b + c * c), 9)
+                  for a in (0, 1) for b in (0, 2) for c in (0, 3))
+assert edges == sorted(set(expected)), edges
+for a in box:
+    for b in box:
+        d = b - a
+        if abs(float((d ** 2).sum()) ** 0.5 - 1.0) < 1e-12:  # the 1 m side: body x
+            assert abs(abs(d[0] * math.cos(th) + d[1] * math.sin(th)) - 1.0) < 1e-12, d
 print("ok: the tip at t = 0 and t = 1 s equals x_tip, z_tip to 1e-12")
