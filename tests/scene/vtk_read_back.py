@@ -7,7 +7,11 @@ generated model's outputs, written in their shortest exact text; the reference
 is the Python module's run, the same driver with every digit, since the CSV
 keeps 10 significant digits, which the CSV beside the scene is checked to); the
 part names (FieldData, a vtkStringArray) are the bodies'; the topology is the
-same in every step. Usage: vtk_read_back.py YAMSC MODEL OUT_DIR PYTHON_DIR
+same in every step. Then: the CSV beside the scene equals plain `sim -o`'s byte
+for byte, a link among the run's files is refused, the box of inertia of
+box.mbd has its closed-form sides, centre and axes, and the four-bar's loop
+(CVODE, constraints) is closed in the scene.
+Usage: vtk_read_back.py YAMSC MODEL OUT_DIR PYTHON_DIR
 """
 import csv
 import math
