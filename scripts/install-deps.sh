@@ -7,7 +7,7 @@ packages=(build-essential cmake pkg-config libginac-dev libcln-dev tao-pegtl-dev
           gfortran # ROSCO, the reference controller (third_party/rosco/README.md)
           python3-distributed # yamsc.dask (docs/batch.md); its test is skipped without it
           clang libclang-rt-14-dev # clang + libFuzzer: the fuzz targets (docs/robustness.md)
-          python3-vtk9 paraview python3-paraview xvfb) # VTK's reader and ParaView: the scene's tests (docs/visualization.md)
+          paraview python3-paraview xvfb) # ParaView, and VTK's Python reader with it (python3-paraview provides vtk and conflicts with python3-vtk9): the scene's tests (docs/visualization.md)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

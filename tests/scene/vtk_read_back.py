@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""`yamsc sim --vtk` read back with VTK's own XML reader (python3-vtk9).
+"""`yamsc sim --vtk` read back with VTK's own XML reader (VTK 9 of python3-paraview).
 
 The double pendulum's scene at t = 0 and t = 1 s: the marker of the point `tip`
 equals the x_tip and z_tip of sim's driver to 1e-12 (the scene's points are the
