@@ -8,6 +8,10 @@ packages=(build-essential cmake pkg-config libginac-dev libcln-dev tao-pegtl-dev
           python3-distributed # yamsc.dask (docs/batch.md); its test is skipped without it
           clang libclang-rt-14-dev) # clang + libFuzzer: the fuzz targets (docs/robustness.md)
 missing=()
+# yamsc view (docs/viewer.md): the page is bundled by npm at build time and tested
+# in headless Chromium; a nodejs from elsewhere (NodeSource) brings its own npm.
+packages+=(nodejs chromium)
+command -v npm >/dev/null || packages+=(npm)
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
