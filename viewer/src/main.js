@@ -243,6 +243,12 @@ function main() {
     window.addEventListener('resize', resize);
     resize();
     showFrame(0);
+    // page.html#t=45: opens paused at that time (a link to a moment, a screenshot).
+    const start = /(?:^#|&)t=([0-9.eE+-]+)/.exec(window.location.hash);
+    if (start && Number.isFinite(Number(start[1]))) {
+        setPlaying(false);
+        seek(Number(start[1]));
+    }
 
     let last = performance.now();
     renderer.setAnimationLoop((now) => {
