@@ -6,7 +6,8 @@ packages=(build-essential cmake pkg-config libginac-dev libcln-dev tao-pegtl-dev
           pybind11-dev python3-pybind11 python3-pytest python3-pandas # the Python module (docs/python.md)
           gfortran # ROSCO, the reference controller (third_party/rosco/README.md)
           python3-distributed # yamsc.dask (docs/batch.md); its test is skipped without it
-          clang libclang-rt-14-dev) # clang + libFuzzer: the fuzz targets (docs/robustness.md)
+          clang libclang-rt-14-dev # clang + libFuzzer: the fuzz targets (docs/robustness.md)
+          python3-vtk9 paraview python3-paraview xvfb) # VTK's reader and ParaView: the scene's tests (docs/visualization.md)
 missing=()
 # yamsc view (docs/viewer.md): the page is bundled by npm at build time and tested
 # in headless Chromium; a nodejs from elsewhere (NodeSource) brings its own npm.

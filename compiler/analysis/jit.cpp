@@ -109,9 +109,9 @@ std::unique_ptr<runtime::SharedModel> load_compiled_model(const ModelIdentity& i
     const std::string compiler = compiler_of(o.compiler);
     const ModelCache cache(cache_folder(o.cache_dir));
     const std::string key =
-        digest(id.content_digest + "\n" + names + "\n" + joined_words(compile_flags) + "\n" +
-               compiler_identity(compiler) + "\n" + cpu_identity() + "\n" + program_identity() +
-               "\n" + abi_export_text);
+        digest(id.content_digest + (id.channels == ModelChannels::scene ? "\nscene" : "") + "\n" +
+               names + "\n" + joined_words(compile_flags) + "\n" + compiler_identity(compiler) +
+               "\n" + cpu_identity() + "\n" + program_identity() + "\n" + abi_export_text);
     const std::string library = cache.library_path(id.model_name, key);
     if (::access(library.c_str(), R_OK) == 0) {
         try {

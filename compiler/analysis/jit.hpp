@@ -28,12 +28,17 @@ struct JitOptions {
 };
 
 /// What the generated code of a compiled model depends on.
+/// The outputs compiled beside the model's own: none, or the scene's
+/// (model/scene_channels.hpp, for `sim --vtk`). Part of the cache key.
+enum class ModelChannels { declared, scene };
+
 struct ModelIdentity {
     std::string model_name;
     std::string content_digest; // driver::content_digest: model text and data
     /// Routines of the C ABI (codegen::abi_routines(): rhs, rhs_jacobian,
     /// mass_matrix, forcing, jacobians, outputs). rhs is always compiled.
     codegen::RoutineSet routines;
+    ModelChannels channels = ModelChannels::declared;
 };
 
 /// The C++ translation unit that exports `routines` of a model: the generated

@@ -8,6 +8,7 @@
 #include "driver/bindings.hpp"
 #include "driver/sid_values.hpp"
 #include "model/expr_check.hpp"
+#include "model/scene_channels.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -65,9 +66,9 @@ std::vector<std::string> primed(const std::vector<std::string>& names) {
 std::optional<Loaded> load(const std::string& path, const std::vector<Assignment>& set,
                            const std::string& sid_spec, bool verbose, std::ostream& err,
                            const std::vector<NamedFile>& outputs, codegen::RoutineSet routines,
-                           const std::string& external) {
+                           const std::string& external, ModelChannels channels) {
     std::optional<Loaded> l =
-        load_unbound(path, sid_spec, verbose, err, outputs, routines, external);
+        load_unbound(path, sid_spec, verbose, err, outputs, routines, external, channels);
     if (l) bind_parameters(*l, set);
     return l;
 }
@@ -75,7 +76,8 @@ std::optional<Loaded> load(const std::string& path, const std::vector<Assignment
 std::optional<Loaded> load_unbound(const std::string& path, const std::string& sid_spec,
                                    bool verbose, std::ostream& err,
                                    const std::vector<NamedFile>& outputs,
-                                   codegen::RoutineSet routines, const std::string& external) {
+                                   codegen::RoutineSet routines, const std::string& external,
+                                   ModelChannels channels) {
     // One model at a time per process: the derivation (GiNaC) shares global
     // state, and the JIT names its temporary files by process id. Python
     // threads (yamsc.load, a Dask worker's batch tasks) can load at once.
@@ -90,6 +92,7 @@ std::optional<Loaded> load_unbound(const std::string& path, const std::string& s
                       [&](const model::Model& m) { check_outputs(data_files_of(m), outputs); });
     err << diags.render();
     if (diags.has_errors()) return std::nullopt;
+    if (channels == ModelChannels::scene) model::add_scene_channels(*fe.model);
     JitOptions jit;
     jit.progress = progress;
     jit.notice = [&](const std::string& s) { err << "yamsc: " << s << std::endl; };
@@ -102,7 +105,8 @@ std::optional<Loaded> load_unbound(const std::string& path, const std::string& s
     for (const std::string& note : externals->notes)
         if (verbose || note.find("central differences") != std::string::npos)
             err << "yamsc: note: " << note << "\n";
-    const ModelIdentity id{fe.model->name, content_digest(*fe.source, *fe.model), routines};
+    const ModelIdentity id{fe.model->name, content_digest(*fe.source, *fe.model), routines,
+                           channels};
     // Reported as located diagnostics (exit 1), like the checker's errors.
     struct NotDerived {};
     auto derive = [&]() {

@@ -2,6 +2,7 @@
 // A model ready to run for `sim`, `lin` and `trim`: checked, compiled (only
 // the routines the command calls, analysis/jit.hpp), bound to its parameters;
 // and the points it starts from (`initial` and `linearize` blocks, --ic, --at).
+#include "analysis/jit.hpp"
 #include "codegen/routines.hpp"
 #include "driver/commands.hpp"
 #include "driver/outputs.hpp"
@@ -36,17 +37,21 @@ struct Loaded {
 /// model has errors (already printed to `err`).
 /// `external`: the implementation of the model's external functions (--external
 /// lib.so|file.c|file.cpp, analysis/external_library.hpp); required when it declares any.
+/// `channels`: ModelChannels::scene adds the scene's outputs (model/scene_channels.hpp)
+/// after the model's own and every load block's.
 std::optional<Loaded> load(const std::string& path, const std::vector<driver::Assignment>& set,
                            const std::string& sid_spec, bool verbose, std::ostream& err,
                            const std::vector<driver::NamedFile>& outputs,
-                           codegen::RoutineSet routines, const std::string& external = "");
+                           codegen::RoutineSet routines, const std::string& external = "",
+                           ModelChannels channels = ModelChannels::declared);
 
 /// `load` without binding the parameters (`params` and `view` empty): for
 /// commands that bind them per case with bind_parameters.
 std::optional<Loaded> load_unbound(const std::string& path, const std::string& sid_spec,
                                    bool verbose, std::ostream& err,
                                    const std::vector<driver::NamedFile>& outputs,
-                                   codegen::RoutineSet routines, const std::string& external = "");
+                                   codegen::RoutineSet routines, const std::string& external = "",
+                                   ModelChannels channels = ModelChannels::declared);
 
 /// Binds the parameters again: the model's defaults, the --sid values, then
 /// `set` (as `load` does); a view of the same library with those values.

@@ -12,6 +12,7 @@
 #include "analysis/openfast_lin_model.hpp"
 #include "analysis/rotor_campbell.hpp"
 #include "analysis/rotor_modes.hpp"
+#include "analysis/scene_files.hpp"
 #include "analysis/sim_case.hpp"
 #include "analysis/svg_plot.hpp"
 #include "analysis/sweep_point.hpp"
@@ -143,18 +144,39 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     // A bad reference fails before anything is simulated or written.
     std::optional<Table> reference;
     if (!o.compare.empty()) reference = read_table(o.compare);
-    auto loaded = load(o.model, o.set, o.sid, o.verbose, err, outputs, sim_routines(o), o.external);
+    auto loaded = load(o.model, o.set, o.sid, o.verbose, err, outputs, sim_routines(o), o.external,
+                       o.vtk.empty() ? ModelChannels::declared : ModelChannels::scene);
     if (!loaded) return 1;
-    const SimRun run = simulate_case(*loaded, o, out, err);
+    SimRun run = simulate_case(*loaded, o, out, err);
+    // The scene's outputs leave the run once drawn: every table sim writes is
+    // the one it writes without --vtk.
+    std::optional<Scene> scene;
+    runtime::SimulationResult with_scene;
+    if (!o.vtk.empty() && run.result.rows() > 0) {
+        scene.emplace(*loaded->front.model, run.result);
+        with_scene = std::move(run.result);
+        run.result = without_outputs(with_scene, scene->scene_outputs());
+    }
     const runtime::SimulationResult& result = run.result;
     // That the model has OpenFAST's channels is checked before anything is written.
     if (o.channels == Channels::openfast) openfast_columns(result, 1 + run.view.nx());
     // The table (a copy of the columns) only for what reads it.
     const bool need_table = reference || !o.plot.empty();
     const Table table = need_table ? sim_table(run, o.channels) : Table{};
+    if (scene) {
+        // The run's files are named by the model; checked against the inputs
+        // and sim's other outputs before anything is written.
+        std::vector<NamedFile> others = inputs;
+        others.insert(others.end(), outputs.begin(), outputs.end());
+        write_scene_folder(o.vtk, loaded->front.model->name, *scene, with_scene, run, o.channels,
+                           others);
+    }
     if (!o.output.empty()) write_sim_csv(run, o.channels, o.output);
     out << runtime::format_summary(result);
     if (!o.output.empty()) out << "wrote " << result.rows() << " rows to " << o.output << "\n";
+    if (scene)
+        out << "wrote the scene of " << result.rows() << " rows to " << o.vtk << " ("
+            << vtk::pvd_name(loaded->front.model->name) << ")\n";
     std::optional<Comparison> comparison;
     if (reference) {
         comparison = compare_tables(table, *reference);

@@ -132,6 +132,7 @@ struct SimOptions {
     std::string compare;                    // reference table: print the error per channel
     std::string plot;                       // SVG of the channels (with the reference)
     std::vector<std::string> plot_channels; // --plot-channels; empty: compared or all
+    std::string vtk;                        // --vtk DIR: the scene and the CSV (empty: none)
     bool linear = false;                    // integrate the linear model about --at / linearize
     std::vector<Assignment> at;             // --at: the operating point of --linear
     std::string aero;       // --aero TABLE: the quasi-steady rotor block (Cp/Ct/Cq table)

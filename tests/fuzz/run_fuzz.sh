@@ -70,6 +70,10 @@ case $target in
   fuzz_turbsim_input)
     seeds=("$root"/tests/data/reference/turbulence/*.inp)
     dict= ;;
+  fuzz_vtk)
+    # The first byte chooses the reader: even .vtp, odd .pvd.
+    seeds=("$here"/seeds/vtk/*)
+    dict= ;;
   *)
     echo "run_fuzz.sh: unknown target '$target'" >&2
     exit 2 ;;

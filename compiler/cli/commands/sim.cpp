@@ -44,6 +44,7 @@ SimOptions parse_sim(const Args& a) {
     o.compare = a.get("--compare");
     o.plot = a.get("--plot");
     o.plot_channels = comma_list(a.get("--plot-channels"));
+    o.vtk = a.get("--vtk");
     o.linear = a.has("--linear");
     o.at = a.assignments("--at");
     if (!o.at.empty() && !o.linear) throw UsageError("--at needs --linear");
@@ -78,7 +79,7 @@ Command sim_command() {
                     [--method rk4|abm4|cvode] [--rtol R] [--atol A] [-o out.csv]
                     [--dt-out DT_OUT] [-v]
                     [--channels all|openfast] [--compare ref.csv] [--plot out.svg]
-                    [--plot-channels a,b,..] [--linear [--at name=v,..]]
+                    [--plot-channels a,b,..] [--vtk DIR] [--linear [--at name=v,..]]
                     [--aero Cp_Ct_Cq.txt] [--wind V|step:V0:V1:t=T|wind.csv]
                     [--controller libdiscon.so [--controller-input DISCON.IN]]
                     [--coupling tight|loose [--interp-order 0|1|2]]
@@ -99,6 +100,8 @@ Command sim_command() {
   --compare ref.csv   the error per channel against a reference table
   --plot out.svg      the channels (with the reference) as SVG
   --plot-channels a,b the channels to plot (default: those compared, or all)
+  --vtk DIR           the scene for ParaView at every row: DIR/MODEL.pvd, one
+                      DIR/MODEL_NNNNNN.vtp per row and DIR/MODEL.csv (docs/visualization.md)
   --linear            integrate the linear model about the operating point
   --at name=v,..      the operating point of --linear
   --aero FILE         the rotor's data: a Cp/Ct/Cq table (ROSCO's format) for the
@@ -114,11 +117,11 @@ Command sim_command() {
                       (default, OpenFAST's InterpOrder)
 Details: docs/cli.md.
 )",
-        {{"--tmax",     "--dt",       "--dt-out",      "--ic",         "--u",
-          "--set",      "--sid",      "--method",      "-o",           "--rtol",
-          "--atol",     "--channels", "--compare",     "--plot",       "--plot-channels",
-          "--at",       "--aero",     "--wind",        "--controller", "--controller-input",
-          "--external", "--coupling", "--interp-order"},
+        {{"--tmax",     "--dt",       "--dt-out",       "--ic",         "--u",
+          "--set",      "--sid",      "--method",       "-o",           "--rtol",
+          "--atol",     "--channels", "--compare",      "--plot",       "--plot-channels",
+          "--at",       "--aero",     "--wind",         "--controller", "--controller-input",
+          "--external", "--coupling", "--interp-order", "--vtk"},
          {"-v", "--linear"}},
         parse_sim, analysis::sim);
 }
