@@ -20,8 +20,8 @@ namespace {
 
 // Shown when --channels is not given, in this order, where the run has them:
 // what a turbine's run is looked at for first. Otherwise the first few that move.
-const char* const preferred_channels[] = {"RotSpeed",    "GenPwr", "BldPitch1", "TTDspFA",
-                                          "rotor_speed", "tt_fa",  "aero_v_rel"};
+const char* const preferred_channels[] = {"RotSpeed", "GenPwr",      "BldPitch1", "TTDspFA",
+                                          "OoPDefl1", "rotor_speed", "tt_fa",     "aero_v_rel"};
 constexpr std::size_t default_channel_count = 4;
 
 // A column as read_table names it, `NAME_[unit]`, or as sim writes it, `NAME`.

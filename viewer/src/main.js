@@ -64,7 +64,9 @@ function buildScene(run, scene, width, height) {
             geometry.setIndex(g.triangles);
             const material = new THREE.MeshStandardMaterial({
                 color, side: THREE.DoubleSide, roughness: 0.7, metalness: 0.05,
-                transparent: g.kind === KIND_BOX, opacity: g.kind === KIND_BOX ? 0.55 : 1 });
+                // A box stands for a body's inertia: see-through, so that what is inside shows.
+                transparent: g.kind === KIND_BOX, opacity: g.kind === KIND_BOX ? 0.35 : 1,
+                depthWrite: g.kind !== KIND_BOX });
             const mesh = new THREE.Mesh(geometry, material);
             mesh.userData.part = name;
             meshes.push(mesh);

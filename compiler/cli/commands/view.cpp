@@ -38,7 +38,7 @@ Command view_command() {
                       beside it (<model>.csv) gives the channels
   -o page.html        the page (default: <model>.html beside the .pvd); never an input
   --channels a,b      the channels plotted under the scene, in sync with it (default: a
-                      few of RotSpeed, GenPwr, BldPitch1, TTDspFA where the run has them,
+                      few of RotSpeed, GenPwr, BldPitch1, TTDspFA, OoPDefl1 that move,
                       else the first three that move); none: the scene alone
   --title TEXT        the page's title (default: the model's name)
   --fps N             at most N frames kept per second of the run (default 30)
