@@ -106,14 +106,22 @@ try {
           `the drawn share is within [${minShareText}, ${maxShareText}]`);
     check(stats.cx > 0.2 && stats.cx < 0.8 && stats.cy > 0.15 && stats.cy < 0.85, 'the run is framed near the middle');
 
-    // Hovering the drawing names a part: scan a coarse grid for the first hit.
+    // Hovering the drawing names a part: the pointer on each point of the scene
+    // in turn (as the screen shows it) until one names its part.
     const box = await page.locator('#view canvas').boundingBox();
+    const points = await page.evaluate(() => {
+        const out = [];
+        const n = window.yamscView.pointCount;
+        for (let i = 0; i < n; i += Math.max(1, Math.floor(n / 40))) out.push(yamscView.screenPosition(i));
+        return out;
+    });
     let hovered = null;
-    for (let y = 0.1; y < 0.95 && !hovered; y += 0.05)
-        for (let x = 0.1; x < 0.95 && !hovered; x += 0.02) {
-            await page.mouse.move(box.x + x * box.width, box.y + y * box.height);
-            hovered = await page.evaluate(() => yamscView.hovered);
-        }
+    for (const p of points) {
+        if (p.x < box.x || p.y < box.y || p.x > box.x + box.width || p.y > box.y + box.height) continue;
+        await page.mouse.move(p.x, p.y);
+        hovered = await page.evaluate(() => yamscView.hovered);
+        if (hovered) break;
+    }
     const tip = hovered ? await page.locator('#tip').textContent() : '';
     console.log(`hovered part: ${hovered}`);
     check(Boolean(hovered) && tip === hovered, 'hovering the drawing shows a part name');

@@ -134,6 +134,7 @@ function main() {
     window.yamscView = state;
     const run = decodeRun(document.getElementById('yamsc-run').textContent);
     state.frames = run.times.length;
+    state.pointCount = run.pointCount;
     const t0 = run.times[0];
     const t1 = run.times[run.times.length - 1];
     state.time = t0;
@@ -232,6 +233,14 @@ function main() {
         state.hovered = hit ? hit.object.userData.part : null;
     });
     renderer.domElement.addEventListener('pointerleave', () => { tip.hidden = true; });
+    // Where point i of the frame shown is on the screen (client pixels): for tests.
+    state.screenPosition = (i) => {
+        const n = run.pointCount * 3;
+        const p = run.positions.subarray(state.frame * n + 3 * i, state.frame * n + 3 * i + 3);
+        const v = new THREE.Vector3(p[0], p[1], p[2]).project(camera);
+        const r = renderer.domElement.getBoundingClientRect();
+        return { x: r.left + (v.x + 1) / 2 * r.width, y: r.top + (1 - v.y) / 2 * r.height };
+    };
 
     function resize() {
         const w = view.clientWidth;
