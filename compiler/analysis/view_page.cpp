@@ -1,6 +1,7 @@
 #include "analysis/view_page.hpp"
 
 #include "diag/errors.hpp"
+#include "driver/json.hpp"
 #include "yamsc_viewer/page.hpp"
 
 #include <cstring>
@@ -34,24 +35,20 @@ template <class T> std::string array_base64(const std::vector<T>& values) {
 }
 
 // A JSON string that is also safe inside <script>: `<`, `>` and `&` escaped, so
-// no name can close the element.
+// no name can close the element (in JSON they only ever stand for themselves).
 std::string json_string(const std::string& s) {
-    std::string out = "\"";
-    for (const char c : s) {
-        const auto u = static_cast<unsigned char>(c);
-        if (c == '"' || c == '\\') {
-            out += '\\';
+    std::string out;
+    for (const char c : driver::json::quote(s)) {
+        if (c == '<')
+            out += "\\u003c";
+        else if (c == '>')
+            out += "\\u003e";
+        else if (c == '&')
+            out += "\\u0026";
+        else
             out += c;
-        } else if (u < 0x20 || c == '<' || c == '>' || c == '&') {
-            static const char hex[] = "0123456789abcdef";
-            out += "\\u00";
-            out += hex[u >> 4];
-            out += hex[u & 15];
-        } else {
-            out += c;
-        }
     }
-    return out + '"';
+    return out;
 }
 
 // HTML text (the title).
