@@ -13,6 +13,7 @@
 #include "analysis/rotor_campbell.hpp"
 #include "analysis/rotor_modes.hpp"
 #include "analysis/scene_files.hpp"
+#include "analysis/scene_surfaces.hpp"
 #include "analysis/sim_case.hpp"
 #include "analysis/svg_plot.hpp"
 #include "analysis/sweep_point.hpp"
@@ -141,6 +142,7 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     inputs.push_back({"--external", o.external});
     if (wind_file(o.wind)) inputs.push_back({"--wind", o.wind});
     check_outputs(inputs, outputs);
+    if (!o.vtk.empty()) check_scene_folder(o.vtk);
     // A bad reference fails before anything is simulated or written.
     std::optional<Table> reference;
     if (!o.compare.empty()) reference = read_table(o.compare);
@@ -153,7 +155,8 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     std::optional<Scene> scene;
     runtime::SimulationResult with_scene;
     if (!o.vtk.empty() && run.result.rows() > 0) {
-        scene.emplace(*loaded->front.model, run.result);
+        scene.emplace(*loaded->front.model, run.result,
+                      scene_surfaces(*loaded->front.model, o.aero));
         with_scene = std::move(run.result);
         run.result = without_outputs(with_scene, scene->scene_outputs());
     }

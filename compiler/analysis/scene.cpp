@@ -75,7 +75,28 @@ Eigen::Vector3d half_sides(double m, const Eigen::Vector3d& I) {
 
 } // namespace
 
-Scene::Scene(const model::Model& m, const runtime::SimulationResult& run) {
+namespace {
+
+/// Points around a section.
+constexpr int section_points = 12;
+/// An elliptic blade section's thickness against its chord.
+constexpr double thickness_ratio = 0.2;
+
+/// The body's point at `span` along z: between the two SID nodes around it.
+runtime::BodyPoint point_at_span(const std::vector<runtime::BodyPoint>& nodes, double span) {
+    if (span <= nodes.front().origin.z()) return nodes.front();
+    for (std::size_t i = 1; i < nodes.size(); ++i)
+        if (span <= nodes[i].origin.z()) {
+            const double z0 = nodes[i - 1].origin.z(), z1 = nodes[i].origin.z();
+            return runtime::blend(nodes[i - 1], nodes[i], z1 > z0 ? (span - z0) / (z1 - z0) : 0.0);
+        }
+    return nodes.back();
+}
+
+} // namespace
+
+Scene::Scene(const model::Model& m, const runtime::SimulationResult& run,
+             const std::vector<BodySurface>& surfaces) {
     using model::scene_output;
     Outputs out(run);
     const double* q = run.state_row(0);
@@ -187,6 +208,43 @@ Scene::Scene(const model::Model& m, const runtime::SimulationResult& run) {
             add_cell(topology_.polys, {corner[f[0]], corner[f[1]], corner[f[2]], corner[f[3]]},
                      body, CellKind::box);
     }
+    // Surfaces: rings of points around each section, quadrilaterals between rings.
+    for (const BodySurface& surface : surfaces) {
+        const std::vector<runtime::BodyPoint>& nodes =
+            bodies_[static_cast<std::size_t>(surface.body)].nodes;
+        if (nodes.empty() || surface.sections.size() < 2) continue;
+        std::vector<std::int64_t> previous;
+        // Elevations (a tower's) from the ground: the body's origin where it starts.
+        const double base =
+            surface.elevations ? frames[static_cast<std::size_t>(surface.body)].r.z() : 0.0;
+        for (const SurfaceSection& section : surface.sections) {
+            sections_.push_back(point_at_span(nodes, section.span - base));
+            std::vector<std::int64_t> ring;
+            for (int k = 0; k < section_points; ++k) {
+                const double a = 2.0 * M_PI * k / section_points;
+                // Chord along the section's y (leading edge at -c/4), thickness along x.
+                const double half = 0.5 * section.chord;
+                Eigen::Vector2d p =
+                    surface.tube ? Eigen::Vector2d(half * std::cos(a), half * std::sin(a))
+                                 : Eigen::Vector2d(thickness_ratio * half * std::cos(a),
+                                                   half * std::sin(a) + 0.25 * section.chord);
+                const double c = std::cos(section.twist), sn = std::sin(section.twist);
+                PointSource source;
+                source.kind = PointSource::Kind::section;
+                source.body = surface.body;
+                source.node = sections_.size() - 1;
+                source.local = Eigen::Vector3d(c * p.x() - sn * p.y(), sn * p.x() + c * p.y(), 0.0);
+                ring.push_back(add_point(source));
+            }
+            if (!previous.empty())
+                for (std::size_t k = 0; k < ring.size(); ++k) {
+                    const std::size_t next = (k + 1) % ring.size();
+                    add_cell(topology_.polys, {previous[k], previous[next], ring[next], ring[k]},
+                             surface.body, CellKind::surface);
+                }
+            previous = std::move(ring);
+        }
+    }
     // Declared points: a marker each, and on a rigid body a skeleton line.
     int ground = -1;
     std::size_t k = 0;
@@ -228,6 +286,12 @@ std::vector<double> Scene::points(const runtime::SimulationResult& run, std::siz
         case PointSource::Kind::body_fixed: {
             const runtime::BodyFrame& f = frames[static_cast<std::size_t>(p.body)];
             r = p.local.isZero() ? f.r : Eigen::Vector3d(f.r + f.R * p.local);
+            break;
+        }
+        case PointSource::Kind::section: {
+            const runtime::PointMotion motion =
+                runtime::point_motion(frames[static_cast<std::size_t>(p.body)], sections_[p.node]);
+            r = motion.r + motion.R * p.local;
             break;
         }
         case PointSource::Kind::node:

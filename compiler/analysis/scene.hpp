@@ -22,13 +22,30 @@
 
 namespace yamsc::analysis {
 
+/// A surface along a flexible body's z axis (its span), where the model's data
+/// give its sections: a blade's chord and twist (an elliptic section, its
+/// thickness a fraction of the chord, the aerodynamic centre at a quarter chord),
+/// a tower's diameter (a tube). Spans between the body's first and last SID node.
+struct SurfaceSection {
+    double span = 0.0;  // along the body's z axis, from its origin [m]
+    double chord = 0.0; // the section's width (a tube: its diameter) [m]
+    double twist = 0.0; // about the span, from the body's y axis [rad]
+};
+struct BodySurface {
+    int body = -1;
+    bool tube = false;
+    bool elevations = false; // spans are heights above the ground (AeroDyn's TwrElev)
+    std::vector<SurfaceSection> sections;
+};
+
 class Scene {
 public:
     /// `m`: the checked model with its scene outputs (ModelChannels::scene);
     /// `run`: a run of it with at least one row (its states start with q; the
     /// first row fixes the box sizes and the axes' length). Throws
     /// diag::InternalError when a scene output is missing.
-    Scene(const model::Model& m, const runtime::SimulationResult& run);
+    Scene(const model::Model& m, const runtime::SimulationResult& run,
+          const std::vector<BodySurface>& surfaces = {});
 
     const vtk::Topology& topology() const { return topology_; }
 
@@ -46,7 +63,7 @@ public:
     };
     /// How one point of the scene follows the motion.
     struct PointSource {
-        enum class Kind { output, body_fixed, node } kind = Kind::output;
+        enum class Kind { output, body_fixed, node, section } kind = Kind::output;
         int body = -1;
         int output = -1;                                 // output: the first of three
         Eigen::Vector3d local = Eigen::Vector3d::Zero(); // body_fixed: from the origin (body axes)
@@ -55,6 +72,7 @@ public:
 
 private:
     std::vector<BodySource> bodies_;
+    std::vector<runtime::BodyPoint> sections_; // the sections' centres on their bodies
     std::vector<PointSource> sources_;
     vtk::Topology topology_;
     std::vector<int> scene_outputs_;

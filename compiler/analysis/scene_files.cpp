@@ -19,7 +19,7 @@ std::string joined(const std::string& dir, const std::string& name) {
 
 void make_folder(const std::string& dir) {
     struct stat st {};
-    if (::lstat(dir.c_str(), &st) == 0) {
+    if (::stat(dir.c_str(), &st) == 0) {
         if (!S_ISDIR(st.st_mode))
             throw diag::UsageError("--vtk " + dir + ": exists and is not a folder");
         return;
@@ -40,8 +40,10 @@ void refuse_unless_regular(const std::string& path) {
 
 } // namespace
 
-std::vector<std::string> scene_file_paths(const std::string& dir, const std::string& model) {
-    return {joined(dir, vtk::pvd_name(model)), joined(dir, vtk::csv_name(model))};
+void check_scene_folder(const std::string& dir) {
+    struct stat st {};
+    if (::stat(dir.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
+        throw diag::UsageError("--vtk " + dir + ": exists and is not a folder");
 }
 
 void write_scene_folder(const std::string& dir, const std::string& model, const Scene& scene,

@@ -8,9 +8,9 @@
 
 namespace yamsc::analysis {
 
-/// The paths of the run's files in `dir` (the .pvd, the .csv), for the checks
-/// before anything runs.
-std::vector<std::string> scene_file_paths(const std::string& dir, const std::string& model);
+/// Throws diag::UsageError when `dir` exists and is not a folder: checked before
+/// the run, whose files are named only once the model is read.
+void check_scene_folder(const std::string& dir);
 
 /// Writes the folder: `scene` drawn at every row of `with_scene` (the run with the
 /// scene's outputs), and `run`'s CSV (sim's -o, with `channels`). The folder is

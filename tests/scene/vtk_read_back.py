@@ -7,7 +7,11 @@ generated model's outputs, written in their shortest exact text; the reference
 is the Python module's run, the same driver with every digit, since the CSV
 keeps 10 significant digits, which the CSV beside the scene is checked to); the
 part names (FieldData, a vtkStringArray) are the bodies'; the topology is the
-same in every step. Usage: vtk_read_back.py YAMSC MODEL OUT_DIR PYTHON_DIR
+same in every step. Then: the CSV beside the scene equals plain `sim -o`'s byte
+for byte, a link among the run's files is refused, the box of inertia of
+box.mbd has its closed-form sides, centre and axes, and the four-bar's loop
+(CVODE, constraints) is closed in the scene.
+Usage: vtk_read_back.py YAMSC MODEL OUT_DIR PYTHON_DIR
 """
 import csv
 import math
@@ -94,4 +98,70 @@ r = subprocess.run([yamsc_exe, "sim", model] + args + ["--vtk", linked], capture
                    text=True)
 assert r.returncode == 2 and "not a regular file" in r.stderr, (r.returncode, r.stderr)
 assert sorted(os.listdir(linked)) == [name + ".pvd"], os.listdir(linked)
+# The box of inertia (tests/scene/box.mbd: a uniform 1 x 2 x 3 m box of 12 kg, its
+# centre of mass at (0.5, 0, 0) in a body turning freely about ground z at 1 rad/s
+# from 0.3 rad, so th = 0.3 + t): sides 1, 2 and 3 m, along the body's axes,
+# about the centre of mass.
+box_out = out + "_box"
+shutil.rmtree(box_out, ignore_errors=True)
+r = subprocess.run([yamsc_exe, "sim", os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                    "box.mbd"),
+                    "--tmax", "1", "--dt", "0.01", "--dt-out", "1", "--ic", "th=0.3,th'=1",
+                    "--vtk", box_out], capture_output=True, text=True)
+assert r.returncode == 0, r.stderr
+reader = vtk.vtkXMLPolyDataReader()
+reader.SetFileName(os.path.join(box_out, "box_body_000001.vtp"))
+reader.Update()
+poly = reader.GetOutput()
+kind = vtk_to_numpy(poly.GetCellData().GetArray("kind"))
+points = vtk_to_numpy(poly.GetPoints().GetData())
+ids = vtk.vtkIdList()
+corners = set()
+for c in range(poly.GetNumberOfCells()):
+    if kind[c] == 4:
+        poly.GetCellPoints(c, ids)
+        corners.update(ids.GetId(k) for k in range(ids.GetNumberOfIds()))
+assert len(corners) == 8 and list(kind).count(4) == 6
+box = points[sorted(corners)]
+th = 1.3
+centre = box.mean(axis=0)
+assert max(abs(centre - [0.5 * math.cos(th), 0.5 * math.sin(th), 1.0])) < 1e-12, centre
+edges = sorted({round(float(d), 9) for d in
+                (((box[:, None, :] - box[None, :, :]) ** 2).sum(axis=2) ** 0.5).ravel()})
+# Between corners: the sides 1, 2, 3, the face diagonals and the space diagonal.
+expected = sorted(round(math.sqrt(a * a + b * b + c * c), 9)
+                  for a in (0, 1) for b in (0, 2) for c in (0, 3))
+assert edges == sorted(set(expected)), edges
+for a in box:
+    for b in box:
+        d = b - a
+        if abs(float((d ** 2).sum()) ** 0.5 - 1.0) < 1e-12:  # the 1 m side: body x
+            assert abs(abs(d[0] * math.cos(th) + d[1] * math.sin(th)) - 1.0) < 1e-12, d
+# A constrained model under CVODE (models/four_bar.mbd): the loop's two ends, each a
+# declared point on its own body, meet in every row (the pin's x and z rows), and
+# the coupler's middle is x_coupler, z_coupler of the CSV.
+bar_out = out + "_four_bar"
+shutil.rmtree(bar_out, ignore_errors=True)
+r = subprocess.run([yamsc_exe, "sim", os.path.join(os.path.dirname(model), "four_bar.mbd"),
+                    "--tmax", "1", "--dt", "0.1", "--method", "cvode", "--vtk", bar_out],
+                   capture_output=True, text=True)
+assert r.returncode == 0, r.stderr
+bar_rows = list(csv.DictReader(open(os.path.join(bar_out, "four_bar.csv"))))
+for row, dataset in zip(bar_rows, ET.parse(os.path.join(bar_out, "four_bar.pvd")).getroot()
+                        .find("Collection").findall("DataSet")):
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(os.path.join(bar_out, dataset.get("file")))
+    reader.Update()
+    poly = reader.GetOutput()
+    markers = []
+    poly.GetVerts().InitTraversal()
+    ids = vtk.vtkIdList()
+    while poly.GetVerts().GetNextCell(ids):
+        markers.append(poly.GetPoint(ids.GetId(0)))
+    # In declaration order: coupler_end, rocker_end, coupler_mid.
+    assert len(markers) == 3, markers
+    end_a, end_b, mid = markers
+    # The run projects onto the constraints after each step: closed to rounding (5e-15).
+    assert abs(end_a[0] - end_b[0]) < 1e-12 and abs(end_a[2] - end_b[2]) < 1e-12, (end_a, end_b)
+    assert abs(mid[0] - float(row["x_coupler"])) < 1e-9 and abs(mid[2] - float(row["z_coupler"])) < 1e-9
 print("ok: the tip at t = 0 and t = 1 s equals x_tip, z_tip to 1e-12")
