@@ -13,15 +13,18 @@
 #include <cstdio>
 #include <limits>
 #include <ostream>
+#include <vector>
 
 namespace yamsc::analysis {
 
 namespace {
 
-// Shown when --channels is not given, in this order, where the run has them:
-// what a turbine's run is looked at for first. Otherwise the first few that move.
-const char* const preferred_channels[] = {"RotSpeed", "GenPwr",      "BldPitch1", "TTDspFA",
-                                          "OoPDefl1", "rotor_speed", "tt_fa",     "aero_v_rel"};
+// Shown when --channels is not given, in this order, where the run has them and
+// they move: what a turbine's run is looked at for first, each by its OpenFAST
+// name or yamsc's (one of each group). Otherwise the first few that move.
+const std::vector<std::vector<std::string>> preferred_channels = {
+    {"RotSpeed", "rotor_speed"}, {"GenPwr"},   {"BldPitch1"},
+    {"TTDspFA", "tt_fa"},        {"OoPDefl1"}, {"aero_v_rel"}};
 constexpr std::size_t default_channel_count = 4;
 
 // A column as read_table names it, `NAME_[unit]`, or as sim writes it, `NAME`.
@@ -57,10 +60,13 @@ std::vector<std::size_t> chosen_columns(const driver::ViewOptions& o, const tabl
         }
         return columns;
     }
-    for (const char* name : preferred_channels)
-        if (const std::size_t j = find(name);
-            j && varies(t.data[j]) && columns.size() < default_channel_count)
-            columns.push_back(j);
+    for (const std::vector<std::string>& group : preferred_channels)
+        for (const std::string& name : group)
+            if (const std::size_t j = find(name);
+                j && varies(t.data[j]) && columns.size() < default_channel_count) {
+                columns.push_back(j);
+                break;
+            }
     if (!columns.empty()) return columns;
     for (std::size_t j = 1; j < t.columns.size() && columns.size() < 3; ++j)
         if (varies(t.data[j])) columns.push_back(j);
