@@ -5,6 +5,7 @@
 const MARGIN_LEFT = 70;
 const MARGIN_RIGHT = 12;
 const PANEL_HEIGHT = 84;
+const AXIS_HEIGHT = 14; // the strip under the panels with the first and last time
 
 function range(values) {
     let lo = Infinity;
@@ -27,7 +28,7 @@ export function createPlots(container, run, onSeek) {
     const t1 = run.times[run.times.length - 1];
     let width = 1;
     let cursorTime = t0;
-    const height = PANEL_HEIGHT * series.length;
+    const height = series.length ? PANEL_HEIGHT * series.length + AXIS_HEIGHT : 0;
     container.style.height = `${height}px`;
     container.hidden = series.length === 0;
     const x = (t) => MARGIN_LEFT + ((t - t0) / Math.max(t1 - t0, 1e-12)) * (width - MARGIN_LEFT - MARGIN_RIGHT);
@@ -70,9 +71,9 @@ export function createPlots(container, run, onSeek) {
         });
         if (series.length) {
             g.fillStyle = '#777';
-            g.fillText(`${t0.toFixed(1)} s`, MARGIN_LEFT, height - 1);
+            g.fillText(`${t0.toFixed(1)} s`, MARGIN_LEFT, height - 2);
             const end = `${t1.toFixed(1)} s`;
-            g.fillText(end, width - MARGIN_RIGHT - g.measureText(end).width, height - 1);
+            g.fillText(end, width - MARGIN_RIGHT - g.measureText(end).width, height - 2);
         }
     }
 
