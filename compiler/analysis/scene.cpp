@@ -228,7 +228,9 @@ Scene::Scene(const model::Model& m, const runtime::SimulationResult& run,
                     surface.tube ? Eigen::Vector2d(half * std::cos(a), half * std::sin(a))
                                  : Eigen::Vector2d(thickness_ratio * half * std::cos(a),
                                                    half * std::sin(a) + 0.25 * section.chord);
-                const double c = std::cos(section.twist), sn = std::sin(section.twist);
+                // The twist turns the section about -z, as AeroDyn turns its nodes
+                // (aero::BemRotor::node_axes_in_root).
+                const double c = std::cos(section.twist), sn = -std::sin(section.twist);
                 PointSource source;
                 source.kind = PointSource::Kind::section;
                 source.body = surface.body;

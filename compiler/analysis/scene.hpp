@@ -29,7 +29,7 @@ namespace yamsc::analysis {
 struct SurfaceSection {
     double span = 0.0;  // along the body's z axis, from its origin [m]
     double chord = 0.0; // the section's width (a tube: its diameter) [m]
-    double twist = 0.0; // about the span, from the body's y axis [rad]
+    double twist = 0.0; // about -z (AeroDyn's BlTwist), from the body's y axis [rad]
 };
 struct BodySurface {
     int body = -1;
