@@ -1,5 +1,6 @@
 #include "analysis/view_page.hpp"
 
+#include "analysis/svg_plot.hpp"
 #include "diag/errors.hpp"
 #include "driver/json.hpp"
 #include "yamsc_viewer/page.hpp"
@@ -47,30 +48,6 @@ std::string json_string(const std::string& s) {
             out += "\\u0026";
         else
             out += c;
-    }
-    return out;
-}
-
-// HTML text (the title).
-std::string html_text(const std::string& s) {
-    std::string out;
-    for (const char c : s) {
-        switch (c) {
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '&':
-            out += "&amp;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        default:
-            out += c;
-        }
     }
     return out;
 }
@@ -144,7 +121,7 @@ std::string view_page_html(const ViewPage& page) {
                               "were not found at build time; scripts/install-deps.sh installs "
                               "them, then rebuild)");
     std::string html(viewer::page_template());
-    replace_all(html, "@TITLE@", html_text(page.title));
+    replace_all(html, "@TITLE@", xml_escape(page.title));
     // The data and the script last: their text is not searched for placeholders.
     const auto data_at = html.find("@DATA@");
     const auto script_at = html.find("@SCRIPT@");
