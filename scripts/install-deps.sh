@@ -9,6 +9,10 @@ packages=(build-essential cmake pkg-config libginac-dev libcln-dev tao-pegtl-dev
           clang libclang-rt-14-dev # clang + libFuzzer: the fuzz targets (docs/robustness.md)
           paraview python3-paraview xvfb) # ParaView, and VTK's Python reader with it (python3-paraview provides vtk and conflicts with python3-vtk9): the scene's tests (docs/visualization.md)
 missing=()
+# yamsc view (docs/viewer.md): the page is bundled by npm at build time and tested
+# in headless Chromium; a nodejs from elsewhere (NodeSource) brings its own npm.
+packages+=(nodejs chromium)
+command -v npm >/dev/null || packages+=(npm)
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done

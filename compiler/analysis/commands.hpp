@@ -15,5 +15,6 @@ int batch(const driver::BatchOptions& o, std::ostream& out, std::ostream& err);
 int batch_merge(const driver::BatchMergeOptions& o, std::ostream& out, std::ostream& err);
 int rotor_table(const driver::RotorTableOptions& o, std::ostream& out, std::ostream& err);
 int turbulence(const driver::TurbulenceOptions& o, std::ostream& out, std::ostream& err);
+int view(const driver::ViewOptions& o, std::ostream& out, std::ostream& err);
 
 } // namespace yamsc::analysis

@@ -215,6 +215,16 @@ struct TurbulenceOptions {
     bool periodic = false;                               // --periodic
 };
 
+/// `yamsc view`: a run written by `sim --vtk` as one HTML page (docs/viewer.md).
+struct ViewOptions {
+    std::string run;                   // the RUN folder or its .pvd
+    std::string output;                // -o page.html (default: <model>.html beside the .pvd)
+    std::vector<std::string> channels; // --channels a,b (default: a few the page chooses)
+    bool no_channels = false;          // --channels none: the scene alone
+    std::string title;                 // --title (default: the model's name)
+    double frame_rate = 30;            // --fps: frames kept per second of the run
+};
+
 int compile(const CompileOptions& o, std::ostream& out, std::ostream& err);
 int check(const CheckOptions& o, std::ostream& out, std::ostream& err);
 int eval(const EvalOptions& o, std::ostream& out, std::ostream& err);
