@@ -19,5 +19,6 @@ Command sid_command();           // sid.cpp
 Command loads_command();         // loads.cpp
 Command turbulence_command();    // turbulence.cpp
 Command dlc_command();           // dlc.cpp
+Command fmu_command();           // fmu.cpp
 
 } // namespace yamsc::cli
