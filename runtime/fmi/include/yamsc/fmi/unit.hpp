@@ -7,6 +7,8 @@
 // (or YAMSC_FMI_UNIT_WITH(<namespace>::Model, settings) with the unit's
 // settings); the macro defines unit_model(), which every FMI entry point of
 // libyamsc_fmi.a reads (docs/fmi.md).
+#include "yamsc/fmi/fmi2_api.h"
+#include "yamsc/fmi/fmi3_api.h"
 #include "yamsc/fmi/variables.hpp"
 #include "yamsc/model_view.hpp"
 #include "yamsc/simulation.hpp"
@@ -103,7 +105,9 @@ template <class Model> UnitModel make_unit_model(UnitSettings settings) {
 
 } // namespace yamsc::fmi
 
-/// Defines the unit's model (one use per unit, at namespace scope).
+/// Defines the unit's model (one use per unit, at namespace scope). It also
+/// refers to both C layers, so that linking libyamsc_fmi.a into the unit pulls
+/// in every entry point without --whole-archive.
 #define YAMSC_FMI_UNIT(Model) YAMSC_FMI_UNIT_WITH(Model, ::yamsc::fmi::UnitSettings{})
 /// The same with the unit's settings (a yamsc::fmi::UnitSettings expression).
 #define YAMSC_FMI_UNIT_WITH(Model, ...)                                                            \
@@ -111,4 +115,6 @@ template <class Model> UnitModel make_unit_model(UnitSettings settings) {
         static const ::yamsc::fmi::UnitModel unit =                                                \
             ::yamsc::fmi::make_unit_model<Model>(__VA_ARGS__);                                     \
         return unit;                                                                               \
-    }
+    }                                                                                              \
+    __attribute__((used)) static const char* (*const yamsc_fmi_entry_points[])(void) = {           \
+        &fmi3GetVersion, &fmi2GetVersion};
