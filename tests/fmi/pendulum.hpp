@@ -7,8 +7,15 @@
 
 namespace fmi_test {
 
+/// The unit's parameters (its glue's settings: the model's, with c = 0.15).
+inline double_pendulum::Params parameters() {
+    double_pendulum::Params p;
+    p.c = 0.15;
+    return p;
+}
+
 inline yamsc::runtime::ModelView pendulum() {
-    return yamsc::runtime::from_generated<double_pendulum::Model>(double_pendulum::Params{});
+    return yamsc::runtime::from_generated<double_pendulum::Model>(parameters());
 }
 
 /// The unit's start state (its glue's settings).

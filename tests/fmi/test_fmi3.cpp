@@ -202,6 +202,7 @@ TEST_CASE("fmi3: the value references of the table are the ones the unit reads")
     CHECK(get(in, vr::th2) == -0.3); // the glue's start state
     CHECK(get(in, vr::th2d) == 0.2);
     CHECK(get(in, vr::m1) == 2.0);    // the model's default
+    CHECK(get(in, vr::c) == 0.15);    // the glue's start value
     CHECK(get(in, vr::step) == 0.01); // the glue's setting
     const fmi3ValueReference m[] = {vr::method};
     fmi3Int32 method = -1;
@@ -229,7 +230,7 @@ TEST_CASE("fmi3: model exchange's derivatives and outputs are the view's rhs and
     REQUIRE(n == 4);
     CHECK(ni == 0);
 
-    double_pendulum::Params p;
+    double_pendulum::Params p = parameters();
     p.k = 7.5;
     const auto view = yamsc::runtime::from_generated<double_pendulum::Model>(p);
     const std::vector<double> x{0.9, -1.2, 2.5, -0.7}, u{0.3, -1.1};

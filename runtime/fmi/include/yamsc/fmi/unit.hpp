@@ -14,6 +14,7 @@
 #include "yamsc/simulation.hpp"
 
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -43,7 +44,12 @@ struct UnitSettings {
     std::vector<double> initial_state;
     /// Empty: the model has no load blocks.
     BlockHook close_blocks;
+    /// Start values of the parameters (np, the model's order; `yamsc fmu --set`
+    /// applied), empty: the model's defaults (Params{}).
+    std::vector<double> parameters;
 };
+/// UnitSettings has `parameters` (glue written for older units tests it).
+#define YAMSC_FMI_SETTINGS_HAVE_PARAMETERS 1
 
 struct UnitModel {
     std::string name;
@@ -99,6 +105,13 @@ template <class Model> UnitModel make_unit_model(UnitSettings settings) {
             else
                 Model::output_matrices(q, qd, u_in, typename Model::Params{}, C, D);
         };
+    if (!settings.parameters.empty()) {
+        if (settings.parameters.size() != u.param_defaults.size())
+            throw std::invalid_argument("the unit's settings give " +
+                                        std::to_string(settings.parameters.size()) +
+                                        " parameters, the model has " + std::to_string(Model::np));
+        u.param_defaults = settings.parameters;
+    }
     u.settings = std::move(settings);
     return u;
 }
