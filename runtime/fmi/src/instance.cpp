@@ -225,8 +225,8 @@ const std::vector<double>& Instance::outputs() {
 }
 
 Status Instance::get_float64(const std::uint32_t* vrs, std::size_t n, double* values) {
-    if (!allowed("GetFloat64", {Mode::initialization, Mode::event, Mode::continuous_time,
-                                Mode::step, Mode::terminated}))
+    if (!allowed("GetFloat64", {Mode::instantiated, Mode::initialization, Mode::event,
+                                Mode::continuous_time, Mode::step, Mode::terminated}))
         return Status::error;
     for (std::size_t k = 0; k < n; ++k) {
         const Variable* v = variable(vrs[k], "GetFloat64");
@@ -330,8 +330,8 @@ Status Instance::set_float64(const std::uint32_t* vrs, std::size_t n, const doub
 }
 
 Status Instance::get_int32(const std::uint32_t* vrs, std::size_t n, std::int32_t* values) {
-    if (!allowed("GetInt32", {Mode::initialization, Mode::event, Mode::continuous_time, Mode::step,
-                              Mode::terminated}))
+    if (!allowed("GetInt32", {Mode::instantiated, Mode::initialization, Mode::event,
+                              Mode::continuous_time, Mode::step, Mode::terminated}))
         return Status::error;
     for (std::size_t k = 0; k < n; ++k) {
         const Variable* v = variable(vrs[k], "GetInt32");
