@@ -22,8 +22,11 @@ Logger fmi3_logger(fmi3InstanceEnvironment environment, fmi3LogMessageCallback l
     };
 }
 
+// The resources folder as the blocks join file names to it: with its separator.
 std::string folder(fmi3String resource_path) {
-    return resource_path ? resource_path : "";
+    std::string f = resource_path ? resource_path : "";
+    if (!f.empty() && f.back() != '/') f += '/';
+    return f;
 }
 
 template <class F> fmi3Status call(fmi3Instance instance, const char* function, F&& f) {
