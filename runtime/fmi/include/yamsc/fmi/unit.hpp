@@ -7,11 +7,14 @@
 // (or YAMSC_FMI_UNIT_WITH(<namespace>::Model, settings) with the unit's
 // settings); the macro defines unit_model(), which every FMI entry point of
 // libyamsc_fmi.a reads (docs/fmi.md).
+#include "yamsc/fmi/fmi2_api.h"
+#include "yamsc/fmi/fmi3_api.h"
 #include "yamsc/fmi/variables.hpp"
 #include "yamsc/model_view.hpp"
 #include "yamsc/simulation.hpp"
 
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -41,7 +44,12 @@ struct UnitSettings {
     std::vector<double> initial_state;
     /// Empty: the model has no load blocks.
     BlockHook close_blocks;
+    /// Start values of the parameters (np, the model's order; `yamsc fmu --set`
+    /// applied), empty: the model's defaults (Params{}).
+    std::vector<double> parameters;
 };
+/// UnitSettings has `parameters` (glue written for older units tests it).
+#define YAMSC_FMI_SETTINGS_HAVE_PARAMETERS 1
 
 struct UnitModel {
     std::string name;
@@ -97,13 +105,22 @@ template <class Model> UnitModel make_unit_model(UnitSettings settings) {
             else
                 Model::output_matrices(q, qd, u_in, typename Model::Params{}, C, D);
         };
+    if (!settings.parameters.empty()) {
+        if (settings.parameters.size() != u.param_defaults.size())
+            throw std::invalid_argument("the unit's settings give " +
+                                        std::to_string(settings.parameters.size()) +
+                                        " parameters, the model has " + std::to_string(Model::np));
+        u.param_defaults = settings.parameters;
+    }
     u.settings = std::move(settings);
     return u;
 }
 
 } // namespace yamsc::fmi
 
-/// Defines the unit's model (one use per unit, at namespace scope).
+/// Defines the unit's model (one use per unit, at namespace scope). It also
+/// refers to both C layers, so that linking libyamsc_fmi.a into the unit pulls
+/// in every entry point without --whole-archive.
 #define YAMSC_FMI_UNIT(Model) YAMSC_FMI_UNIT_WITH(Model, ::yamsc::fmi::UnitSettings{})
 /// The same with the unit's settings (a yamsc::fmi::UnitSettings expression).
 #define YAMSC_FMI_UNIT_WITH(Model, ...)                                                            \
@@ -111,4 +128,6 @@ template <class Model> UnitModel make_unit_model(UnitSettings settings) {
         static const ::yamsc::fmi::UnitModel unit =                                                \
             ::yamsc::fmi::make_unit_model<Model>(__VA_ARGS__);                                     \
         return unit;                                                                               \
-    }
+    }                                                                                              \
+    __attribute__((used)) static const char* (*const yamsc_fmi_entry_points[])(void) = {           \
+        &fmi3GetVersion, &fmi2GetVersion};
