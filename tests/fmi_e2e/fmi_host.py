@@ -328,7 +328,7 @@ class Instance:
     def call(self, name, *args):
         f = getattr(self.unit.lib, self.prefix + name)
         f.restype = C.c_int
-        ok(f(self.handle, *args), self.prefix + name)
+        ok(f(C.c_void_p(self.handle), *args), self.prefix + name)
 
     def set(self, values):
         """values: {vr: number}; reals and integers by the variables' kinds."""
@@ -434,7 +434,7 @@ class Instance:
         self.call("Terminate")
         f = getattr(self.unit.lib, self.prefix + "FreeInstance")
         f.restype = None
-        f(self.handle)
+        f(C.c_void_p(self.handle))
         self.handle = None
 
 
