@@ -87,6 +87,7 @@ std::string glue_source(const UnitSettings& s) {
     state.insert(state.end(), s.qd0.begin(), s.qd0.end());
     return "// The FMI unit of the model in model.hpp (written by yamsc fmu).\n"
            "#include \"model.hpp\"\n"
+           "#include <yamsc/fmi/blocks.hpp>\n"
            "#include <yamsc/fmi/unit.hpp>\n"
            "namespace {\n"
            "::yamsc::fmi::UnitSettings yamsc_unit_settings() {\n"
@@ -101,9 +102,7 @@ std::string glue_source(const UnitSettings& s) {
            text::shortest(s.step) +
            ";\n"
            "    s.initial_state = " +
-           list(state) +
-           ";\n"
-
+           list(state) + ";\n" + s.blocks +
            "    return s;\n"
            "}\n"
            "} // namespace\n"

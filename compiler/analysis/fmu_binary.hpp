@@ -24,7 +24,9 @@ struct UnitSettings {
     std::vector<double> parameters;                // every parameter's start value (--set applied)
     std::vector<double> q0, qd0;                   // the states' start values (the `initial` block)
     runtime::Method method = runtime::Method::rk4; // the co-simulation step's integrator
-    double step = 1e-3;                            // its fixed step [s]
+    double step = 1e-3;
+    /// Statements that set `s.close_blocks` (fmu_blocks.hpp), "" without blocks.
+    std::string blocks; // its fixed step [s]
 };
 
 /// The glue source (it includes the model's header as "model.hpp").

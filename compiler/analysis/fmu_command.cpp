@@ -1,6 +1,7 @@
 // `yamsc fmu`: the model as an FMI unit (docs/packaging.md, "FMI units").
 #include "analysis/commands.hpp"
 #include "analysis/fmu_binary.hpp"
+#include "analysis/fmu_blocks.hpp"
 #include "analysis/fmu_description.hpp"
 #include "analysis/jit_cache.hpp"
 #include "analysis/load_blocks.hpp"
@@ -47,12 +48,6 @@ std::string token_of(const std::string& content) {
     const std::string hex = driver::digest(content) + driver::digest("token\n" + content);
     return "{" + hex.substr(0, 8) + "-" + hex.substr(8, 4) + "-" + hex.substr(12, 4) + "-" +
            hex.substr(16, 4) + "-" + hex.substr(20, 12) + "}";
-}
-
-bool wind_file(const std::string& spec) {
-    char* end = nullptr;
-    std::strtod(spec.c_str(), &end);
-    return !spec.empty() && *end != '\0' && spec.rfind("step:", 0) != 0;
 }
 
 std::string read_input(const std::string& path) {
@@ -113,10 +108,8 @@ std::string documentation(const model::Model& m, const std::vector<fmi::Variable
 int fmu(const FmuOptions& o, std::ostream& out, std::ostream& err) {
     BlockOptions blocks;
     blocks.aero = o.aero;
-    blocks.wind = o.wind;
     std::vector<NamedFile> inputs{{"the model", o.model}, {"--external", o.external}};
     for (const NamedFile& f : block_files(blocks)) inputs.push_back(f);
-    if (wind_file(o.wind)) inputs.push_back({"--wind", o.wind});
     const std::vector<NamedFile> outputs{{"-o", o.output}, {"--depfile", o.depfile}};
     driver::check_outputs(inputs, outputs);
     auto progress = [&](const std::string& s) {
@@ -186,6 +179,15 @@ int fmu(const FmuOptions& o, std::ostream& out, std::ostream& err) {
     settings.qd0 = qd0;
     settings.method = layout.method;
     settings.step = step;
+    // Each file once (two kinds of block read --aero's).
+    std::vector<std::string> resource_files, resource_names;
+    for (const NamedFile& f : block_files(blocks))
+        if (std::find(resource_files.begin(), resource_files.end(), f.path) ==
+            resource_files.end()) {
+            resource_files.push_back(f.path);
+            resource_names.push_back(base_name(f.path));
+        }
+    settings.blocks = block_plan_source(m, param_names, blocks, resource_names);
     // The token: the model, the parameters' starts and the settings.
     std::string identity = l->digest + "\n" + YAMSC_VERSION + "\n" + glue_source(settings);
     for (double p : l->params) identity += text::shortest(p) + "\n";
@@ -215,10 +217,8 @@ int fmu(const FmuOptions& o, std::ostream& out, std::ostream& err) {
     entries.push_back({"documentation/", ""});
     entries.push_back({"documentation/index.html", documentation(m, vars)});
     entries.push_back({"resources/", ""});
-    for (const NamedFile& f : block_files(blocks))
-        entries.push_back({"resources/" + base_name(f.path), read_input(f.path)});
-    if (wind_file(o.wind))
-        entries.push_back({"resources/" + base_name(o.wind), read_input(o.wind)});
+    for (std::size_t k = 0; k < resource_files.size(); ++k)
+        entries.push_back({"resources/" + resource_names[k], read_input(resource_files[k])});
     const std::string archive = zip_stored(entries);
     std::vector<std::pair<std::string, std::string>> files{{o.output, archive}};
     if (!o.depfile.empty()) {

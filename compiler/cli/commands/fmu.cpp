@@ -25,7 +25,6 @@ FmuOptions parse_fmu(const Args& a) {
     o.set = a.assignments("--set");
     o.external = a.get("--external");
     o.aero = a.get("--aero");
-    o.wind = a.get("--wind");
     o.depfile = a.get("--depfile");
     o.verbose = a.has("-v");
     return o;
@@ -38,20 +37,20 @@ Command fmu_command() {
         "fmu", "package a model as an FMI 3.0 or 2.0 unit (model exchange and co-simulation)",
         R"(yamsc fmu MODEL.mbd -o model.fmu [--fmi-version 3|2] [--method rk4|abm4|cvode]
                     [--step DT] [--set name=v,..] [--external file.c|file.cpp]
-                    [--aero FILE] [--wind V|step:V0:V1:t=T|wind.csv] [--depfile FILE] [-v])",
+                    [--aero Cp_Ct_Cq.txt] [--depfile FILE] [-v])",
         R"(  -o FILE             the unit (a ZIP file, conventionally .fmu) (required)
   --fmi-version V     3 (default) or 2: the standard modelDescription.xml follows
   --method M          the co-simulation step's integrator: rk4 (default), abm4 or cvode
   --step DT           its fixed internal step [s] (default 0.001)
   --set name=v,..     the parameters' start values (accept `deg`)
   --external SRC      the model's external functions, a C or C++ source compiled in
-  --aero FILE         the rotor's data (as for sim), carried under resources/
-  --wind SPEC         the wind input of a load block (as for sim); a file is carried
+  --aero FILE         the Cp/Ct/Cq table of the model's `load rotor_table` (as for sim),
+                      carried under resources/ (the wind is then the unit's input)
   --depfile FILE      a make rule: the unit depends on the model and every file it read
   -v                  progress on stderr
 Details: docs/cli.md, docs/packaging.md, docs/fmi.md.
 )",
-        {{"-o", "--fmi-version", "--method", "--step", "--set", "--external", "--aero", "--wind",
+        {{"-o", "--fmi-version", "--method", "--step", "--set", "--external", "--aero",
           "--depfile"},
          {"-v"}},
         parse_fmu, analysis::fmu);
