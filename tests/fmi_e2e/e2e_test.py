@@ -78,6 +78,41 @@ def structural(unit, what):
               all(prefix + n in symbols for n in needed))
 
 
+def planted_errors(unit, what):
+    """The host's structural checks reject descriptions with planted faults."""
+    with open(os.path.join(unit.folder, "modelDescription.xml"), "rb") as f:
+        text = f.read().decode()
+    d = unit.description
+    q = d.by_vr[d.states[0]]
+    faults = {
+        "a value reference twice": ('valueReference="%d"' % (q.vr + 1), 'valueReference="%d"' % q.vr),
+        "a parameter that is continuous": ('causality="parameter" variability="tunable"',
+                                           'causality="parameter" variability="continuous"'),
+        "an output with a start value": (
+            ('causality="output" variability="continuous" initial="calculated"',
+             'causality="output" variability="continuous" initial="calculated" start="1"')
+            if d.fmi3 else ('<Real unit="m"/>', '<Real unit="m" start="1"/>')),
+        "a unit not defined": ('unit="rad"', 'unit="furlong"'),
+    }
+    if d.fmi3:
+        faults["a derivative of nothing"] = ('derivative="%d"' % q.vr, 'derivative="999"')
+        faults["an output left out of ModelStructure"] = ("<Output ", "<Unknown ")
+    else:
+        faults["a derivative of nothing"] = ('derivative="%d"' % q.index, 'derivative="999"')
+        faults["an output left out of ModelStructure"] = ("<Outputs>\n      <Unknown",
+                                                          "<Outputs>\n      <Other")
+    for fault, (old, new) in faults.items():
+        planted = text.replace(old, new, 1)
+        if planted == text:
+            check(what + ": planted fault '%s' found its place" % fault, False)
+            continue
+        try:
+            fmi_host.Description(planted.encode())
+            check(what + ": the host rejects " + fault, False)
+        except (fmi_host.DescriptionError, KeyError):
+            check(what + ": the host rejects " + fault, True)
+
+
 def derivative_checks(unit, what, start):
     """ME: d(derivatives)/d(states) by GetDirectionalDerivative against central
     differences of GetContinuousStateDerivatives, at the state after a short run."""
@@ -143,6 +178,8 @@ def case(name, model, sim_args, fmu_args, t_end, h, start_by_name, cs_tolerance=
         d = unit.description
         start = {d.by_name[n].vr: v for n, v in start_by_name.items()}
         structural(unit, what)
+        if name == "double_pendulum":
+            planted_errors(unit, what)
         record, rows = fmi_host.simulate_cs(unit, t_end, h, start)
         compare(what + " CS (RK4, step %g)" % h, unit, record, rows, header, sim_rows,
                 cs_tolerance)
