@@ -70,14 +70,15 @@ bool is_c_source(const std::string& path) {
     return path.size() > 2 && path.compare(path.size() - 2, 2, ".c") == 0;
 }
 
-std::string read_all(const std::string& path) {
+} // namespace
+
+std::string file_bytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
+    if (!in) throw diag::UserError("cannot read '" + path + "'");
     std::stringstream text;
     text << in.rdbuf();
     return text.str();
 }
-
-} // namespace
 
 std::string glue_source(const UnitSettings& s) {
     const char* method = s.method == runtime::Method::cvode  ? "cvode"
@@ -167,7 +168,7 @@ std::string build_unit_binary(const UnitSources& sources, const std::string& com
         throw diag::UserError("the C++ compiler failed on the unit (" + compiler + "):\n" +
                               e.messages);
     }
-    return read_all(library);
+    return file_bytes(library);
 }
 
 } // namespace yamsc::analysis

@@ -29,6 +29,9 @@ struct UnitSettings {
     std::string blocks; // its fixed step [s]
 };
 
+/// A file's bytes (UserError naming it when it cannot be read).
+std::string file_bytes(const std::string& path);
+
 /// The glue source (it includes the model's header as "model.hpp").
 std::string glue_source(const UnitSettings& s);
 

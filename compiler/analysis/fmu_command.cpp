@@ -50,14 +50,6 @@ std::string token_of(const std::string& content) {
            hex.substr(16, 4) + "-" + hex.substr(20, 12) + "}";
 }
 
-std::string read_input(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw diag::UserError("cannot read '" + path + "'");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 std::string base_name(const std::string& path) {
     const auto slash = path.find_last_of('/');
     return slash == std::string::npos ? path : path.substr(slash + 1);
@@ -218,7 +210,7 @@ int fmu(const FmuOptions& o, std::ostream& out, std::ostream& err) {
     entries.push_back({"documentation/index.html", documentation(m, vars)});
     entries.push_back({"resources/", ""});
     for (std::size_t k = 0; k < resource_files.size(); ++k)
-        entries.push_back({"resources/" + resource_names[k], read_input(resource_files[k])});
+        entries.push_back({"resources/" + resource_names[k], file_bytes(resource_files[k])});
     const std::string archive = zip_stored(entries);
     std::vector<std::pair<std::string, std::string>> files{{o.output, archive}};
     if (!o.depfile.empty()) {

@@ -180,6 +180,20 @@ void check_table(const std::vector<Variable>& vars) {
             throw std::logic_error("the variable table's value references are not its positions");
 }
 
+/// UnitDefinitions and DefaultExperiment, alike in both versions.
+std::string units_and_experiment(const std::vector<std::string>& units, double step) {
+    std::string out;
+    const std::set<std::string> unit_names(units.begin(), units.end());
+    if (unit_names.size() > (unit_names.count("") ? 1U : 0U)) {
+        out += "  <UnitDefinitions>\n";
+        for (const std::string& u : unit_names)
+            if (!u.empty()) out += "    <Unit" + attribute("name", u) + "/>\n";
+        out += "  </UnitDefinitions>\n";
+    }
+    return out + "  <DefaultExperiment" + attribute("startTime", "0") +
+           (step > 0 ? attribute("stepSize", text::shortest(step)) : "") + "/>\n";
+}
+
 std::string fmi3(const DescriptionFacts& f, const std::vector<std::string>& units) {
     const std::vector<Variable>& vars = f.variables;
     std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<fmiModelDescription" +
@@ -197,15 +211,7 @@ std::string fmi3(const DescriptionFacts& f, const std::vector<std::string>& unit
            attribute("canGetAndSetFMUState", "true") +
            attribute("providesDirectionalDerivatives", "true") +
            (f.step > 0 ? attribute("fixedInternalStepSize", text::shortest(f.step)) : "") + "/>\n";
-    const std::set<std::string> unit_names(units.begin(), units.end());
-    if (unit_names.size() > (unit_names.count("") ? 1U : 0U)) {
-        out += "  <UnitDefinitions>\n";
-        for (const std::string& u : unit_names)
-            if (!u.empty()) out += "    <Unit" + attribute("name", u) + "/>\n";
-        out += "  </UnitDefinitions>\n";
-    }
-    out += "  <DefaultExperiment" + attribute("startTime", "0") +
-           (f.step > 0 ? attribute("stepSize", text::shortest(f.step)) : "") + "/>\n";
+    out += units_and_experiment(units, f.step);
     out += "  <ModelVariables>\n";
     for (const Variable& v : vars) {
         const char* element = v.type == ValueType::int32 ? "Int32" : "Float64";
@@ -262,15 +268,7 @@ std::string fmi2(const DescriptionFacts& f, const std::vector<std::string>& unit
            attribute("canHandleVariableCommunicationStepSize", "true") +
            attribute("canGetAndSetFMUstate", "true") +
            attribute("providesDirectionalDerivative", "true") + "/>\n";
-    const std::set<std::string> unit_names(units.begin(), units.end());
-    if (unit_names.size() > (unit_names.count("") ? 1U : 0U)) {
-        out += "  <UnitDefinitions>\n";
-        for (const std::string& u : unit_names)
-            if (!u.empty()) out += "    <Unit" + attribute("name", u) + "/>\n";
-        out += "  </UnitDefinitions>\n";
-    }
-    out += "  <DefaultExperiment" + attribute("startTime", "0") +
-           (f.step > 0 ? attribute("stepSize", text::shortest(f.step)) : "") + "/>\n";
+    out += units_and_experiment(units, f.step);
     out += "  <ModelVariables>\n";
     for (const Variable& v : vars) {
         out += "    <!-- index " + std::to_string(v.value_reference + 1) + " -->\n";

@@ -438,11 +438,14 @@ class Instance:
         self.handle = None
 
 
+def recorded(d):
+    """The value references a run records by default: the states and the outputs."""
+    return [v.vr for v in d.variables if v.causality == "output" or v.vr in d.states]
+
+
 def simulate_cs(unit, t_end, h, start_values=None, record=None):
     """Co-simulation: doStep by h to t_end; rows [t, values of `record`]."""
-    d = unit.description
-    record = record or [v.vr for v in d.variables if v.causality in ("output",)
-                        or v.vr in d.states]
+    record = record or recorded(unit.description)
     inst = Instance(unit, cs=True)
     inst.initialize(start_values)
     rows = [[0.0] + inst.get(record)]
@@ -456,9 +459,7 @@ def simulate_cs(unit, t_end, h, start_values=None, record=None):
 
 def simulate_me(unit, t_end, h, start_values=None, record=None):
     """Model exchange with the host's classical RK4 at step h."""
-    d = unit.description
-    record = record or [v.vr for v in d.variables if v.causality in ("output",)
-                        or v.vr in d.states]
+    record = record or recorded(unit.description)
     inst = Instance(unit, cs=False)
     inst.initialize(start_values)
     x = inst.states()
