@@ -27,6 +27,26 @@ fmi3Instance co_simulation(Log& log) {
                                              nullptr, 0, &log, fmi3_log, nullptr);
 }
 
+void set(fmi3Instance in, unsigned vr, double v);
+
+// A co-simulation instance with the inputs u and the method (the step too
+// when given, the host's tolerance when given), initialized.
+fmi3Instance started(Log& log, const std::vector<double>& u, yamsc::runtime::Method method,
+                     double step = 0.0, double tolerance = 0.0) {
+    fmi3Instance in = co_simulation(log);
+    REQUIRE(in);
+    set(in, vr::tau, u[0]);
+    set(in, vr::f, u[1]);
+    if (step > 0.0) set(in, vr::step, step);
+    const fmi3ValueReference m[] = {vr::method};
+    const fmi3Int32 code = yamsc::fmi::method_code(method);
+    REQUIRE(FMI3(fmi3SetInt32)(in, m, 1, &code, 1) == fmi3OK);
+    REQUIRE(FMI3(fmi3EnterInitializationMode)(in, tolerance > 0.0, tolerance, 0.0, false, 0.0) ==
+            fmi3OK);
+    REQUIRE(FMI3(fmi3ExitInitializationMode)(in) == fmi3OK);
+    return in;
+}
+
 void initialize(fmi3Instance in) {
     REQUIRE(FMI3(fmi3EnterInitializationMode)(in, false, 0.0, 0.0, false, 0.0) == fmi3OK);
     REQUIRE(FMI3(fmi3ExitInitializationMode)(in) == fmi3OK);
@@ -263,74 +283,40 @@ TEST_CASE("fmi3: model exchange's derivatives and outputs are the view's rhs and
 }
 
 TEST_CASE("fmi3: a co-simulation step is runtime::simulate's (RK4, ABM4, several internal steps)") {
+    using yamsc::runtime::Method;
     const std::vector<double> u{0.7, -0.4};
+    Log log;
     SUBCASE("RK4, the communication step is the internal step") {
-        Log log;
-        fmi3Instance in = co_simulation(log);
-        REQUIRE(in);
-        set(in, vr::tau, u[0]);
-        set(in, vr::f, u[1]);
-        initialize(in);
-        check_rows(run(in, 0.01, 100), simulate(yamsc::runtime::Method::rk4, 0.01, 1.0, u), 1,
-                   1e-12);
+        fmi3Instance in = started(log, u, Method::rk4);
+        check_rows(run(in, 0.01, 100), simulate(Method::rk4, 0.01, 1.0, u), 1, 1e-12);
         FMI3(fmi3FreeInstance)(in);
     }
     SUBCASE("RK4, five internal steps per communication step") {
-        Log log;
-        fmi3Instance in = co_simulation(log);
-        REQUIRE(in);
-        set(in, vr::tau, u[0]);
-        set(in, vr::f, u[1]);
-        set(in, vr::step, 0.002);
-        initialize(in);
-        check_rows(run(in, 0.01, 50), simulate(yamsc::runtime::Method::rk4, 0.002, 0.5, u), 5,
-                   1e-12);
+        fmi3Instance in = started(log, u, Method::rk4, 0.002);
+        check_rows(run(in, 0.01, 50), simulate(Method::rk4, 0.002, 0.5, u), 5, 1e-12);
         FMI3(fmi3FreeInstance)(in);
     }
     SUBCASE("ABM4: the multistep history carries over between communication steps") {
-        Log log;
-        fmi3Instance in = co_simulation(log);
-        REQUIRE(in);
-        set(in, vr::tau, u[0]);
-        set(in, vr::f, u[1]);
-        const fmi3ValueReference m[] = {vr::method};
-        const fmi3Int32 abm4 = 1;
-        REQUIRE(FMI3(fmi3SetInt32)(in, m, 1, &abm4, 1) == fmi3OK);
-        initialize(in);
+        fmi3Instance in = started(log, u, Method::abm4);
         const auto rows = run(in, 0.01, 100);
-        const auto abm = simulate(yamsc::runtime::Method::abm4, 0.01, 1.0, u);
-        check_rows(rows, abm, 1, 1e-12);
+        check_rows(rows, simulate(Method::abm4, 0.01, 1.0, u), 1, 1e-12);
         // Not RK4's numbers: the run did take ABM4 steps.
-        const auto rk = simulate(yamsc::runtime::Method::rk4, 0.01, 1.0, u);
-        CHECK(std::abs(rows.back()[0] - rk.state_row(100)[0]) > 1e-9);
+        CHECK(std::abs(rows.back()[0] - simulate(Method::rk4, 0.01, 1.0, u).state_row(100)[0]) >
+              1e-9);
         FMI3(fmi3FreeInstance)(in);
     }
     SUBCASE("CVODE, restarted at each communication point: near RK4 at a small step") {
-        Log log;
-        fmi3Instance in = co_simulation(log);
-        REQUIRE(in);
-        set(in, vr::tau, u[0]);
-        set(in, vr::f, u[1]);
-        const fmi3ValueReference m[] = {vr::method};
-        const fmi3Int32 cvode = 2;
-        REQUIRE(FMI3(fmi3SetInt32)(in, m, 1, &cvode, 1) == fmi3OK);
-        REQUIRE(FMI3(fmi3EnterInitializationMode)(in, true, 1e-9, 0.0, false, 0.0) == fmi3OK);
-        REQUIRE(FMI3(fmi3ExitInitializationMode)(in) == fmi3OK);
-        check_rows(run(in, 0.05, 20), simulate(yamsc::runtime::Method::rk4, 0.001, 1.0, u), 50,
-                   1e-6);
+        fmi3Instance in = started(log, u, Method::cvode, 0.0, 1e-9);
+        check_rows(run(in, 0.05, 20), simulate(Method::rk4, 0.001, 1.0, u), 50, 1e-6);
         FMI3(fmi3FreeInstance)(in);
     }
+    CHECK(!log.has_error());
 }
 
 TEST_CASE(
     "fmi3: a state got and set again repeats the run to the last bit (ABM4's history included)") {
     Log log;
-    fmi3Instance in = co_simulation(log);
-    REQUIRE(in);
-    const fmi3ValueReference m[] = {vr::method};
-    const fmi3Int32 abm4 = 1;
-    REQUIRE(FMI3(fmi3SetInt32)(in, m, 1, &abm4, 1) == fmi3OK);
-    initialize(in);
+    fmi3Instance in = started(log, {0.0, 0.0}, yamsc::runtime::Method::abm4);
     run(in, 0.01, 30);
     fmi3FMUState state = nullptr;
     REQUIRE(FMI3(fmi3GetFMUState)(in, &state) == fmi3OK);
