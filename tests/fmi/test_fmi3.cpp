@@ -277,6 +277,20 @@ TEST_CASE("fmi3: model exchange's derivatives and outputs are the view's rhs and
     CHECK(FMI3(fmi3CompletedIntegratorStep)(in, true, &enter_event, &stop) == fmi3OK);
     CHECK(!enter_event);
     CHECK(!stop);
+    // A tunable parameter changed in Event Mode: the next derivatives are the new model's.
+    REQUIRE(FMI3(fmi3EnterEventMode)(in) == fmi3OK);
+    set(in, vr::k, 3.0);
+    REQUIRE(FMI3(fmi3EnterContinuousTimeMode)(in) == fmi3OK);
+    const fmi3ValueReference k[] = {vr::k};
+    const double k_again = 4.0;
+    CHECK(FMI3(fmi3SetFloat64)(in, k, 1, &k_again, 1) == fmi3Error); // not in Continuous-Time Mode
+    p.k = 3.0;
+    yamsc::runtime::from_generated<double_pendulum::Model>(p).rhs(0.25, x.data(), u.data(),
+                                                                  ref.data());
+    CHECK(FMI3(fmi3GetContinuousStateDerivatives)(in, xdot.data(), 4) == fmi3OK);
+    for (int i = 0; i < 4; ++i)
+        CHECK(std::abs(xdot[i] - ref[i]) <= 1e-15 * (1.0 + std::abs(ref[i])));
+    log.messages.clear();
     CHECK(FMI3(fmi3Terminate)(in) == fmi3OK);
     CHECK(!log.has_error());
     FMI3(fmi3FreeInstance)(in);
