@@ -360,6 +360,7 @@ TEST_CASE("fmi3: directional derivatives are the exact Jacobian, and central dif
     initialize(in);
     REQUIRE(FMI3(fmi3EnterContinuousTimeMode)(in) == fmi3OK);
     const std::vector<double> x{0.4, 0.8, -1.5, 0.6}, u{0.9, 0.35};
+    REQUIRE(FMI3(fmi3SetTime)(in, 0.7) == fmi3OK);
     REQUIRE(FMI3(fmi3SetContinuousStates)(in, x.data(), 4) == fmi3OK);
     set(in, vr::tau, u[0]);
     set(in, vr::f, u[1]);
@@ -377,18 +378,25 @@ TEST_CASE("fmi3: directional derivatives are the exact Jacobian, and central dif
         for (int i = 0; i < 7; ++i) J[i][j] = s[i];
     }
     const auto view = pendulum();
-    std::vector<double> A(16);
-    view.rhs_jacobian(0.0, x.data(), u.data(), A.data());
+    std::vector<double> A(16), C(12), D(6);
+    view.rhs_jacobian(0.7, x.data(), u.data(), A.data());
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) CHECK(J[i][j] == A[i * 4 + j]);
+    // The outputs' rows are the generated output matrices (the model has no explicit time).
+    double_pendulum::output_matrices(x.data(), x.data() + 2, u.data(), parameters(), C.data(),
+                                     D.data());
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 4; ++j) CHECK(J[4 + i][j] == C[i * 4 + j]);
+        for (int j = 0; j < 2; ++j) CHECK(J[4 + i][4 + j] == D[i * 2 + j]);
+    }
 
     // Central differences of the view's rhs and outputs in every known.
     std::vector<double> v = x;
     v.insert(v.end(), u.begin(), u.end());
     auto values = [&](const std::vector<double>& w) {
         std::vector<double> xdot(4), y(3), out;
-        view.rhs(0.0, w.data(), w.data() + 4, xdot.data());
-        view.outputs(0.0, w.data(), w.data() + 2, w.data() + 4, y.data());
+        view.rhs(0.7, w.data(), w.data() + 4, xdot.data());
+        view.outputs(0.7, w.data(), w.data() + 2, w.data() + 4, y.data());
         out = xdot;
         out.insert(out.end(), y.begin(), y.end());
         return out;

@@ -5,7 +5,8 @@
 //   B = dx'/du  [0; M^-1 dF/du] from the generated jacobians and mass_matrix
 //               (exact) for a model without constraints or block states,
 //   C = dy/dx, D = dy/du  the generated output_matrices (exact) for the
-//               model's own outputs,
+//               model's own outputs when they do not depend on t itself
+//               (output_matrices are evaluated at t = 0),
 // and central differences (step 1e-6 (1 + |v|)) where the view lacks the
 // exact ones: constrained models (B), closed load blocks (B, C, D).
 #include "instance.hpp"
@@ -91,13 +92,30 @@ struct Jacobian {
         return D;
     }
 
+    // The generated output_matrices are those of the operating point, at t = 0:
+    // exact here only when neither the outputs nor the accelerations they may
+    // read change with t itself at this point (prescribed motions do).
+    bool free_of_time() const {
+        if (in.n_.t == 0.0) return true;
+        const runtime::ModelView& v = in.view_;
+        const double* x = in.n_.x.data();
+        const double* u = in.n_.u.data();
+        std::vector<double> now(ny), zero(ny), xdot_now(nx), xdot_zero(nx);
+        v.outputs(in.n_.t, x, x + in.nq_, u, now.data());
+        v.outputs(0.0, x, x + in.nq_, u, zero.data());
+        v.rhs(in.n_.t, x, u, xdot_now.data());
+        v.rhs(0.0, x, u, xdot_zero.data());
+        return now == zero && xdot_now == xdot_zero;
+    }
+
     void output_matrices() {
         C.assign(ny * nx, 0.0);
         D.assign(ny * nu, 0.0);
         if (ny == 0) return;
         const runtime::ModelView& v = in.view_;
         const std::size_t nq = in.nq_;
-        if (in.unit_.output_matrices && v.nz == 0 && ny == in.unit_.output_names.size()) {
+        if (in.unit_.output_matrices && v.nz == 0 && ny == in.unit_.output_names.size() &&
+            free_of_time()) {
             const double* q = in.n_.x.data();
             in.unit_.output_matrices(in.n_.p.data(), q, q + nq, in.n_.u.data(), C.data(), D.data());
             return;
