@@ -74,3 +74,39 @@ TEST_CASE("fmi3: a constrained model's unit steps as runtime::simulate of the co
     CHECK(!log.has_error());
     FOUR_BAR(fmi3FreeInstance)(in);
 }
+
+TEST_CASE("fmi3: model exchange of a constrained model projects onto the constraints at each "
+          "completed step") {
+    const auto view = yamsc::runtime::constrain(
+        yamsc::runtime::from_generated<four_bar::Model>(four_bar::Params{}));
+    const double pi = 3.14159265358979323846;
+    const std::vector<double> u{0.0};
+    auto x =
+        yamsc::runtime::consistent_initial_state(view, 0.0, {pi / 4, 0.0, 1.0, 1.0, 0.0, 0.0}, u).x;
+
+    Log log;
+    fmi3Instance in = FOUR_BAR(fmi3InstantiateModelExchange)("four_bar", "", nullptr, false, false,
+                                                             &log, fmi3_log);
+    REQUIRE(in);
+    REQUIRE(FOUR_BAR(fmi3EnterInitializationMode)(in, false, 0.0, 0.0, false, 0.0) == fmi3OK);
+    REQUIRE(FOUR_BAR(fmi3ExitInitializationMode)(in) == fmi3OK);
+    REQUIRE(FOUR_BAR(fmi3EnterContinuousTimeMode)(in) == fmi3OK);
+    // An explicit Euler step of the host drifts off the constraints ...
+    double xdot[6];
+    REQUIRE(FOUR_BAR(fmi3SetContinuousStates)(in, x.data(), 6) == fmi3OK);
+    REQUIRE(FOUR_BAR(fmi3GetContinuousStateDerivatives)(in, xdot, 6) == fmi3OK);
+    for (int i = 0; i < 6; ++i) x[static_cast<std::size_t>(i)] += 0.05 * xdot[i];
+    REQUIRE(FOUR_BAR(fmi3SetTime)(in, 0.05) == fmi3OK);
+    REQUIRE(FOUR_BAR(fmi3SetContinuousStates)(in, x.data(), 6) == fmi3OK);
+    const auto drift = yamsc::runtime::constraint_residual_norms(view, 0.05, x.data(), u.data());
+    CHECK(drift.position > 1e-6);
+    // ... and the completed step moves it back.
+    bool event = true, stop = true;
+    REQUIRE(FOUR_BAR(fmi3CompletedIntegratorStep)(in, true, &event, &stop) == fmi3OK);
+    REQUIRE(FOUR_BAR(fmi3GetContinuousStates)(in, x.data(), 6) == fmi3OK);
+    const auto back = yamsc::runtime::constraint_residual_norms(view, 0.05, x.data(), u.data());
+    CHECK(back.position <= 1e-12);
+    CHECK(back.velocity <= 1e-12);
+    CHECK(!log.has_error());
+    FOUR_BAR(fmi3FreeInstance)(in);
+}
