@@ -73,6 +73,8 @@ void Instance::start_values() {
             *place = v.start;
     }
     view_stale_ = n_.p != view_params_;
+    // The blocks' discrete states as at the start of a run (Reset after a run).
+    if (view_.reset_discrete) view_.reset_discrete();
     changed(true);
 }
 
