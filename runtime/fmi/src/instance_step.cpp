@@ -12,6 +12,7 @@ namespace yamsc::fmi {
 
 struct Snapshot {
     const Instance* owner = nullptr;
+    Interface interface = Interface::co_simulation;
     Numbers numbers;
     std::optional<runtime::Abm4Integrator> abm4;
 };
@@ -99,6 +100,7 @@ Status Instance::get_state(Snapshot** state) {
             "GetFMUState: the model's load blocks hold discrete states a snapshot cannot copy");
     Snapshot* s = *state ? *state : new Snapshot;
     s->owner = this;
+    s->interface = interface_;
     s->numbers = n_;
     s->abm4 = abm4_;
     *state = s;
@@ -107,6 +109,9 @@ Status Instance::get_state(Snapshot** state) {
 
 Status Instance::set_state(const Snapshot* s) {
     if (!s) return fail("SetFMUState: no state given");
+    if (s->interface != interface_)
+        return fail(
+            "SetFMUState: the state is of another interface (model exchange, co-simulation)");
     const Numbers& m = s->numbers;
     if (m.x.size() != n_.x.size() || m.u.size() != n_.u.size() || m.p.size() != n_.p.size())
         return fail("SetFMUState: the state belongs to another model");
