@@ -197,6 +197,11 @@ TEST_CASE(
     CHECK(std::string(FMI3(fmi3GetVersion)()) == "3.0");
     // Only the standard's functions leave the unit: not the runtime, not the glue.
     CHECK(unit().symbol("_ZN5yamsc3fmi10unit_modelEv") == nullptr);
+    CHECK(unit().symbol("_ZN15double_pendulum3rhsEdPKdS1_RKNS_6ParamsEPd") ==
+          nullptr); // the model's rhs
+    CHECK(unit().symbol("_ZN5yamsc7runtime8simulateERKNS0_9ModelViewERKNS0_"
+                        "17SimulationOptionsERKSt8functionIFbddEE") ==
+          nullptr); // the runtime's simulate
 }
 
 TEST_CASE("fmi3: the value references of the table are the ones the unit reads") {
