@@ -492,3 +492,51 @@ TEST_CASE("fmi3: the state machine refuses what the standard does not allow, wit
     CHECK(FMI3(fmi3InstantiateScheduledExecution)("s", token, nullptr, false, false, &log, fmi3_log,
                                                   nullptr, nullptr, nullptr) == nullptr);
 }
+
+TEST_CASE("fmi3: a serialized state read back continues the run to the last bit; damaged bytes and "
+          "ABM4's "
+          "history are refused") {
+    Log log;
+    fmi3Instance in = started(log, {0.4, 0.1}, yamsc::runtime::Method::rk4);
+    run(in, 0.01, 20);
+    fmi3FMUState state = nullptr;
+    REQUIRE(FMI3(fmi3GetFMUState)(in, &state) == fmi3OK);
+    size_t size = 0;
+    REQUIRE(FMI3(fmi3SerializedFMUStateSize)(in, state, &size) == fmi3OK);
+    std::vector<fmi3Byte> bytes(size);
+    REQUIRE(FMI3(fmi3SerializeFMUState)(in, state, bytes.data(), size) == fmi3OK);
+    CHECK(FMI3(fmi3SerializeFMUState)(in, state, bytes.data(), size - 1) == fmi3Error);
+    REQUIRE(FMI3(fmi3FreeFMUState)(in, &state) == fmi3OK);
+    const auto first = run(in, 0.01, 10);
+
+    // Into a second instance: it continues from the point the bytes hold.
+    Log other_log;
+    fmi3Instance other = started(other_log, {0.0, 0.0}, yamsc::runtime::Method::rk4);
+    fmi3FMUState read = nullptr;
+    REQUIRE(FMI3(fmi3DeserializeFMUState)(other, bytes.data(), size, &read) == fmi3OK);
+    REQUIRE(FMI3(fmi3SetFMUState)(other, read) == fmi3OK);
+    CHECK(get(other, vr::time) == doctest::Approx(0.2).epsilon(1e-14));
+    CHECK(get(other, vr::tau) == 0.4);
+    CHECK(run(other, 0.01, 10) == first);
+    CHECK(FMI3(fmi3FreeFMUState)(other, &read) == fmi3OK);
+
+    std::vector<fmi3Byte> cut(bytes.begin(), bytes.end() - 3), bad = bytes;
+    bad[0] = 'x';
+    CHECK(FMI3(fmi3DeserializeFMUState)(other, cut.data(), cut.size(), &read) == fmi3Error);
+    CHECK(FMI3(fmi3DeserializeFMUState)(other, bad.data(), bad.size(), &read) == fmi3Error);
+    CHECK(read == nullptr);
+    CHECK(other_log.has_error());
+    FMI3(fmi3FreeInstance)(other);
+
+    // ABM4's history is not serialized: the state of an ABM4 run past its first step is refused.
+    fmi3Instance abm = started(log, {0.4, 0.1}, yamsc::runtime::Method::abm4);
+    run(abm, 0.01, 5);
+    REQUIRE(FMI3(fmi3GetFMUState)(abm, &state) == fmi3OK);
+    log.messages.clear();
+    CHECK(FMI3(fmi3SerializedFMUStateSize)(abm, state, &size) == fmi3Error);
+    REQUIRE(log.has_error());
+    CHECK(log.messages.back().second.find("ABM4's history") != std::string::npos);
+    FMI3(fmi3FreeFMUState)(abm, &state);
+    FMI3(fmi3FreeInstance)(abm);
+    FMI3(fmi3FreeInstance)(in);
+}

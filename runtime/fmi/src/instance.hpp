@@ -48,7 +48,18 @@ struct Numbers {
 };
 
 /// A copy of an instance's numbers and integrator history (GetFMUState / SetFMUState).
-struct Snapshot;
+struct Snapshot {
+    const void* owner = nullptr; // the instance it was taken of (ABM4's history is that one's)
+    Interface interface = Interface::co_simulation;
+    Numbers numbers;
+    std::optional<runtime::Abm4Integrator> abm4;
+};
+
+/// A snapshot as bytes (SerializeFMUState) and back; nullopt / null with the
+/// reason in `error`. ABM4's history is not written: a snapshot that holds one
+/// is refused (after it, the restored run would start ABM4 again and differ).
+std::optional<std::vector<unsigned char>> serialize(const Snapshot& s, std::string& error);
+Snapshot* deserialize(const unsigned char* bytes, std::size_t size, std::string& error);
 
 class Instance {
 public:
@@ -110,6 +121,9 @@ public:
     Status get_state(Snapshot** state);
     Status set_state(const Snapshot* state);
     static void free_state(Snapshot* state);
+    Status serialized_size(const Snapshot* state, std::size_t* size) const;
+    Status serialize_state(const Snapshot* state, unsigned char* bytes, std::size_t size) const;
+    Status deserialize_state(const unsigned char* bytes, std::size_t size, Snapshot** state) const;
 
 private:
     const UnitModel& unit_;

@@ -10,13 +10,6 @@
 
 namespace yamsc::fmi {
 
-struct Snapshot {
-    const Instance* owner = nullptr;
-    Interface interface = Interface::co_simulation;
-    Numbers numbers;
-    std::optional<runtime::Abm4Integrator> abm4;
-};
-
 runtime::OdeFunction Instance::ode() {
     return [this](double t, const double* x, double* xdot) { view_.rhs(t, x, n_.u.data(), xdot); };
 }
