@@ -6,7 +6,12 @@
 namespace fmi_test {
 
 const Library& unit() {
-    static const Library library;
+    static const Library library(YAMSC_FMI_TEST_UNIT);
+    return library;
+}
+
+const Library& four_bar_unit() {
+    static const Library library(YAMSC_FMI_TEST_FOUR_BAR_UNIT);
     return library;
 }
 

@@ -14,7 +14,7 @@ namespace fmi_test {
 
 class Library {
 public:
-    Library() : handle_(dlopen(YAMSC_FMI_TEST_UNIT, RTLD_NOW | RTLD_LOCAL)) {
+    explicit Library(const char* path) : handle_(dlopen(path, RTLD_NOW | RTLD_LOCAL)) {
         if (!handle_) throw std::runtime_error(dlerror());
     }
     ~Library() { dlclose(handle_); }
@@ -32,8 +32,10 @@ private:
     void* handle_;
 };
 
-/// The library, opened once for all tests.
+/// The double pendulum's unit, opened once for all tests.
 const Library& unit();
+/// The four-bar linkage's unit (a model with constraint rows).
+const Library& four_bar_unit();
 
 /// The messages an instance logged (status, message).
 struct Log {

@@ -159,6 +159,17 @@ TEST_CASE("fmi2: a co-simulation step is runtime::simulate's RK4 step; states ro
     double v[5];
     REQUIRE(FMI2(fmi2GetReal)(c, vrs, 5, v) == fmi2OK);
     CHECK(std::vector<double>(v, v + 5) == at_half);
+    // The same state through bytes.
+    size_t size = 0;
+    REQUIRE(FMI2(fmi2SerializedFMUstateSize)(c, state, &size) == fmi2OK);
+    std::vector<fmi2Byte> bytes(size);
+    REQUIRE(FMI2(fmi2SerializeFMUstate)(c, state, bytes.data(), size) == fmi2OK);
+    CHECK(FMI2(fmi2FreeFMUstate)(c, &state) == fmi2OK);
+    REQUIRE(FMI2(fmi2DoStep)(c, 0.25, 0.01, fmi2True) == fmi2OK);
+    REQUIRE(FMI2(fmi2DeSerializeFMUstate)(c, bytes.data(), size, &state) == fmi2OK);
+    REQUIRE(FMI2(fmi2SetFMUstate)(c, state) == fmi2OK);
+    REQUIRE(FMI2(fmi2GetReal)(c, vrs, 5, v) == fmi2OK);
+    CHECK(std::vector<double>(v, v + 5) == at_half);
     CHECK(FMI2(fmi2FreeFMUstate)(c, &state) == fmi2OK);
     FMI2(fmi2FreeInstance)(c);
 }

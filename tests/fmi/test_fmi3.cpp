@@ -27,6 +27,26 @@ fmi3Instance co_simulation(Log& log) {
                                              nullptr, 0, &log, fmi3_log, nullptr);
 }
 
+void set(fmi3Instance in, unsigned vr, double v);
+
+// A co-simulation instance with the inputs u and the method (the step too
+// when given, the host's tolerance when given), initialized.
+fmi3Instance started(Log& log, const std::vector<double>& u, yamsc::runtime::Method method,
+                     double step = 0.0, double tolerance = 0.0) {
+    fmi3Instance in = co_simulation(log);
+    REQUIRE(in);
+    set(in, vr::tau, u[0]);
+    set(in, vr::f, u[1]);
+    if (step > 0.0) set(in, vr::step, step);
+    const fmi3ValueReference m[] = {vr::method};
+    const fmi3Int32 code = yamsc::fmi::method_code(method);
+    REQUIRE(FMI3(fmi3SetInt32)(in, m, 1, &code, 1) == fmi3OK);
+    REQUIRE(FMI3(fmi3EnterInitializationMode)(in, tolerance > 0.0, tolerance, 0.0, false, 0.0) ==
+            fmi3OK);
+    REQUIRE(FMI3(fmi3ExitInitializationMode)(in) == fmi3OK);
+    return in;
+}
+
 void initialize(fmi3Instance in) {
     REQUIRE(FMI3(fmi3EnterInitializationMode)(in, false, 0.0, 0.0, false, 0.0) == fmi3OK);
     REQUIRE(FMI3(fmi3ExitInitializationMode)(in) == fmi3OK);
@@ -177,6 +197,11 @@ TEST_CASE(
     CHECK(std::string(FMI3(fmi3GetVersion)()) == "3.0");
     // Only the standard's functions leave the unit: not the runtime, not the glue.
     CHECK(unit().symbol("_ZN5yamsc3fmi10unit_modelEv") == nullptr);
+    CHECK(unit().symbol("_ZN15double_pendulum3rhsEdPKdS1_RKNS_6ParamsEPd") ==
+          nullptr); // the model's rhs
+    CHECK(unit().symbol("_ZN5yamsc7runtime8simulateERKNS0_9ModelViewERKNS0_"
+                        "17SimulationOptionsERKSt8functionIFbddEE") ==
+          nullptr); // the runtime's simulate
 }
 
 TEST_CASE("fmi3: the value references of the table are the ones the unit reads") {
@@ -257,80 +282,60 @@ TEST_CASE("fmi3: model exchange's derivatives and outputs are the view's rhs and
     CHECK(FMI3(fmi3CompletedIntegratorStep)(in, true, &enter_event, &stop) == fmi3OK);
     CHECK(!enter_event);
     CHECK(!stop);
+    // A tunable parameter changed in Event Mode: the next derivatives are the new model's.
+    REQUIRE(FMI3(fmi3EnterEventMode)(in) == fmi3OK);
+    set(in, vr::k, 3.0);
+    REQUIRE(FMI3(fmi3EnterContinuousTimeMode)(in) == fmi3OK);
+    const fmi3ValueReference k[] = {vr::k};
+    const double k_again = 4.0;
+    CHECK(FMI3(fmi3SetFloat64)(in, k, 1, &k_again, 1) == fmi3Error); // not in Continuous-Time Mode
+    p.k = 3.0;
+    yamsc::runtime::from_generated<double_pendulum::Model>(p).rhs(0.25, x.data(), u.data(),
+                                                                  ref.data());
+    CHECK(FMI3(fmi3GetContinuousStateDerivatives)(in, xdot.data(), 4) == fmi3OK);
+    for (int i = 0; i < 4; ++i)
+        CHECK(std::abs(xdot[i] - ref[i]) <= 1e-15 * (1.0 + std::abs(ref[i])));
+    log.messages.clear();
     CHECK(FMI3(fmi3Terminate)(in) == fmi3OK);
     CHECK(!log.has_error());
     FMI3(fmi3FreeInstance)(in);
 }
 
 TEST_CASE("fmi3: a co-simulation step is runtime::simulate's (RK4, ABM4, several internal steps)") {
+    using yamsc::runtime::Method;
     const std::vector<double> u{0.7, -0.4};
+    Log log;
     SUBCASE("RK4, the communication step is the internal step") {
-        Log log;
-        fmi3Instance in = co_simulation(log);
-        REQUIRE(in);
-        set(in, vr::tau, u[0]);
-        set(in, vr::f, u[1]);
-        initialize(in);
-        check_rows(run(in, 0.01, 100), simulate(yamsc::runtime::Method::rk4, 0.01, 1.0, u), 1,
-                   1e-12);
+        fmi3Instance in = started(log, u, Method::rk4);
+        check_rows(run(in, 0.01, 100), simulate(Method::rk4, 0.01, 1.0, u), 1, 1e-12);
         FMI3(fmi3FreeInstance)(in);
     }
     SUBCASE("RK4, five internal steps per communication step") {
-        Log log;
-        fmi3Instance in = co_simulation(log);
-        REQUIRE(in);
-        set(in, vr::tau, u[0]);
-        set(in, vr::f, u[1]);
-        set(in, vr::step, 0.002);
-        initialize(in);
-        check_rows(run(in, 0.01, 50), simulate(yamsc::runtime::Method::rk4, 0.002, 0.5, u), 5,
-                   1e-12);
+        fmi3Instance in = started(log, u, Method::rk4, 0.002);
+        check_rows(run(in, 0.01, 50), simulate(Method::rk4, 0.002, 0.5, u), 5, 1e-12);
         FMI3(fmi3FreeInstance)(in);
     }
     SUBCASE("ABM4: the multistep history carries over between communication steps") {
-        Log log;
-        fmi3Instance in = co_simulation(log);
-        REQUIRE(in);
-        set(in, vr::tau, u[0]);
-        set(in, vr::f, u[1]);
-        const fmi3ValueReference m[] = {vr::method};
-        const fmi3Int32 abm4 = 1;
-        REQUIRE(FMI3(fmi3SetInt32)(in, m, 1, &abm4, 1) == fmi3OK);
-        initialize(in);
+        fmi3Instance in = started(log, u, Method::abm4);
         const auto rows = run(in, 0.01, 100);
-        const auto abm = simulate(yamsc::runtime::Method::abm4, 0.01, 1.0, u);
-        check_rows(rows, abm, 1, 1e-12);
+        check_rows(rows, simulate(Method::abm4, 0.01, 1.0, u), 1, 1e-12);
         // Not RK4's numbers: the run did take ABM4 steps.
-        const auto rk = simulate(yamsc::runtime::Method::rk4, 0.01, 1.0, u);
-        CHECK(std::abs(rows.back()[0] - rk.state_row(100)[0]) > 1e-9);
+        CHECK(std::abs(rows.back()[0] - simulate(Method::rk4, 0.01, 1.0, u).state_row(100)[0]) >
+              1e-9);
         FMI3(fmi3FreeInstance)(in);
     }
     SUBCASE("CVODE, restarted at each communication point: near RK4 at a small step") {
-        Log log;
-        fmi3Instance in = co_simulation(log);
-        REQUIRE(in);
-        set(in, vr::tau, u[0]);
-        set(in, vr::f, u[1]);
-        const fmi3ValueReference m[] = {vr::method};
-        const fmi3Int32 cvode = 2;
-        REQUIRE(FMI3(fmi3SetInt32)(in, m, 1, &cvode, 1) == fmi3OK);
-        REQUIRE(FMI3(fmi3EnterInitializationMode)(in, true, 1e-9, 0.0, false, 0.0) == fmi3OK);
-        REQUIRE(FMI3(fmi3ExitInitializationMode)(in) == fmi3OK);
-        check_rows(run(in, 0.05, 20), simulate(yamsc::runtime::Method::rk4, 0.001, 1.0, u), 50,
-                   1e-6);
+        fmi3Instance in = started(log, u, Method::cvode, 0.0, 1e-9);
+        check_rows(run(in, 0.05, 20), simulate(Method::rk4, 0.001, 1.0, u), 50, 1e-6);
         FMI3(fmi3FreeInstance)(in);
     }
+    CHECK(!log.has_error());
 }
 
 TEST_CASE(
     "fmi3: a state got and set again repeats the run to the last bit (ABM4's history included)") {
     Log log;
-    fmi3Instance in = co_simulation(log);
-    REQUIRE(in);
-    const fmi3ValueReference m[] = {vr::method};
-    const fmi3Int32 abm4 = 1;
-    REQUIRE(FMI3(fmi3SetInt32)(in, m, 1, &abm4, 1) == fmi3OK);
-    initialize(in);
+    fmi3Instance in = started(log, {0.0, 0.0}, yamsc::runtime::Method::abm4);
     run(in, 0.01, 30);
     fmi3FMUState state = nullptr;
     REQUIRE(FMI3(fmi3GetFMUState)(in, &state) == fmi3OK);
@@ -360,6 +365,7 @@ TEST_CASE("fmi3: directional derivatives are the exact Jacobian, and central dif
     initialize(in);
     REQUIRE(FMI3(fmi3EnterContinuousTimeMode)(in) == fmi3OK);
     const std::vector<double> x{0.4, 0.8, -1.5, 0.6}, u{0.9, 0.35};
+    REQUIRE(FMI3(fmi3SetTime)(in, 0.7) == fmi3OK);
     REQUIRE(FMI3(fmi3SetContinuousStates)(in, x.data(), 4) == fmi3OK);
     set(in, vr::tau, u[0]);
     set(in, vr::f, u[1]);
@@ -377,18 +383,25 @@ TEST_CASE("fmi3: directional derivatives are the exact Jacobian, and central dif
         for (int i = 0; i < 7; ++i) J[i][j] = s[i];
     }
     const auto view = pendulum();
-    std::vector<double> A(16);
-    view.rhs_jacobian(0.0, x.data(), u.data(), A.data());
+    std::vector<double> A(16), C(12), D(6);
+    view.rhs_jacobian(0.7, x.data(), u.data(), A.data());
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) CHECK(J[i][j] == A[i * 4 + j]);
+    // The outputs' rows are the generated output matrices (the model has no explicit time).
+    double_pendulum::output_matrices(x.data(), x.data() + 2, u.data(), parameters(), C.data(),
+                                     D.data());
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 4; ++j) CHECK(J[4 + i][j] == C[i * 4 + j]);
+        for (int j = 0; j < 2; ++j) CHECK(J[4 + i][4 + j] == D[i * 2 + j]);
+    }
 
     // Central differences of the view's rhs and outputs in every known.
     std::vector<double> v = x;
     v.insert(v.end(), u.begin(), u.end());
     auto values = [&](const std::vector<double>& w) {
         std::vector<double> xdot(4), y(3), out;
-        view.rhs(0.0, w.data(), w.data() + 4, xdot.data());
-        view.outputs(0.0, w.data(), w.data() + 2, w.data() + 4, y.data());
+        view.rhs(0.7, w.data(), w.data() + 4, xdot.data());
+        view.outputs(0.7, w.data(), w.data() + 2, w.data() + 4, y.data());
         out = xdot;
         out.insert(out.end(), y.begin(), y.end());
         return out;
@@ -478,4 +491,52 @@ TEST_CASE("fmi3: the state machine refuses what the standard does not allow, wit
     FMI3(fmi3FreeInstance)(me);
     CHECK(FMI3(fmi3InstantiateScheduledExecution)("s", token, nullptr, false, false, &log, fmi3_log,
                                                   nullptr, nullptr, nullptr) == nullptr);
+}
+
+TEST_CASE("fmi3: a serialized state read back continues the run to the last bit; damaged bytes and "
+          "ABM4's "
+          "history are refused") {
+    Log log;
+    fmi3Instance in = started(log, {0.4, 0.1}, yamsc::runtime::Method::rk4);
+    run(in, 0.01, 20);
+    fmi3FMUState state = nullptr;
+    REQUIRE(FMI3(fmi3GetFMUState)(in, &state) == fmi3OK);
+    size_t size = 0;
+    REQUIRE(FMI3(fmi3SerializedFMUStateSize)(in, state, &size) == fmi3OK);
+    std::vector<fmi3Byte> bytes(size);
+    REQUIRE(FMI3(fmi3SerializeFMUState)(in, state, bytes.data(), size) == fmi3OK);
+    CHECK(FMI3(fmi3SerializeFMUState)(in, state, bytes.data(), size - 1) == fmi3Error);
+    REQUIRE(FMI3(fmi3FreeFMUState)(in, &state) == fmi3OK);
+    const auto first = run(in, 0.01, 10);
+
+    // Into a second instance: it continues from the point the bytes hold.
+    Log other_log;
+    fmi3Instance other = started(other_log, {0.0, 0.0}, yamsc::runtime::Method::rk4);
+    fmi3FMUState read = nullptr;
+    REQUIRE(FMI3(fmi3DeserializeFMUState)(other, bytes.data(), size, &read) == fmi3OK);
+    REQUIRE(FMI3(fmi3SetFMUState)(other, read) == fmi3OK);
+    CHECK(get(other, vr::time) == doctest::Approx(0.2).epsilon(1e-14));
+    CHECK(get(other, vr::tau) == 0.4);
+    CHECK(run(other, 0.01, 10) == first);
+    CHECK(FMI3(fmi3FreeFMUState)(other, &read) == fmi3OK);
+
+    std::vector<fmi3Byte> cut(bytes.begin(), bytes.end() - 3), bad = bytes;
+    bad[0] = 'x';
+    CHECK(FMI3(fmi3DeserializeFMUState)(other, cut.data(), cut.size(), &read) == fmi3Error);
+    CHECK(FMI3(fmi3DeserializeFMUState)(other, bad.data(), bad.size(), &read) == fmi3Error);
+    CHECK(read == nullptr);
+    CHECK(other_log.has_error());
+    FMI3(fmi3FreeInstance)(other);
+
+    // ABM4's history is not serialized: the state of an ABM4 run past its first step is refused.
+    fmi3Instance abm = started(log, {0.4, 0.1}, yamsc::runtime::Method::abm4);
+    run(abm, 0.01, 5);
+    REQUIRE(FMI3(fmi3GetFMUState)(abm, &state) == fmi3OK);
+    log.messages.clear();
+    CHECK(FMI3(fmi3SerializedFMUStateSize)(abm, state, &size) == fmi3Error);
+    REQUIRE(log.has_error());
+    CHECK(log.messages.back().second.find("ABM4's history") != std::string::npos);
+    FMI3(fmi3FreeFMUState)(abm, &state);
+    FMI3(fmi3FreeInstance)(abm);
+    FMI3(fmi3FreeInstance)(in);
 }

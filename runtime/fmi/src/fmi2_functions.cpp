@@ -209,16 +209,31 @@ fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate* FMUstate) {
     });
 }
 
-fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate, size_t*) {
-    return absent(c, "fmi2SerializedFMUstateSize");
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t* size) {
+    return call(c, "fmi2SerializedFMUstateSize", [&](Instance& in) {
+        return in.serialized_size(static_cast<const Snapshot*>(FMUstate), size);
+    });
 }
 
-fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate, fmi2Byte[], size_t) {
-    return absent(c, "fmi2SerializeFMUstate");
+// fmi2Byte is char: the bytes are the same.
+fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte serializedState[],
+                                 size_t size) {
+    return call(c, "fmi2SerializeFMUstate", [&](Instance& in) {
+        return in.serialize_state(static_cast<const Snapshot*>(FMUstate),
+                                  reinterpret_cast<unsigned char*>(serializedState), size);
+    });
 }
 
-fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte[], size_t, fmi2FMUstate*) {
-    return absent(c, "fmi2DeSerializeFMUstate");
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size,
+                                   fmi2FMUstate* FMUstate) {
+    return call(c, "fmi2DeSerializeFMUstate", [&](Instance& in) {
+        if (!FMUstate) return in.fail("fmi2DeSerializeFMUstate: no place for the state");
+        auto* s = static_cast<Snapshot*>(*FMUstate);
+        const Status r =
+            in.deserialize_state(reinterpret_cast<const unsigned char*>(serializedState), size, &s);
+        *FMUstate = s;
+        return r;
+    });
 }
 
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown_ref[],

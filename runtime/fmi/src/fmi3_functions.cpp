@@ -245,16 +245,28 @@ fmi3Status fmi3FreeFMUState(fmi3Instance instance, fmi3FMUState* FMUState) {
     });
 }
 
-fmi3Status fmi3SerializedFMUStateSize(fmi3Instance instance, fmi3FMUState, size_t*) {
-    return absent(instance, "fmi3SerializedFMUStateSize");
+fmi3Status fmi3SerializedFMUStateSize(fmi3Instance instance, fmi3FMUState FMUState, size_t* size) {
+    return call(instance, "fmi3SerializedFMUStateSize", [&](Instance& in) {
+        return in.serialized_size(static_cast<const Snapshot*>(FMUState), size);
+    });
 }
 
-fmi3Status fmi3SerializeFMUState(fmi3Instance instance, fmi3FMUState, fmi3Byte[], size_t) {
-    return absent(instance, "fmi3SerializeFMUState");
+fmi3Status fmi3SerializeFMUState(fmi3Instance instance, fmi3FMUState FMUState,
+                                 fmi3Byte serializedState[], size_t size) {
+    return call(instance, "fmi3SerializeFMUState", [&](Instance& in) {
+        return in.serialize_state(static_cast<const Snapshot*>(FMUState), serializedState, size);
+    });
 }
 
-fmi3Status fmi3DeserializeFMUState(fmi3Instance instance, const fmi3Byte[], size_t, fmi3FMUState*) {
-    return absent(instance, "fmi3DeserializeFMUState");
+fmi3Status fmi3DeserializeFMUState(fmi3Instance instance, const fmi3Byte serializedState[],
+                                   size_t size, fmi3FMUState* FMUState) {
+    return call(instance, "fmi3DeserializeFMUState", [&](Instance& in) {
+        if (!FMUState) return in.fail("fmi3DeserializeFMUState: no place for the state");
+        auto* s = static_cast<Snapshot*>(*FMUState);
+        const Status r = in.deserialize_state(serializedState, size, &s);
+        *FMUState = s;
+        return r;
+    });
 }
 
 fmi3Status fmi3GetDirectionalDerivative(fmi3Instance instance, const fmi3ValueReference unknowns[],

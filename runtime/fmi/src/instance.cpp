@@ -39,9 +39,9 @@ Instance::Instance(const UnitModel& unit, Interface interface, std::string name,
                    std::string resources, Logger logger, bool logging_on)
     : unit_(unit), interface_(interface), name_(std::move(name)), resources_(std::move(resources)),
       logger_(std::move(logger)), logging_on_(logging_on) {
-    p_ = unit_.param_defaults;
+    n_.p = unit_.param_defaults;
     make_view();
-    table_ = variables(unit_layout(unit_, view_, p_));
+    table_ = variables(unit_layout(unit_, view_, n_.p));
     nq_ = static_cast<std::size_t>(view_.nq);
     nz_ = static_cast<std::size_t>(view_.nz);
     start_values();
@@ -50,54 +50,75 @@ Instance::Instance(const UnitModel& unit, Interface interface, std::string name,
 Instance::~Instance() = default;
 
 void Instance::make_view() {
-    view_ = unit_.make_view(p_.data());
-    if (unit_.settings.close_blocks) view_ = unit_.settings.close_blocks(view_, resources_, p_);
+    view_ = unit_.make_view(n_.p.data());
+    if (unit_.settings.close_blocks) view_ = unit_.settings.close_blocks(view_, resources_, n_.p);
     if (!view_.rhs) throw std::runtime_error("the model has no right-hand side");
     if (!table_.empty() &&
         (static_cast<std::size_t>(view_.nq) != nq_ || static_cast<std::size_t>(view_.nz) != nz_))
         throw std::runtime_error("the model's states changed with its parameters");
-    view_params_ = p_;
+    view_params_ = n_.p;
     view_stale_ = false;
 }
 
 // Every number back to its start value (instantiation and Reset).
 void Instance::start_values() {
-    p_ = unit_.param_defaults;
-    t_ = 0.0;
-    x_.assign(nq_ * 2 + nz_, 0.0);
-    u_.assign(static_cast<std::size_t>(view_.nu), 0.0);
+    n_ = Numbers{};
+    n_.p = unit_.param_defaults;
+    n_.x.assign(nq_ * 2 + nz_, 0.0);
+    n_.u.assign(static_cast<std::size_t>(view_.nu), 0.0);
     for (const Variable& v : table_) {
-        const auto i = static_cast<std::size_t>(v.index);
-        switch (v.role) {
-        case Role::position:
-            x_[i] = v.start;
-            break;
-        case Role::rate:
-            x_[nq_ + i] = v.start;
-            break;
-        case Role::block_state:
-            x_[2 * nq_ + i] = v.start;
-            break;
-        case Role::input:
-            u_[i] = v.start;
-            break;
-        case Role::parameter:
-            p_[i] = v.start;
-            break;
-        case Role::method:
-            method_ = method_of_code(static_cast<std::int32_t>(v.start)).value();
-            break;
-        case Role::step:
-            step_ = v.start;
-            break;
-        default:
-            break;
-        }
+        if (v.role == Role::method)
+            n_.method = method_of_code(static_cast<std::int32_t>(v.start)).value();
+        else if (double* place = stored(v))
+            *place = v.start;
     }
-    tolerance_.reset();
-    view_stale_ = p_ != view_params_;
-    mode_ = Mode::instantiated;
+    view_stale_ = n_.p != view_params_;
+    // The blocks' discrete states as at the start of a run (Reset after a run).
+    if (view_.reset_discrete) view_.reset_discrete();
     changed(true);
+}
+
+std::optional<std::size_t> Instance::state_index(const Variable& v) const {
+    const auto i = static_cast<std::size_t>(v.index);
+    switch (v.role) {
+    case Role::position:
+        return i;
+    case Role::rate:
+        return nq_ + i;
+    case Role::block_state:
+        return 2 * nq_ + i;
+    default:
+        return std::nullopt;
+    }
+}
+
+std::optional<std::size_t> Instance::derivative_index(const Variable& v) const {
+    const auto i = static_cast<std::size_t>(v.index);
+    switch (v.role) {
+    case Role::rate:
+        return i;
+    case Role::acceleration:
+        return nq_ + i;
+    case Role::block_rate:
+        return 2 * nq_ + i;
+    default:
+        return std::nullopt;
+    }
+}
+
+double* Instance::stored(const Variable& v) {
+    const auto i = static_cast<std::size_t>(v.index);
+    if (const auto k = state_index(v)) return &n_.x[*k];
+    switch (v.role) {
+    case Role::input:
+        return &n_.u[i];
+    case Role::parameter:
+        return &n_.p[i];
+    case Role::step:
+        return &n_.step;
+    default:
+        return nullptr;
+    }
 }
 
 // Drops what was evaluated at the old numbers; a change of states or time
@@ -121,8 +142,8 @@ Status Instance::log(Status status, const std::string& message) const {
 }
 
 bool Instance::allowed(const char* what, std::initializer_list<Mode> modes) const {
-    if (std::find(modes.begin(), modes.end(), mode_) != modes.end()) return true;
-    log(Status::error, std::string(what) + " is not allowed in " + mode_name(mode_));
+    if (std::find(modes.begin(), modes.end(), n_.mode) != modes.end()) return true;
+    log(Status::error, std::string(what) + " is not allowed in " + mode_name(n_.mode));
     return false;
 }
 
@@ -133,21 +154,21 @@ Status Instance::enter_initialization(std::optional<double> tolerance, double st
     if (stop_time && !(*stop_time >= start_time))
         return fail("the stop time is before the start time");
     if (tolerance && !(*tolerance > 0.0)) return fail("the tolerance must be positive");
-    tolerance_ = tolerance;
-    t_ = start_time;
-    mode_ = Mode::initialization;
+    n_.tolerance = tolerance;
+    n_.t = start_time;
+    n_.mode = Mode::initialization;
     changed(true);
     return Status::ok;
 }
 
 Status Instance::exit_initialization() {
     if (!allowed("ExitInitializationMode", {Mode::initialization})) return Status::error;
-    if (!(step_ > 0.0) && method_ != runtime::Method::cvode)
+    if (!(n_.step > 0.0) && n_.method != runtime::Method::cvode)
         return fail("yamsc.step must be positive for RK4 and ABM4");
-    if (step_ < 0.0 || !std::isfinite(step_))
+    if (n_.step < 0.0 || !std::isfinite(n_.step))
         return fail("yamsc.step must be finite, not negative");
     refresh_view();
-    mode_ = interface_ == Interface::model_exchange ? Mode::event : Mode::step;
+    n_.mode = interface_ == Interface::model_exchange ? Mode::event : Mode::step;
     accept_point();
     return Status::ok;
 }
@@ -156,7 +177,7 @@ Status Instance::enter_event_mode() {
     if (interface_ != Interface::model_exchange)
         return fail("EnterEventMode: this co-simulation instance has no event mode");
     if (!allowed("EnterEventMode", {Mode::continuous_time, Mode::event})) return Status::error;
-    mode_ = Mode::event;
+    n_.mode = Mode::event;
     return Status::ok;
 }
 
@@ -165,7 +186,7 @@ Status Instance::enter_continuous_time_mode() {
     if (interface_ != Interface::model_exchange)
         return fail("EnterContinuousTimeMode: not a model exchange instance");
     refresh_view();
-    mode_ = Mode::continuous_time;
+    n_.mode = Mode::continuous_time;
     return Status::ok;
 }
 
@@ -173,7 +194,7 @@ Status Instance::enter_step_mode() {
     if (interface_ != Interface::co_simulation)
         return fail("EnterStepMode: not a co-simulation instance");
     if (!allowed("EnterStepMode", {Mode::event})) return Status::error;
-    mode_ = Mode::step;
+    n_.mode = Mode::step;
     return Status::ok;
 }
 
@@ -187,7 +208,7 @@ Status Instance::terminate() {
     if (!allowed("Terminate",
                  {Mode::event, Mode::continuous_time, Mode::step, Mode::initialization}))
         return Status::error;
-    mode_ = Mode::terminated;
+    n_.mode = Mode::terminated;
     return Status::ok;
 }
 
@@ -207,8 +228,8 @@ const Variable* Instance::variable(std::uint32_t vr, const char* function) const
 const std::vector<double>& Instance::derivatives() {
     if (!xdot_known_) {
         refresh_view();
-        xdot_.resize(x_.size());
-        view_.rhs(t_, x_.data(), u_.data(), xdot_.data());
+        xdot_.resize(n_.x.size());
+        view_.rhs(n_.t, n_.x.data(), n_.u.data(), xdot_.data());
         xdot_known_ = true;
     }
     return xdot_;
@@ -218,7 +239,8 @@ const std::vector<double>& Instance::outputs() {
     if (!y_known_) {
         refresh_view();
         y_.resize(static_cast<std::size_t>(view_.ny));
-        if (view_.ny > 0) view_.outputs(t_, x_.data(), x_.data() + nq_, u_.data(), y_.data());
+        if (view_.ny > 0)
+            view_.outputs(n_.t, n_.x.data(), n_.x.data() + nq_, n_.u.data(), y_.data());
         y_known_ = true;
     }
     return y_;
@@ -231,54 +253,30 @@ Status Instance::get_float64(const std::uint32_t* vrs, std::size_t n, double* va
     for (std::size_t k = 0; k < n; ++k) {
         const Variable* v = variable(vrs[k], "GetFloat64");
         if (!v) return Status::error;
-        const auto i = static_cast<std::size_t>(v->index);
-        switch (v->role) {
-        case Role::time:
-            values[k] = t_;
-            break;
-        case Role::position:
-            values[k] = x_[i];
-            break;
-        case Role::rate:
-            values[k] = x_[nq_ + i];
-            break;
-        case Role::block_state:
-            values[k] = x_[2 * nq_ + i];
-            break;
-        case Role::acceleration:
-            values[k] = derivatives()[nq_ + i];
-            break;
-        case Role::block_rate:
-            values[k] = derivatives()[2 * nq_ + i];
-            break;
-        case Role::input:
-            values[k] = u_[i];
-            break;
-        case Role::parameter:
-            values[k] = p_[i];
-            break;
-        case Role::output:
-            values[k] = outputs()[i];
-            break;
-        case Role::step:
-            values[k] = step_;
-            break;
-        case Role::method:
+        if (v->role == Role::time)
+            values[k] = n_.t;
+        else if (v->role == Role::output)
+            values[k] = outputs()[static_cast<std::size_t>(v->index)];
+        else if (v->role == Role::acceleration || v->role == Role::block_rate)
+            values[k] = derivatives()[*derivative_index(*v)];
+        else if (const double* place = stored(*v))
+            values[k] = *place;
+        else
             return fail("GetFloat64: " + v->name + " is an Int32");
-        }
     }
     return Status::ok;
 }
 
 Status Instance::check_settable(const Variable& v) const {
-    const bool before = mode_ == Mode::instantiated || mode_ == Mode::initialization;
+    const bool before = n_.mode == Mode::instantiated || n_.mode == Mode::initialization;
     switch (v.causality) {
     case Causality::input:
-        if (mode_ != Mode::terminated) return Status::ok;
+        if (n_.mode != Mode::terminated) return Status::ok;
         break;
     case Causality::parameter:
         if (before) return Status::ok;
-        if (v.variability == Variability::tunable && (mode_ == Mode::event || mode_ == Mode::step))
+        if (v.variability == Variability::tunable &&
+            (n_.mode == Mode::event || n_.mode == Mode::step))
             return Status::ok;
         break;
     case Causality::local:
@@ -287,7 +285,7 @@ Status Instance::check_settable(const Variable& v) const {
     default:
         break;
     }
-    return fail("Set: " + v.name + " cannot be set in " + mode_name(mode_));
+    return fail("Set: " + v.name + " cannot be set in " + mode_name(n_.mode));
 }
 
 Status Instance::set_float64(const std::uint32_t* vrs, std::size_t n, const double* values) {
@@ -300,30 +298,10 @@ Status Instance::set_float64(const std::uint32_t* vrs, std::size_t n, const doub
         if (v->type != ValueType::float64) return fail("SetFloat64: " + v->name + " is an Int32");
         if (check_settable(*v) != Status::ok) return Status::error;
         if (!std::isfinite(values[k])) return fail("SetFloat64: " + v->name + " must be finite");
-        const auto i = static_cast<std::size_t>(v->index);
-        switch (v->role) {
-        case Role::position:
-            x_[i] = values[k];
-            break;
-        case Role::rate:
-            x_[nq_ + i] = values[k];
-            break;
-        case Role::block_state:
-            x_[2 * nq_ + i] = values[k];
-            break;
-        case Role::input:
-            u_[i] = values[k];
-            break;
-        case Role::parameter:
-            if (p_[i] != values[k]) view_stale_ = true;
-            p_[i] = values[k];
-            break;
-        case Role::step:
-            step_ = values[k];
-            break;
-        default:
-            return fail("SetFloat64: " + v->name + " cannot be set");
-        }
+        double* place = stored(*v);
+        if (!place) return fail("SetFloat64: " + v->name + " cannot be set");
+        if (v->role == Role::parameter && *place != values[k]) view_stale_ = true;
+        *place = values[k];
         changed(v->causality == Causality::local);
     }
     return Status::ok;
@@ -337,7 +315,7 @@ Status Instance::get_int32(const std::uint32_t* vrs, std::size_t n, std::int32_t
         const Variable* v = variable(vrs[k], "GetInt32");
         if (!v) return Status::error;
         if (v->role != Role::method) return fail("GetInt32: " + v->name + " is not an Int32");
-        values[k] = method_code(method_);
+        values[k] = method_code(n_.method);
     }
     return Status::ok;
 }
@@ -355,7 +333,7 @@ Status Instance::set_int32(const std::uint32_t* vrs, std::size_t n, const std::i
         if (!m)
             return fail("SetInt32: yamsc.method is 0 (RK4), 1 (ABM4) or 2 (CVODE), not " +
                         std::to_string(values[k]));
-        method_ = *m;
+        n_.method = *m;
         abm4_.reset();
     }
     return Status::ok;
@@ -364,20 +342,20 @@ Status Instance::set_int32(const std::uint32_t* vrs, std::size_t n, const std::i
 Status Instance::set_time(double t) {
     if (!allowed("SetTime", {Mode::event, Mode::continuous_time})) return Status::error;
     if (!std::isfinite(t)) return fail("SetTime: the time is not finite");
-    t_ = t;
+    n_.t = t;
     changed(true);
     return Status::ok;
 }
 
 Status Instance::set_continuous_states(const double* x, std::size_t n) {
     if (!allowed("SetContinuousStates", {Mode::event, Mode::continuous_time})) return Status::error;
-    if (n != x_.size())
+    if (n != n_.x.size())
         return fail("SetContinuousStates: " + std::to_string(n) + " states given, the model has " +
-                    std::to_string(x_.size()));
+                    std::to_string(n_.x.size()));
     for (std::size_t i = 0; i < n; ++i)
         if (!std::isfinite(x[i]))
             return fail("SetContinuousStates: state " + std::to_string(i) + " is not finite");
-    std::copy(x, x + n, x_.begin());
+    std::copy(x, x + n, n_.x.begin());
     changed(true);
     return Status::ok;
 }
@@ -386,9 +364,10 @@ Status Instance::get_continuous_states(double* x, std::size_t n) {
     if (!allowed("GetContinuousStates",
                  {Mode::initialization, Mode::event, Mode::continuous_time, Mode::terminated}))
         return Status::error;
-    if (n != x_.size())
-        return fail("GetContinuousStates: the model has " + std::to_string(x_.size()) + " states");
-    std::copy(x_.begin(), x_.end(), x);
+    if (n != n_.x.size())
+        return fail("GetContinuousStates: the model has " + std::to_string(n_.x.size()) +
+                    " states");
+    std::copy(n_.x.begin(), n_.x.end(), x);
     return Status::ok;
 }
 
@@ -396,8 +375,8 @@ Status Instance::get_derivatives(double* xdot, std::size_t n) {
     if (!allowed("GetContinuousStateDerivatives",
                  {Mode::initialization, Mode::event, Mode::continuous_time, Mode::terminated}))
         return Status::error;
-    if (n != x_.size())
-        return fail("GetContinuousStateDerivatives: the model has " + std::to_string(x_.size()) +
+    if (n != n_.x.size())
+        return fail("GetContinuousStateDerivatives: the model has " + std::to_string(n_.x.size()) +
                     " states");
     const std::vector<double>& d = derivatives();
     std::copy(d.begin(), d.end(), xdot);
@@ -409,8 +388,8 @@ Status Instance::get_nominals(double* nominals, std::size_t n) {
                  {Mode::instantiated, Mode::initialization, Mode::event, Mode::continuous_time,
                   Mode::terminated}))
         return Status::error;
-    if (n != x_.size())
-        return fail("GetNominalsOfContinuousStates: the model has " + std::to_string(x_.size()) +
+    if (n != n_.x.size())
+        return fail("GetNominalsOfContinuousStates: the model has " + std::to_string(n_.x.size()) +
                     " states");
     std::fill(nominals, nominals + n, 1.0);
     return Status::ok;
@@ -418,20 +397,20 @@ Status Instance::get_nominals(double* nominals, std::size_t n) {
 
 // The point the blocks' discrete states are advanced from at the next accepted step.
 void Instance::accept_point() {
-    t_accepted_ = t_;
-    x_accepted_ = x_;
-    u_accepted_ = u_;
+    n_.t_accepted = n_.t;
+    n_.x_accepted = n_.x;
+    n_.u_accepted = n_.u;
 }
 
 Status Instance::completed_integrator_step() {
     if (!allowed("CompletedIntegratorStep", {Mode::continuous_time})) return Status::error;
     if (view_.project) {
-        view_.project(t_, x_.data(), u_.data());
+        view_.project(n_.t, n_.x.data(), n_.u.data());
         changed(true);
     }
     if (view_.update_discrete) {
-        view_.update_discrete(t_accepted_, x_accepted_.data(), u_accepted_.data(), t_, x_.data(),
-                              u_.data());
+        view_.update_discrete(n_.t_accepted, n_.x_accepted.data(), n_.u_accepted.data(), n_.t,
+                              n_.x.data(), n_.u.data());
         changed(false);
     }
     accept_point();

@@ -33,8 +33,33 @@ enum class Mode { instantiated, initialization, event, continuous_time, step, te
 /// Receives each message the instance logs (its status and category).
 using Logger = std::function<void(Status status, const char* category, const std::string& message)>;
 
-/// A copy of an instance's numbers (GetFMUState / SetFMUState).
-struct Snapshot;
+/// Every number of an instance a host may get and set again (GetFMUState):
+/// what the model's equations are evaluated at, and where the run stands.
+struct Numbers {
+    Mode mode = Mode::instantiated;
+    double t = 0.0;
+    std::vector<double> x, u, p; // x = [q, q', z]
+    runtime::Method method = runtime::Method::rk4;
+    double step = 1e-3;
+    std::optional<double> tolerance;
+    // Model exchange: the last accepted point, for the blocks' discrete states.
+    double t_accepted = 0.0;
+    std::vector<double> x_accepted, u_accepted;
+};
+
+/// A copy of an instance's numbers and integrator history (GetFMUState / SetFMUState).
+struct Snapshot {
+    const void* owner = nullptr; // the instance it was taken of (ABM4's history is that one's)
+    Interface interface = Interface::co_simulation;
+    Numbers numbers;
+    std::optional<runtime::Abm4Integrator> abm4;
+};
+
+/// A snapshot as bytes (SerializeFMUState) and back; nullopt / null with the
+/// reason in `error`. ABM4's history is not written: a snapshot that holds one
+/// is refused (after it, the restored run would start ABM4 again and differ).
+std::optional<std::vector<unsigned char>> serialize(const Snapshot& s, std::string& error);
+Snapshot* deserialize(const unsigned char* bytes, std::size_t size, std::string& error);
 
 class Instance {
 public:
@@ -48,10 +73,10 @@ public:
 
     const std::string& name() const { return name_; }
     Interface interface() const { return interface_; }
-    Mode mode() const { return mode_; }
+    Mode mode() const { return n_.mode; }
     const std::vector<Variable>& table() const { return table_; }
-    std::size_t state_count() const { return x_.size(); }
-    double time() const { return t_; }
+    std::size_t state_count() const { return n_.x.size(); }
+    double time() const { return n_.t; }
     void set_logging(bool on) { logging_on_ = on; }
 
     /// Logs (errors always, the rest when logging is on) and returns status.
@@ -96,6 +121,9 @@ public:
     Status get_state(Snapshot** state);
     Status set_state(const Snapshot* state);
     static void free_state(Snapshot* state);
+    Status serialized_size(const Snapshot* state, std::size_t* size) const;
+    Status serialize_state(const Snapshot* state, unsigned char* bytes, std::size_t size) const;
+    Status deserialize_state(const unsigned char* bytes, std::size_t size, Snapshot** state) const;
 
 private:
     const UnitModel& unit_;
@@ -103,20 +131,13 @@ private:
     std::string name_, resources_;
     Logger logger_;
     bool logging_on_;
-    Mode mode_ = Mode::instantiated;
-
     runtime::ModelView view_;
     std::vector<Variable> table_;
     std::size_t nq_ = 0, nz_ = 0;
 
-    // The numbers.
-    double t_ = 0.0;
-    std::vector<double> x_, u_, p_;
+    Numbers n_;
     std::vector<double> view_params_; // the parameters view_ was made with
-    runtime::Method method_ = runtime::Method::rk4;
-    double step_ = 1e-3;
-    std::optional<double> tolerance_;
-    bool view_stale_ = false; // parameters changed since the view was made
+    bool view_stale_ = false;         // parameters changed since the view was made
 
     // Evaluated at (t_, x_, u_) on demand.
     std::vector<double> xdot_, y_;
@@ -126,9 +147,6 @@ private:
     // numbers they hold a history of change).
     std::optional<runtime::Rk4Workspace> rk4_;
     std::optional<runtime::Abm4Integrator> abm4_;
-    // Model exchange: the last accepted point, for the blocks' discrete states.
-    double t_accepted_ = 0.0;
-    std::vector<double> x_accepted_, u_accepted_;
 
     void start_values();
     void make_view();
@@ -137,6 +155,12 @@ private:
     const std::vector<double>& derivatives();
     const std::vector<double>& outputs();
     const Variable* variable(std::uint32_t vr, const char* function) const;
+    /// The position of a state in x = [q, q', z] (nullopt: not a state).
+    std::optional<std::size_t> state_index(const Variable& v) const;
+    /// The position of a state derivative in x' (q' is the derivative of q).
+    std::optional<std::size_t> derivative_index(const Variable& v) const;
+    /// Where the instance keeps a Float64 variable it stores (null: computed, or an Int32).
+    double* stored(const Variable& v);
     Status check_settable(const Variable& v) const;
     runtime::OdeFunction ode();
     void step_fixed(double t, double dt);

@@ -5,7 +5,8 @@
 //   B = dx'/du  [0; M^-1 dF/du] from the generated jacobians and mass_matrix
 //               (exact) for a model without constraints or block states,
 //   C = dy/dx, D = dy/du  the generated output_matrices (exact) for the
-//               model's own outputs,
+//               model's own outputs when they do not depend on t itself
+//               (output_matrices are evaluated at t = 0),
 // and central differences (step 1e-6 (1 + |v|)) where the view lacks the
 // exact ones: constrained models (B), closed load blocks (B, C, D).
 #include "instance.hpp"
@@ -42,7 +43,7 @@ struct Jacobian {
     std::vector<double> A, B, C, D;
 
     explicit Jacobian(Instance& instance)
-        : in(instance), nx(instance.x_.size()), nu(instance.u_.size()),
+        : in(instance), nx(instance.n_.x.size()), nu(instance.n_.u.size()),
           ny(static_cast<std::size_t>(instance.view_.ny)) {}
 
     const std::vector<double>& state_matrix() {
@@ -50,11 +51,11 @@ struct Jacobian {
         A.resize(nx * nx);
         const runtime::ModelView& v = in.view_;
         if (v.rhs_jacobian)
-            v.rhs_jacobian(in.t_, in.x_.data(), in.u_.data(), A.data());
+            v.rhs_jacobian(in.n_.t, in.n_.x.data(), in.n_.u.data(), A.data());
         else
             central_differences(
-                [&](const double* x, double* xdot) { v.rhs(in.t_, x, in.u_.data(), xdot); }, in.x_,
-                nx, A.data());
+                [&](const double* x, double* xdot) { v.rhs(in.n_.t, x, in.n_.u.data(), xdot); },
+                in.n_.x, nx, A.data());
         return A;
     }
 
@@ -65,9 +66,10 @@ struct Jacobian {
         const std::size_t nq = in.nq_;
         if (v.jacobians && v.mass_matrix && v.nz == 0 && v.nc == 0) {
             std::vector<double> M(nq * nq), dF_dq(nq * nq), dF_dqd(nq * nq), dF_du(nq * nu);
-            const double* q = in.x_.data();
-            v.mass_matrix(in.t_, q, in.u_.data(), M.data());
-            v.jacobians(in.t_, q, q + nq, in.u_.data(), dF_dq.data(), dF_dqd.data(), dF_du.data());
+            const double* q = in.n_.x.data();
+            v.mass_matrix(in.n_.t, q, in.n_.u.data(), M.data());
+            v.jacobians(in.n_.t, q, q + nq, in.n_.u.data(), dF_dq.data(), dF_dqd.data(),
+                        dF_du.data());
             using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
             const Eigen::Map<const Matrix> Mm(M.data(), Eigen::Index(nq), Eigen::Index(nq));
             const Eigen::Map<const Matrix> Fu(dF_du.data(), Eigen::Index(nq), Eigen::Index(nu));
@@ -75,8 +77,8 @@ struct Jacobian {
             lower = Mm.ldlt().solve(Fu);
         } else {
             central_differences(
-                [&](const double* u, double* xdot) { v.rhs(in.t_, in.x_.data(), u, xdot); }, in.u_,
-                nx, B.data());
+                [&](const double* u, double* xdot) { v.rhs(in.n_.t, in.n_.x.data(), u, xdot); },
+                in.n_.u, nx, B.data());
         }
         return B;
     }
@@ -90,25 +92,42 @@ struct Jacobian {
         return D;
     }
 
+    // The generated output_matrices are those of the operating point, at t = 0:
+    // exact here only when neither the outputs nor the accelerations they may
+    // read change with t itself at this point (prescribed motions do).
+    bool free_of_time() const {
+        if (in.n_.t == 0.0) return true;
+        const runtime::ModelView& v = in.view_;
+        const double* x = in.n_.x.data();
+        const double* u = in.n_.u.data();
+        std::vector<double> now(ny), zero(ny), xdot_now(nx), xdot_zero(nx);
+        v.outputs(in.n_.t, x, x + in.nq_, u, now.data());
+        v.outputs(0.0, x, x + in.nq_, u, zero.data());
+        v.rhs(in.n_.t, x, u, xdot_now.data());
+        v.rhs(0.0, x, u, xdot_zero.data());
+        return now == zero && xdot_now == xdot_zero;
+    }
+
     void output_matrices() {
         C.assign(ny * nx, 0.0);
         D.assign(ny * nu, 0.0);
         if (ny == 0) return;
         const runtime::ModelView& v = in.view_;
         const std::size_t nq = in.nq_;
-        if (in.unit_.output_matrices && v.nz == 0 && ny == in.unit_.output_names.size()) {
-            const double* q = in.x_.data();
-            in.unit_.output_matrices(in.p_.data(), q, q + nq, in.u_.data(), C.data(), D.data());
+        if (in.unit_.output_matrices && v.nz == 0 && ny == in.unit_.output_names.size() &&
+            free_of_time()) {
+            const double* q = in.n_.x.data();
+            in.unit_.output_matrices(in.n_.p.data(), q, q + nq, in.n_.u.data(), C.data(), D.data());
             return;
         }
         central_differences(
-            [&](const double* x, double* y) { v.outputs(in.t_, x, x + nq, in.u_.data(), y); },
-            in.x_, ny, C.data());
+            [&](const double* x, double* y) { v.outputs(in.n_.t, x, x + nq, in.n_.u.data(), y); },
+            in.n_.x, ny, C.data());
         central_differences(
             [&](const double* u, double* y) {
-                v.outputs(in.t_, in.x_.data(), in.x_.data() + nq, u, y);
+                v.outputs(in.n_.t, in.n_.x.data(), in.n_.x.data() + nq, u, y);
             },
-            in.u_, ny, D.data());
+            in.n_.u, ny, D.data());
     }
 };
 
@@ -120,53 +139,31 @@ Status Instance::directional_derivative(const std::uint32_t* unknowns, std::size
                         Mode::terminated}))
         return Status::error;
     refresh_view();
-    const std::size_t nx = x_.size();
+    const std::size_t nx = n_.x.size();
     // Rows: derivatives (0 .. nx) then outputs; columns: states then inputs.
     std::vector<std::size_t> rows(n_unknowns), cols(n_knowns);
     for (std::size_t i = 0; i < n_unknowns; ++i) {
         const Variable* v = variable(unknowns[i], what);
         if (!v) return Status::error;
-        const auto k = static_cast<std::size_t>(v->index);
-        switch (v->role) {
-        case Role::rate:
-            rows[i] = k;
-            break; // q' as the derivative of q
-        case Role::acceleration:
-            rows[i] = nq_ + k;
-            break;
-        case Role::block_rate:
-            rows[i] = 2 * nq_ + k;
-            break;
-        case Role::output:
-            rows[i] = nx + k;
-            break;
-        default:
+        if (const auto k = derivative_index(*v))
+            rows[i] = *k;
+        else if (v->role == Role::output)
+            rows[i] = nx + static_cast<std::size_t>(v->index);
+        else
             return fail(std::string(what) + ": " + v->name + " is not a derivative or an output");
-        }
     }
     for (std::size_t j = 0; j < n_knowns; ++j) {
         const Variable* v = variable(knowns[j], what);
         if (!v) return Status::error;
-        const auto k = static_cast<std::size_t>(v->index);
-        switch (v->role) {
-        case Role::position:
-            cols[j] = k;
-            break;
-        case Role::rate:
-            cols[j] = nq_ + k;
-            break;
-        case Role::block_state:
-            cols[j] = 2 * nq_ + k;
-            break;
-        case Role::input:
-            cols[j] = nx + k;
-            break;
-        default:
+        if (const auto k = state_index(*v))
+            cols[j] = *k;
+        else if (v->role == Role::input)
+            cols[j] = nx + static_cast<std::size_t>(v->index);
+        else
             return fail(std::string(what) + ": " + v->name + " is not a state or an input");
-        }
     }
     Jacobian J(*this);
-    const std::size_t nu = u_.size();
+    const std::size_t nu = n_.u.size();
     auto entry = [&](std::size_t r, std::size_t c) {
         if (r < nx)
             return c < nx ? J.state_matrix()[r * nx + c] : J.input_matrix()[r * nu + (c - nx)];

@@ -7,6 +7,7 @@
 // (or YAMSC_FMI_UNIT_WITH(<namespace>::Model, settings) with the unit's
 // settings); the macro defines unit_model(), which every FMI entry point of
 // libyamsc_fmi.a reads (docs/fmi.md).
+#include "yamsc/constraints.hpp"
 #include "yamsc/fmi/fmi2_api.h"
 #include "yamsc/fmi/fmi3_api.h"
 #include "yamsc/fmi/variables.hpp"
@@ -91,11 +92,15 @@ template <class Model> UnitModel make_unit_model(UnitSettings settings) {
     u.param_defaults.assign(static_cast<std::size_t>(Model::np), 0.0);
     if constexpr (Model::np > 0)
         Model::params_to_array(typename Model::Params{}, u.param_defaults.data());
+    // A model with constraint rows runs as `yamsc sim` runs it: constrained
+    // (the KKT accelerations, projection after each step, the reactions as outputs).
     u.make_view = [](const double* params) {
+        runtime::ModelView v;
         if constexpr (Model::np > 0)
-            return runtime::from_generated<Model>(Model::params_from_array(params));
+            v = runtime::from_generated<Model>(Model::params_from_array(params));
         else
-            return runtime::from_generated<Model>(typename Model::Params{});
+            v = runtime::from_generated<Model>(typename Model::Params{});
+        return v.nc > 0 ? runtime::constrain(v) : v;
     };
     if constexpr (detail::has_output_matrices<Model>::value)
         u.output_matrices = [](const double* params, const double* q, const double* qd,
