@@ -1,5 +1,6 @@
 // `yamsc fmu`: the model as an FMI unit (docs/packaging.md, "FMI units").
 #include "analysis/commands.hpp"
+#include "analysis/constrained_model.hpp"
 #include "analysis/fmu_binary.hpp"
 #include "analysis/fmu_blocks.hpp"
 #include "analysis/fmu_description.hpp"
@@ -115,11 +116,21 @@ int fmu(const FmuOptions& o, std::ostream& out, std::ostream& err) {
     std::optional<Loaded> l = load(o.model, o.set, "", o.verbose, err, outputs, routines,
                                    o.external.empty() ? "" : o.external);
     if (!l) return 1;
-    if (!l->front.model->constraints.empty())
-        throw diag::UsageError("yamsc fmu: a model with constraints is not supported yet");
     std::vector<double> q0, qd0;
     initial_state(*l, {}, q0, qd0);
     const runtime::ModelView view = with_load_blocks(*l, blocks);
+    // On the constraints, as sim starts (its dependent coordinates and speeds
+    // solved from the independent ones): the unit starts where sim does.
+    if (view.nc > 0) {
+        std::vector<double> x = q0;
+        x.insert(x.end(), qd0.begin(), qd0.end());
+        x.insert(x.end(), view.block_initial_states.begin(), view.block_initial_states.end());
+        consistent_start(view, 0.0, x, std::vector<double>(static_cast<std::size_t>(view.nu), 0.0),
+                         o.verbose, err);
+        std::copy(x.begin(), x.begin() + static_cast<long>(q0.size()), q0.begin());
+        std::copy(x.begin() + static_cast<long>(q0.size()),
+                  x.begin() + static_cast<long>(2 * q0.size()), qd0.begin());
+    }
     const model::Model& m = *l->front.model;
 
     // The unit's code: what its view calls (runtime::from_generated), with the
@@ -140,9 +151,23 @@ int fmu(const FmuOptions& o, std::ostream& out, std::ostream& err) {
     }
     codegen::Module module = codegen::build_module(*full.system);
     using codegen::RoutineId;
-    codegen::keep_routines(module, {RoutineId::rhs, RoutineId::rhs_jacobian, RoutineId::mass_matrix,
-                                    RoutineId::forcing, RoutineId::jacobians, RoutineId::outputs,
-                                    RoutineId::outputs_from_qdd, RoutineId::output_matrices});
+    codegen::RoutineSet kept{RoutineId::rhs,
+                             RoutineId::rhs_jacobian,
+                             RoutineId::mass_matrix,
+                             RoutineId::forcing,
+                             RoutineId::jacobians,
+                             RoutineId::outputs,
+                             RoutineId::outputs_from_qdd,
+                             RoutineId::output_matrices};
+    // A model with constraints runs constrained (runtime::constrain, as sim):
+    // its rows and their derivatives; its Jacobian is the constrained view's.
+    if (!full.system->constraints.empty()) {
+        // (No output matrices: the runtime differences its outputs.)
+        kept =
+            kept.without(codegen::RoutineSet{RoutineId::rhs_jacobian, RoutineId::output_matrices});
+        kept.insert(codegen::constraint_routines());
+    }
+    codegen::keep_routines(module, kept);
     codegen::EmitOptions emit;
     emit.header_name = "model.hpp";
     emit.compiler_version = YAMSC_VERSION;

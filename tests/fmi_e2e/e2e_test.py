@@ -199,6 +199,9 @@ case("ext_pendulum", os.path.join(SOURCE, "tests/external/models/ext_pendulum.mb
       os.path.join(SOURCE, "tests/external/models/pendulum_loads.c")],
      ["--external", os.path.join(SOURCE, "tests/external/models/pendulum_loads.c")],
      1.0, 1e-3, {"tau": 2.0}, extra=False)
+# A closed loop (constraint rows): the unit runs the constrained view, as sim.
+case("four_bar", os.path.join(SOURCE, "models/four_bar.mbd"), ["--u", "tau=1"], [], 1.0, 1e-3,
+     {"tau": 1.0}, versions=("3",), extra=False)
 # The quasi-steady rotor block (`load rotor_table`) closed by the unit from its
 # resources/: the 2-DOF land turbine in 16 m/s, the wind the unit's input.
 table = os.path.join(SOURCE, "models/data/Cp_Ct_Cq.NREL5MW.txt")

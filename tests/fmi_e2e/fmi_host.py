@@ -475,6 +475,9 @@ def simulate_me(unit, t_end, h, start_values=None, record=None):
              for a, b1, b2, b3, b4 in zip(x, k1, k2, k3, k4)]
         inst.derivatives((k + 1) * h, x)
         inst.completed_step()
+        # A unit may move the state at a completed step (a constrained model's
+        # projection onto its constraints): continue from its state.
+        x = inst.states()
         rows.append([(k + 1) * h] + inst.get(record))
     inst.close()
     return record, rows
