@@ -162,12 +162,14 @@ int fmu(const FmuOptions& o, std::ostream& out, std::ostream& err) {
     // A model with constraints runs constrained (runtime::constrain, as sim):
     // its rows and their derivatives; its Jacobian is the constrained view's.
     if (!full.system->constraints.empty()) {
-        // (No output matrices: the runtime differences its outputs.)
-        kept =
-            kept.without(codegen::RoutineSet{RoutineId::rhs_jacobian, RoutineId::output_matrices});
+        kept = kept.without(codegen::RoutineSet{RoutineId::rhs_jacobian});
         kept.insert(codegen::constraint_routines());
     }
-    codegen::keep_routines(module, kept);
+    // Those the model has (none of the linear model's without DOFs or with constraints).
+    codegen::RoutineSet present;
+    for (const codegen::Routine& r : module.routines)
+        if (!r.internal && r.id) present.insert(*r.id);
+    codegen::keep_routines(module, kept.both(present));
     codegen::EmitOptions emit;
     emit.header_name = "model.hpp";
     emit.compiler_version = YAMSC_VERSION;

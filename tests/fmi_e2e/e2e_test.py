@@ -192,6 +192,34 @@ def case(name, model, sim_args, fmu_args, t_end, h, start_by_name, cs_tolerance=
 
 
 os.makedirs(WORK, exist_ok=True)
+
+
+def failures_checks():
+    """Errors: an output over the model is a usage error and writes nothing; a
+    model error is located; nothing half-written stays behind."""
+    model = os.path.join(WORK, "copy.mbd")
+    with open(os.path.join(SOURCE, "models/double_pendulum.mbd")) as f:
+        text = f.read()
+    with open(model, "w") as f:
+        f.write(text)
+    r = subprocess.run([YAMSC, "fmu", model, "-o", model], capture_output=True, text=True)
+    with open(model) as f:
+        check("-o naming the model: exit 2, the model untouched",
+              r.returncode == 2 and f.read() == text, r.stderr[:200])
+    broken = os.path.join(WORK, "broken.mbd")
+    with open(broken, "w") as f:
+        f.write("model broken\ndof q\nrigid b { mass = m }\n")
+    out = os.path.join(WORK, "broken.fmu")
+    r = subprocess.run([YAMSC, "fmu", broken, "-o", out], capture_output=True, text=True)
+    check("a model error: exit 1, located, no unit written",
+          r.returncode == 1 and (broken + ":3:") in r.stderr and not os.path.exists(out),
+          r.stderr[:200])
+    leftovers = [n for n in os.listdir(WORK) if ".tmp." in n]
+    check("no temporary file left", not leftovers, str(leftovers))
+
+
+if not WANTED or "errors" in WANTED:
+    failures_checks()
 case("double_pendulum", os.path.join(SOURCE, "models/double_pendulum.mbd"),
      ["--u", "tau=1,f=0.5"], [], 2.0, 1e-3, {"tau": 1.0, "f": 0.5})
 case("ext_pendulum", os.path.join(SOURCE, "tests/external/models/ext_pendulum.mbd"),
