@@ -225,9 +225,11 @@ if not WANTED or "errors" in WANTED:
 case("double_pendulum", os.path.join(SOURCE, "models/double_pendulum.mbd"),
      ["--u", "tau=1,f=0.5"], [], 2.0, 1e-3, {"tau": 1.0, "f": 0.5})
 # The unit's co-simulation step with ABM4 (--method abm4) equals sim --method abm4
-# (at 20 ms, where ABM4 and RK4 differ by 3e-5, so the method must be the one chosen).
+# (at 20 ms, where ABM4 and RK4 differ by 3e-5, so the method must be the one chosen),
+# and the unit starts from the parameters --set gives (sim --set, the same).
 case("double_pendulum_abm4", os.path.join(SOURCE, "models/double_pendulum.mbd"),
-     ["--u", "tau=1,f=0.5", "--method", "abm4"], ["--method", "abm4"], 2.0, 0.02,
+     ["--u", "tau=1,f=0.5", "--method", "abm4", "--set", "k=50,m2=2"],
+     ["--method", "abm4", "--set", "k=50,m2=2"], 2.0, 0.02,
      {"tau": 1.0, "f": 0.5}, method="ABM4", versions=("3",), extra=False, me=False)
 case("ext_pendulum", os.path.join(SOURCE, "tests/external/models/ext_pendulum.mbd"),
      ["--u", "tau=2", "--external",
