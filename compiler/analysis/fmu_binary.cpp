@@ -2,7 +2,9 @@
 
 #include "analysis/compiler_invocation.hpp"
 #include "analysis/fmu_toolchain.hpp"
+#include "analysis/jit_cache.hpp"
 #include "diag/errors.hpp"
+#include "driver/files.hpp"
 #include "text/number.hpp"
 
 #include <yamsc/atomic_file.hpp>
@@ -11,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 namespace yamsc::analysis {
 
@@ -114,6 +117,21 @@ std::string glue_source(const UnitSettings& s) {
 std::string build_unit_binary(const UnitSources& sources, const std::string& compiler,
                               const std::function<void(const std::string&)>& progress) {
     const FmuToolchain tools = fmu_toolchain();
+    // Cached by content, as the JIT's libraries (jit_cache.hpp): the FMI 3.0 and
+    // 2.0 units of a model share their binary, and a rebuild repackages at once.
+    std::string key = sources.model.source + sources.model.header + sources.glue +
+                      sources.external_prototypes + compiler_identity(compiler) + "\n" +
+                      joined_words(cxx_flags) + "\n" + joined_words(tools.link_flags);
+    if (!sources.external.empty()) key += file_bytes(sources.external);
+    for (const std::vector<std::string>* files : {&tools.archives, &tools.hidden_archives})
+        for (const std::string& a : *files) key += "\n" + compiler_identity(a);
+    key += "\n" + compiler_identity(tools.exports);
+    const std::string library =
+        ModelCache(cache_folder("")).library_path("fmu_unit", driver::digest(key));
+    if (::access(library.c_str(), R_OK) == 0) {
+        if (progress) progress("using the unit's binary cached in " + library);
+        return file_bytes(library);
+    }
     const BuildFolder folder;
     folder.write("model.hpp", sources.model.header);
     std::vector<std::string> arguments = cxx_flags;
@@ -160,7 +178,6 @@ std::string build_unit_binary(const UnitSources& sources, const std::string& com
     for (const std::string& f : tools.link_flags) arguments.push_back(f);
     arguments.push_back("-Wl,--no-undefined");
     arguments.push_back("-Wl,--version-script=" + tools.exports);
-    const std::string library = folder.path("unit.so");
     if (progress) progress("compiling the unit with " + compiler);
     try {
         LibraryBuild(library).compile(compiler, arguments);
