@@ -1,4 +1,4 @@
-# yamsc_add_model(TARGET <name> MODEL <file.mbd> LANGUAGE cpp|c
+# yamsc_add_model(TARGET <name> MODEL <file.mbd> LANGUAGE cpp|c|fmu
 #                 [NAME <file base name>] [OPTIONS <yamsc options>...])
 #
 # Generates the model's code with yamsc at build time into
@@ -8,6 +8,8 @@
 # file the model read (SID, ElastoDyn), so editing any of them regenerates the code.
 # C++ models link yamsc::runtime (integrators, simulation driver); C models link
 # only the math library: generated C is standalone, for controllers.
+# LANGUAGE fmu: `yamsc fmu` writes <NAME>.fmu there instead (an FMI unit for other
+# tools), built with the target (ALL); its path is the target's YAMSC_FMU property.
 # OPTIONS go to yamsc as they are, e.g. OPTIONS --namespace turbine.
 include_guard(GLOBAL)
 
@@ -32,8 +34,8 @@ function(yamsc_add_model)
   elseif(arg_LANGUAGE STREQUAL "c")
     set(source_ext c)
     set(header_ext h)
-  else()
-    message(FATAL_ERROR "yamsc_add_model: LANGUAGE must be cpp or c, not '${arg_LANGUAGE}'")
+  elseif(NOT arg_LANGUAGE STREQUAL "fmu")
+    message(FATAL_ERROR "yamsc_add_model: LANGUAGE must be cpp, c or fmu, not '${arg_LANGUAGE}'")
   endif()
   if(NOT arg_NAME)
     set(arg_NAME ${arg_TARGET})
@@ -44,6 +46,20 @@ function(yamsc_add_model)
 
   get_filename_component(model ${arg_MODEL} ABSOLUTE BASE_DIR ${CMAKE_CURRENT_SOURCE_DIR})
   set(dir ${CMAKE_CURRENT_BINARY_DIR}/yamsc_models/${arg_TARGET})
+  if(arg_LANGUAGE STREQUAL "fmu")
+    set(unit ${dir}/${arg_NAME}.fmu)
+    file(MAKE_DIRECTORY ${dir})
+    add_custom_command(
+      OUTPUT ${unit}
+      COMMAND yamsc::yamsc fmu ${model} -o ${unit} --depfile ${dir}/${arg_NAME}.d ${arg_OPTIONS}
+      DEPENDS ${model} yamsc::yamsc
+      DEPFILE ${dir}/${arg_NAME}.d
+      COMMENT "yamsc: packaging ${arg_NAME}.fmu from ${arg_MODEL}"
+      VERBATIM)
+    add_custom_target(${arg_TARGET} ALL DEPENDS ${unit})
+    set_target_properties(${arg_TARGET} PROPERTIES YAMSC_FMU ${unit})
+    return()
+  endif()
   set(source ${dir}/${arg_NAME}.${source_ext})
   set(header ${dir}/${arg_NAME}.${header_ext})
   set(depfile ${dir}/${arg_NAME}.d)

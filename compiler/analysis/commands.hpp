@@ -14,6 +14,7 @@ int sim(const driver::SimOptions& o, std::ostream& out, std::ostream& err);
 int batch(const driver::BatchOptions& o, std::ostream& out, std::ostream& err);
 int batch_merge(const driver::BatchMergeOptions& o, std::ostream& out, std::ostream& err);
 int rotor_table(const driver::RotorTableOptions& o, std::ostream& out, std::ostream& err);
+int fmu(const driver::FmuOptions& o, std::ostream& out, std::ostream& err);
 int turbulence(const driver::TurbulenceOptions& o, std::ostream& out, std::ostream& err);
 int view(const driver::ViewOptions& o, std::ostream& out, std::ostream& err);
 

@@ -15,6 +15,7 @@ const std::vector<Command>& command_table() {
         batch_command(),         batch_merge_command(), lin_command(),  trim_command(),
         from_openfast_command(), rotor_table_command(), sid_command(),  loads_command(),
         turbulence_command(),    dlc_command(),         view_command(),
+        fmu_command(),
     };
     return table;
 }

@@ -183,6 +183,24 @@ struct SidOptions {
     std::string output;             // -o; empty or "-": stdout
 };
 
+/// --fmi-version of `yamsc fmu`: the standard its modelDescription.xml follows.
+enum class FmiVersion { fmi3, fmi2 };
+
+/// `yamsc fmu`: the model as an FMI unit (model exchange and co-simulation).
+struct FmuOptions {
+    std::string model;
+    std::string output;                    // -o model.fmu
+    FmiVersion version = FmiVersion::fmi3; // --fmi-version 3|2
+    SimMethod method = SimMethod::rk4;     // --method: the co-simulation step's integrator
+    double step = 0;                       // --step DT: its fixed step [s]; 0: the default
+    std::vector<Assignment> set;           // --set: the parameters' start values
+    std::string external;                  // --external file.c|file.cpp compiled into the unit
+    std::string aero;                      // --aero FILE: carried under resources/
+    std::string wind;                      // --wind SPEC: a file is carried under resources/
+    std::string depfile;                   // --depfile: make-style dependencies of -o
+    bool verbose = false;
+};
+
 struct RotorTableOptions {
     std::string table;                  // a Cp/Ct/Cq table in ROSCO's format, or a .fst deck
     std::string output;                 // -o rotor_table.c (a table: -o Cp_Ct_Cq.txt from a deck)

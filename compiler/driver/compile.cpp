@@ -51,25 +51,13 @@ void check_namespace(const std::string& ns, const Target& target) {
 }
 
 /// Make-style dependency file: the outputs depend on the model file and on every
-/// data file it read (SID, ElastoDyn), escaped as GCC escapes them and as make and
-/// Ninja read them: a space as "\ ", '#' as "\#", '$' as "$$". A line break cannot
-/// be written in a depfile at all.
+/// data file it read (SID, ElastoDyn).
 std::string depfile_text(const CompileOptions& o, const std::vector<std::string>& data_files) {
-    auto escape = [](const std::string& s) {
-        std::string out;
-        for (char c : s) {
-            if (c == '\n' || c == '\r')
-                throw UsageError("--depfile: the path '" + s +
-                                 "' has a line break, which a "
-                                 "depfile cannot express");
-            out += c == ' ' ? "\\ " : c == '#' ? "\\#" : c == '$' ? "$$" : std::string(1, c);
-        }
-        return out;
-    };
-    std::string targets = escape(o.output) + (o.header.empty() ? "" : " " + escape(o.header));
-    std::string deps = escape(o.model);
-    for (const auto& f : data_files) deps += " " + escape(f);
-    return targets + ": " + deps + "\n";
+    std::vector<std::string> targets{o.output};
+    if (!o.header.empty()) targets.push_back(o.header);
+    std::vector<std::string> deps{o.model};
+    deps.insert(deps.end(), data_files.begin(), data_files.end());
+    return make_rule(targets, deps);
 }
 
 std::string join(const std::vector<std::string>& items) {

@@ -11,10 +11,6 @@
 
 namespace yamsc::driver {
 
-namespace {
-
-/// The folder of the file this code was loaded from: the yamsc program, or the
-/// Python module that links the driver.
 std::string own_folder() {
     Dl_info info{};
     if (::dladdr(reinterpret_cast<void*>(&derivation_module_path), &info) == 0 ||
@@ -30,6 +26,8 @@ std::string own_folder() {
     const auto slash = path.find_last_of('/');
     return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
 }
+
+namespace {
 
 std::vector<std::string> candidates() {
     if (const char* chosen = std::getenv("YAMSC_DERIVATION_MODULE"); chosen && *chosen)

@@ -23,4 +23,10 @@ void derive_through_module(const derivation::DerivationRequest& request, diag::D
 /// (the build tree first for a program that is still in it).
 std::string derivation_module_path();
 
+/// The folder of the file this code was loaded from: the yamsc program, or the
+/// Python module that links the driver ("" when it cannot be told). Whatever
+/// ships beside the program (the derivation module, the FMI unit's libraries)
+/// is found from it.
+std::string own_folder();
+
 } // namespace yamsc::driver

@@ -87,4 +87,26 @@ std::vector<NamedFile> sid_files_of(const std::string& spec) {
     return files;
 }
 
+std::string make_rule(const std::vector<std::string>& targets,
+                      const std::vector<std::string>& dependencies) {
+    // Escaped as GCC escapes them and as make and Ninja read them: a space and
+    // '#' behind a backslash, '$' doubled. A line break cannot be written in a depfile at all.
+    auto escape = [](const std::string& s) {
+        std::string out;
+        for (char c : s) {
+            if (c == '\n' || c == '\r')
+                throw UsageError("--depfile: the path '" + s +
+                                 "' has a line break, which a "
+                                 "depfile cannot express");
+            out += c == ' ' ? "\\ " : c == '#' ? "\\#" : c == '$' ? "$$" : std::string(1, c);
+        }
+        return out;
+    };
+    std::string rule;
+    for (const std::string& t : targets) rule += (rule.empty() ? "" : " ") + escape(t);
+    rule += ":";
+    for (const std::string& d : dependencies) rule += " " + escape(d);
+    return rule + "\n";
+}
+
 } // namespace yamsc::driver

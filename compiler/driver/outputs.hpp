@@ -28,6 +28,12 @@ struct NamedFile {
 /// are often the same terminal.
 void check_outputs(const std::vector<NamedFile>& inputs, const std::vector<NamedFile>& outputs);
 
+/// A make rule for --depfile: `targets` depend on `dependencies` (paths
+/// escaped as make and Ninja read them). Throws UsageError for a path with a
+/// line break, which a depfile cannot express.
+std::string make_rule(const std::vector<std::string>& targets,
+                      const std::vector<std::string>& dependencies);
+
 /// The data files the checked model read (SID, ElastoDyn), as inputs.
 std::vector<NamedFile> data_files_of(const model::Model& m);
 

@@ -5,6 +5,9 @@
 # 3. A second build does nothing; touching mast.sid regenerates the mast model
 #    (and only it); changing its stiffness changes what the consumer computes.
 # 4. Builds the same model without CMake, from pkg-config alone.
+# 5. The pendulum packaged as an FMI unit by yamsc_add_model(.. LANGUAGE fmu): the
+#    installed yamsc finds the unit's runtime in the prefix; the unit holds its
+#    description and binary; it is packaged once.
 cmake_minimum_required(VERSION 3.20)
 
 set(prefix ${WORK_DIR}/prefix)
@@ -52,6 +55,17 @@ run_step("configure the consumer" out
 run_step("build the consumer" out ${CMAKE_COMMAND} --build ${build})
 expect_match("first build" "${out}" "yamsc: generating mast_model.cpp")
 expect_match("first build" "${out}" "yamsc: generating pendulum.c")
+expect_match("first build" "${out}" "yamsc: packaging pendulum.fmu")
+set(unit_dir ${WORK_DIR}/unit)
+file(MAKE_DIRECTORY ${unit_dir})
+run_step("unzip pendulum.fmu" out ${CMAKE_COMMAND} -E chdir ${unit_dir} ${CMAKE_COMMAND} -E tar xf
+         ${build}/yamsc_models/pendulum_unit/pendulum.fmu)
+file(READ ${unit_dir}/modelDescription.xml description)
+expect_match("the unit's description" "${description}" "fmiVersion=\"3.0\" modelName=\"pendulum\"")
+expect_match("the unit's description" "${description}" "name=\"theta\"[^>]*unit=\"rad\"")
+if(NOT EXISTS ${unit_dir}/binaries/x86_64-linux/pendulum.so)
+  message(FATAL_ERROR "the unit has no binaries/x86_64-linux/pendulum.so")
+endif()
 
 run_step("run the C++ consumer" out ${build}/consumer)
 expect_match("C++ consumer" "${out}" "omega 10.000000\n")
@@ -60,14 +74,14 @@ run_step("run the C consumer" out ${build}/consumer_c)
 expect_match("C consumer" "${out}" "omega 4.429447\n")
 
 run_step("rebuild without changes" out ${CMAKE_COMMAND} --build ${build})
-expect_no_match("rebuild without changes" "${out}" "yamsc: generating")
+expect_no_match("rebuild without changes" "${out}" "yamsc: generating|yamsc: packaging")
 
 # File times have a resolution of a second on some file systems.
 execute_process(COMMAND ${CMAKE_COMMAND} -E sleep 1.1)
 file(TOUCH ${source}/mast.sid)
 run_step("rebuild after touching mast.sid" out ${CMAKE_COMMAND} --build ${build})
 expect_match("touched mast.sid" "${out}" "yamsc: generating mast_model.cpp")
-expect_no_match("touched mast.sid" "${out}" "yamsc: generating pendulum.c")
+expect_no_match("touched mast.sid" "${out}" "yamsc: generating pendulum.c|yamsc: packaging")
 
 execute_process(COMMAND ${CMAKE_COMMAND} -E sleep 1.1)
 file(READ ${source}/mast.sid sid)

@@ -20,5 +20,6 @@ Command loads_command();         // loads.cpp
 Command turbulence_command();    // turbulence.cpp
 Command dlc_command();           // dlc.cpp
 Command view_command();          // view.cpp
+Command fmu_command();           // fmu.cpp
 
 } // namespace yamsc::cli
