@@ -33,6 +33,7 @@ reference = yamsc.load(model).simulate(tmax=1.0, dt=0.01, ic={"th1": 0.5, "th2":
 exact = {round(t, 9): (x, z) for t, x, z in
          zip(reference["time"], reference["x_tip"], reference["z_tip"])}
 shutil.rmtree(out, ignore_errors=True)
+os.makedirs(os.path.dirname(out), exist_ok=True)  # sim makes DIR, not its parents
 run = subprocess.run([yamsc_exe, "sim", model, "--tmax", "1", "--dt", "0.01", "--dt-out", "0.1",
                       "--ic", "th1=0.5,th2=-0.3", "--vtk", out],
                      capture_output=True, text=True)
