@@ -14,8 +14,7 @@ const std::vector<Command>& command_table() {
         compile_command(),       check_command(),       eval_command(), sim_command(),
         batch_command(),         batch_merge_command(), lin_command(),  trim_command(),
         from_openfast_command(), rotor_table_command(), sid_command(),  loads_command(),
-        turbulence_command(),    dlc_command(),         view_command(),
-        fmu_command(),
+        turbulence_command(),    dlc_command(),         view_command(), fmu_command(),
     };
     return table;
 }
