@@ -1,6 +1,7 @@
 #include "analysis/fmu_description.hpp"
 
 #include "text/number.hpp"
+#include "text/xml.hpp"
 
 #include <map>
 #include <set>
@@ -16,37 +17,8 @@ using fmi::ValueType;
 using fmi::Variability;
 using fmi::Variable;
 
-std::string xml(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        case '\'':
-            out += "&apos;";
-            break;
-        case '\n':
-            out += "&#10;";
-            break;
-        default:
-            out += c;
-        }
-    }
-    return out;
-}
-
 std::string attribute(const std::string& name, const std::string& value) {
-    return " " + name + "=\"" + xml(value) + "\"";
+    return " " + name + "=\"" + text::xml_escaped(value) + "\"";
 }
 
 const char* causality_name(Causality c) {

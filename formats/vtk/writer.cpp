@@ -1,6 +1,7 @@
 #include "vtk/scene.hpp"
 
 #include "text/number.hpp"
+#include "text/xml.hpp"
 
 #include <cstdio>
 #include <stdexcept>
@@ -61,33 +62,6 @@ std::string numbered(std::size_t row) {
     char digits[32];
     std::snprintf(digits, sizeof digits, "%06zu", row);
     return digits;
-}
-
-/// XML's five characters escaped (file names in the .pvd).
-std::string escaped(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        case '\'':
-            out += "&apos;";
-            break;
-        default:
-            out += c;
-        }
-    }
-    return out;
 }
 
 } // namespace
@@ -160,7 +134,7 @@ std::string write_pvd(const std::vector<Entry>& entries) {
                       "  <Collection>\n";
     for (const Entry& e : entries)
         out += "    <DataSet timestep=\"" + text::shortest(e.time) +
-               "\" group=\"\" part=\"0\" file=\"" + escaped(e.file) + "\"/>\n";
+               "\" group=\"\" part=\"0\" file=\"" + text::xml_escaped(e.file) + "\"/>\n";
     out += "  </Collection>\n"
            "</VTKFile>\n";
     return out;

@@ -1,6 +1,8 @@
 // The mooring lines as a load block on a body's mesh channels: its loads are the
 // lines' force and moment in body axes, its derivatives exact against central
 // differences of its own evaluation, its outputs the lines' tensions.
+#include "mooring/oc3_lines.hpp"
+
 #include <yamsc/mooring/mooring_block.hpp>
 
 #include <doctest/doctest.h>
@@ -12,19 +14,6 @@ using namespace yamsc::runtime;
 using namespace yamsc::runtime::mooring;
 
 namespace {
-
-std::vector<Line> three_lines() {
-    std::vector<Line> lines;
-    for (int k = 0; k < 3; ++k) {
-        const double a = k * 2 * M_PI / 3;
-        Line l;
-        l.properties = {902.2, 384243000.0, 698.094, 0.0};
-        l.anchor = {853.87 * std::cos(a), 853.87 * std::sin(a), -320};
-        l.fairlead = {5.2 * std::cos(a), 5.2 * std::sin(a), -70};
-        lines.push_back(l);
-    }
-    return lines;
-}
 
 // The 18 mesh outputs of a body frame at a pose: r, v, w, then its axes.
 std::vector<double> frame_reads(const Pose& p) {
@@ -51,7 +40,7 @@ Pose displaced() {
 
 std::shared_ptr<const LoadBlock> block() {
     MooringSetup s;
-    s.lines = three_lines();
+    s.lines = test::oc3_lines();
     s.output_prefix = "moor_";
     for (int i = 0; i < 18; ++i) s.frame_outputs.push_back(40 + i);
     for (int i = 0; i < 6; ++i) s.loads.push_back(7 + i);
@@ -72,7 +61,7 @@ TEST_CASE("the block's loads are the lines' force and moment in body axes; its o
     const std::vector<double> r = frame_reads(pose);
     double loads[6], out[6];
     b->evaluate(0, nullptr, r.data(), loads, nullptr, out);
-    const MooringLoads m = mooring_loads(three_lines(), pose);
+    const MooringLoads m = mooring_loads(test::oc3_lines(), pose);
     for (int row = 0; row < 3; ++row) {
         double f = 0, mo = 0;
         for (int i = 0; i < 3; ++i) {

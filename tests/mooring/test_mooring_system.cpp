@@ -1,6 +1,8 @@
 // Mooring lines on a body: the OC3-Hywind spar's three lines against the
 // restoring matrix its definition publishes, the exact pose derivatives
 // against central differences, and the loads' balance with the lines.
+#include "mooring/oc3_lines.hpp"
+
 #include <yamsc/mooring/mooring_system.hpp>
 
 #include <doctest/doctest.h>
@@ -10,24 +12,6 @@
 using namespace yamsc::runtime::mooring;
 
 namespace {
-
-// Jonkman, "Definition of the Floating System for Phase IV of OC3",
-// NREL/TP-500-47535 (2010), table 5-1: three lines 120 degrees apart, anchors
-// 853.87 m from the spar's axis at 320 m depth, fairleads at 5.2 m and 70 m
-// below the still water level (the reference point), 902.2 m unstretched,
-// 698.094 N/m in water, EA = 384,243,000 N; FAST's seabed without friction.
-std::vector<Line> oc3_lines() {
-    std::vector<Line> lines;
-    for (int k = 0; k < 3; ++k) {
-        const double a = k * 2 * M_PI / 3;
-        Line l;
-        l.properties = {902.2, 384243000.0, 698.094, 0.0};
-        l.anchor = {853.87 * std::cos(a), 853.87 * std::sin(a), -320};
-        l.fairlead = {5.2 * std::cos(a), 5.2 * std::sin(a), -70};
-        lines.push_back(l);
-    }
-    return lines;
-}
 
 Mat3 rotation_about(int axis, double angle) {
     const double c = std::cos(angle), s = std::sin(angle);
@@ -62,7 +46,7 @@ Pose moved(const Pose& p, int dof, double amount) {
 } // namespace
 
 TEST_CASE("OC3-Hywind: the lines' restoring matrix at rest is the published one") {
-    const MooringLoads m = mooring_loads(oc3_lines(), Pose{});
+    const MooringLoads m = mooring_loads(test::oc3_lines(), Pose{});
     auto k = [&](int i, int j) { return -m.derivative[6 * (i - 1) + (j - 1)]; };
     // Published (NREL/TP-500-47535, section 5.2), four significant digits, from
     // FAST's numerical linearization: its K15 and K51 differ by 0.18 % where
@@ -86,7 +70,7 @@ TEST_CASE("OC3-Hywind: the lines' restoring matrix at rest is the published one"
 }
 
 TEST_CASE("the exact pose derivatives equal central differences at a displaced, rotated pose") {
-    const auto lines = oc3_lines();
+    const auto lines = test::oc3_lines();
     Pose pose;
     pose.position = {12.0, -3.0, 1.5};
     pose.rotation = multiply(rotation_about(2, 0.2),
@@ -108,7 +92,7 @@ TEST_CASE("the exact pose derivatives equal central differences at a displaced, 
 }
 
 TEST_CASE("each line's force points at its anchor and has the catenary's tension") {
-    const auto lines = oc3_lines();
+    const auto lines = test::oc3_lines();
     Pose pose;
     pose.position = {20.0, 0.0, 0.0}; // surge 20 m: line 1 (downstream anchor) slackens
     const MooringLoads m = mooring_loads(lines, pose);
