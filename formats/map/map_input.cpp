@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <string_view>
 
 namespace yamsc::map {
@@ -132,7 +133,8 @@ private:
     std::optional<int> count(const Row& r, std::size_t word, const char* column) {
         const auto v = number(r, word, column);
         if (!v) return std::nullopt;
-        if (*v != static_cast<int>(*v) || *v < 1 || *v > max_rows) {
+        // The range first: converting a double outside int's range is undefined.
+        if (!(*v >= 1 && *v <= max_rows) || *v != std::floor(*v)) {
             error(Kind::InvalidValue, at(r, word),
                   std::string(column) + " must be a whole number from 1 to " +
                       std::to_string(max_rows));
@@ -276,6 +278,11 @@ private:
         }
         if (o.name == "REPEAT") {
             in.repeat_at = o.at;
+            if (r.words.size() > max_repeat_angles + 1) {
+                error(Kind::Limit, o.at,
+                      "more than " + std::to_string(max_repeat_angles) + " REPEAT angles");
+                return;
+            }
             for (std::size_t k = 1; k < r.words.size(); ++k) {
                 const auto angle = number(r, k, "a REPEAT angle");
                 if (angle) in.repeat_angles.push_back(*angle);

@@ -11,6 +11,7 @@
 // Values as in the file (SI units). Bad input: located errors and nullopt.
 #include "diag/diagnostics.hpp"
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,6 +21,8 @@ namespace yamsc::map {
 
 /// The largest number of rows a section may hold.
 inline constexpr int max_rows = 10000;
+/// The most copies REPEAT may make of the lines.
+inline constexpr std::size_t max_repeat_angles = 360;
 
 struct LineType {
     std::string label;

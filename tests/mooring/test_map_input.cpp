@@ -87,6 +87,13 @@ TEST_CASE("MAP++ files with errors: each at its line and column") {
     CHECK(errors_of(replaced(good, " outer_tol", " outer_toll"))
               .find("moor.map:18:2: warning: unknown MAP++ solver option 'outer_toll' (ignored) "
                     "(did you mean 'OUTER_TOL'?)") != std::string::npos);
+    CHECK(errors_of(replaced(good, "1       chain", "3.3e45  chain"))
+              .find("moor.map:13:1: error: Line must be a whole number from 1 to 10000") !=
+          std::string::npos);
+    std::string many = " repeat";
+    for (int k = 1; k <= 361; ++k) many += " " + std::to_string(k);
+    CHECK(errors_of(replaced(good, " repeat 120 240", many))
+              .find("moor.map:19:2: error: more than 360 REPEAT angles") != std::string::npos);
     const std::string cut = good.substr(0, good.find("---------------------- LINE PROPERTIES"));
     CHECK(errors_of(cut).find("error: the MAP++ file ends before its LINE PROPERTIES section") !=
           std::string::npos);
