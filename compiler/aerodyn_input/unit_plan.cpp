@@ -26,6 +26,18 @@ public:
     void text(const std::string& s) { word(std::to_string(s.size()) + ':' + s); }
     void number(double v) { word(yamsc::text::shortest(v)); }
     void integer(long long v) { word(std::to_string(v)); }
+    void text(const char* l, const std::string& s) {
+        label(l);
+        text(s);
+    }
+    void number(const char* l, double v) {
+        label(l);
+        number(v);
+    }
+    void integer(const char* l, long long v) {
+        label(l);
+        integer(v);
+    }
     void integers(const char* l, const std::vector<int>& v) {
         label(l);
         integer(static_cast<long long>(v.size()));
@@ -82,6 +94,18 @@ public:
         return v;
     }
     long long integer() { return whole(word()); }
+    std::string text(const char* l) {
+        label(l);
+        return text();
+    }
+    double number(const char* l) {
+        label(l);
+        return number();
+    }
+    long long integer(const char* l) {
+        label(l);
+        return integer();
+    }
     std::size_t count() {
         const long long n = integer();
         // Every element takes at least two bytes of the text.
@@ -157,20 +181,13 @@ std::string blade_elements_plan_text(const BladeElementsPlan& plan) {
     Writer w;
     w.label(magic);
     w.integer(version);
-    w.label("aerodyn");
-    w.text(plan.aerodyn);
-    w.label("inflow_angle_tolerance");
-    w.number(plan.inflow_angle_tolerance);
-    w.label("output_prefix");
-    w.text(s.output_prefix);
-    w.label("frozen_wake");
-    w.integer(s.frozen_wake ? 1 : 0);
-    w.label("difference_step");
-    w.number(s.difference_step);
-    w.label("wind");
-    w.integer(c.wind);
-    w.label("pitch");
-    w.integer(c.pitch);
+    w.text("aerodyn", plan.aerodyn);
+    w.number("inflow_angle_tolerance", plan.inflow_angle_tolerance);
+    w.text("output_prefix", s.output_prefix);
+    w.integer("frozen_wake", s.frozen_wake ? 1 : 0);
+    w.number("difference_step", s.difference_step);
+    w.integer("wind", c.wind);
+    w.integer("pitch", c.pitch);
     w.integers("hub_outputs", c.hub_outputs);
     w.label("blades");
     w.integer(static_cast<long long>(c.blades.size()));
@@ -193,20 +210,13 @@ BladeElementsPlan read_blade_elements_plan(const std::string& text) {
     aero::BladeElementChannels& c = s.channels;
     r.label(magic);
     if (r.integer() != version) throw std::invalid_argument("blade-element plan: not version 1");
-    r.label("aerodyn");
-    plan.aerodyn = r.text();
-    r.label("inflow_angle_tolerance");
-    plan.inflow_angle_tolerance = r.number();
-    r.label("output_prefix");
-    s.output_prefix = r.text();
-    r.label("frozen_wake");
-    s.frozen_wake = r.integer() != 0;
-    r.label("difference_step");
-    s.difference_step = r.number();
-    r.label("wind");
-    c.wind = static_cast<int>(r.integer());
-    r.label("pitch");
-    c.pitch = static_cast<int>(r.integer());
+    plan.aerodyn = r.text("aerodyn");
+    plan.inflow_angle_tolerance = r.number("inflow_angle_tolerance");
+    s.output_prefix = r.text("output_prefix");
+    s.frozen_wake = r.integer("frozen_wake") != 0;
+    s.difference_step = r.number("difference_step");
+    c.wind = static_cast<int>(r.integer("wind"));
+    c.pitch = static_cast<int>(r.integer("pitch"));
     c.hub_outputs = r.integers("hub_outputs");
     r.label("blades");
     c.blades.resize(r.count());
