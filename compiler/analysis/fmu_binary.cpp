@@ -122,7 +122,7 @@ std::string build_unit_binary(const UnitSources& sources, const std::string& com
         if (tools.aerodyn_archives.empty())
             throw diag::UserError("yamsc fmu: this yamsc has no AeroDyn reader to link into a "
                                   "unit with blade elements (libyamsc_aerodyn_input.a and the "
-                                  "libraries it needs are in its build tree only)");
+                                  "libraries it needs, installed under lib/yamsc/fmu/)");
         // Before the runtime's: the reader calls it.
         tools.hidden_archives.insert(tools.hidden_archives.begin(), tools.aerodyn_archives.begin(),
                                      tools.aerodyn_archives.end());

@@ -38,7 +38,10 @@ Layout installed_under(const std::string& libdir, const std::string& includedir,
             libdir + "/libyamsc_runtime.a",
             libdir + "/libyamsc_files.a",
             datadir + "/yamsc/fmi/exports.map",
-            {}};
+            {libdir + "/yamsc/fmu/libyamsc_aerodyn_input.a",
+             libdir + "/yamsc/fmu/libyamsc_formats_aerodyn.a",
+             libdir + "/yamsc/fmu/libyamsc_formats_elastodyn.a",
+             libdir + "/yamsc/fmu/libyamsc_diag.a", libdir + "/yamsc/fmu/libyamsc_text.a"}};
 }
 
 Layout build_tree() {

@@ -16,7 +16,7 @@ struct FmuToolchain {
     std::vector<std::string> hidden_archives; // linked as needed, their symbols not exported
     /// A unit with blade elements links these too, before the hidden ones: the
     /// AeroDyn reader (libyamsc_aerodyn_input.a) and what it stands on; empty
-    /// where this yamsc has none (an installed tree: not installed yet).
+    /// where this yamsc has none (installed under LIBDIR/yamsc/fmu/).
     std::vector<std::string> aerodyn_archives;
     std::vector<std::string> link_flags; // -L.. -lsundials_cvode .. -ldl
     std::string
