@@ -258,14 +258,15 @@ if not WANTED or "blade_elements" in WANTED:
     # AeroDyn's BEM on the flexible blades (`load blade_elements`): the 16-DOF
     # model of the operating deck with --aero its AeroDyn file, the blade and
     # airfoil files carried under resources/aerodyn/; the unsteady airfoils
-    # (UA_Mod 3) are discrete states the unit advances after each step, as sim.
+    # (UA_Mod 3) are discrete states the unit advances after each step, as sim;
+    # model exchange advances them at CompletedIntegratorStep (the host RK4 there).
     deck = os.path.join(SOURCE, "tests/data/reference/operating/deck")
     model = os.path.join(WORK, "operating_16dof.mbd")
     run("from-openfast", os.path.join(deck, "NREL-5MW.fst"), "-o", model)
     aerodyn = os.path.join(deck, "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat")
     # Eight steps of the deck's 6.25 ms: the test's time is the unit's compile.
     case("blade_elements", model, ["--aero", aerodyn, "--wind", "12"], ["--aero", aerodyn],
-         0.05, 0.00625, {"V_wind": 12.0}, versions=("3",), extra=False, me=False)
+         0.05, 0.00625, {"V_wind": 12.0}, versions=("3",), extra=False)
     if os.path.exists(os.path.join(WORK, "blade_elements_fmi3.fmu")):
         unit = fmi_host.Unit(os.path.join(WORK, "blade_elements_fmi3.fmu"),
                              os.path.join(WORK, "blade_elements_state"))
