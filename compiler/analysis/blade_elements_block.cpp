@@ -1,7 +1,7 @@
 // `load blade_elements NAME { ... }` with `--aero AeroDyn.dat`: AeroDyn's blade
 // elements (yamsc/aero/blade_element_block.hpp) on the model's hub and blades,
 // reached through the declaration's mesh channels (model/mesh_channels.hpp).
-#include "analysis/aerodyn_rotor.hpp"
+#include "aerodyn_input/blade_elements.hpp"
 #include "analysis/body_points.hpp"
 #include "analysis/load_block_kinds.hpp"
 #include "diag/errors.hpp"
@@ -24,30 +24,18 @@ std::vector<int> indices(const std::vector<std::string>& names,
 
 } // namespace
 
-std::shared_ptr<const runtime::LoadBlock> build_blade_elements(const model::LoadBlock& decl,
-                                                               const BlockContext& c) {
+aero::BladeElementSetup blade_element_channels(const model::LoadBlock& decl, const model::Model& m,
+                                               const runtime::ModelView& v, const BlockOptions& o) {
     using Role = model::BladeElementsRole;
-    const model::Model& m = *c.loaded.front.model;
-    const runtime::ModelView& v = c.view;
     std::vector<Role> blades;
     for (Role r : {Role::blade1, Role::blade2, Role::blade3})
         if (!decl.role(r).empty()) blades.push_back(r);
 
-    diag::Diagnostics diags;
-    std::optional<aero::RotorInput> rotor =
-        read_aerodyn_rotor(c.options.aero, static_cast<int>(blades.size()), diags);
-    if (!rotor || diags.has_errors()) throw diag::UserError(diags.render());
-    if (!diags.all().empty()) std::cerr << diags.render();
-
     aero::BladeElementSetup s;
     const model::LoadKindInfo& kind = model::load_kind_info(decl.kind);
     s.output_prefix = kind.output_name(decl.name, "");
-    s.rotor = std::move(*rotor);
-    if (c.options.inflow_angle_tolerance > 0)
-        s.rotor.inflow_angle_tolerance = c.options.inflow_angle_tolerance;
-    s.frozen_wake = c.options.frozen_wake;
-    s.difference_step = c.options.difference_step;
-    s.wind_field = c.wind_field;
+    s.frozen_wake = o.frozen_wake;
+    s.difference_step = o.difference_step;
     s.channels.wind = index_in(v.input_names, decl.role(Role::wind));
     s.channels.pitch =
         decl.role(Role::pitch).empty() ? -1 : index_in(v.input_names, decl.role(Role::pitch));
@@ -69,6 +57,15 @@ std::shared_ptr<const runtime::LoadBlock> build_blade_elements(const model::Load
         t.points =
             body_points(m.bodies[static_cast<std::size_t>(m.body_index(decl.role(Role::tower)))]);
     }
+    return s;
+}
+
+std::shared_ptr<const runtime::LoadBlock> build_blade_elements(const model::LoadBlock& decl,
+                                                               const BlockContext& c) {
+    aero::BladeElementSetup s = aerodyn_input::with_aerodyn_rotor(
+        blade_element_channels(decl, *c.loaded.front.model, c.view, c.options), c.options.aero,
+        c.options.inflow_angle_tolerance, std::cerr);
+    s.wind_field = c.wind_field;
     return aero::blade_element_block(std::move(s));
 }
 

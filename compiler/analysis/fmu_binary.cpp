@@ -91,6 +91,7 @@ std::string glue_source(const UnitSettings& s) {
     state.insert(state.end(), s.qd0.begin(), s.qd0.end());
     return "// The FMI unit of the model in model.hpp (written by yamsc fmu).\n"
            "#include \"model.hpp\"\n"
+           "#include <yamsc/fmi/blade_elements.hpp>\n"
            "#include <yamsc/fmi/blocks.hpp>\n"
            "#include <yamsc/fmi/unit.hpp>\n"
            "namespace {\n"
@@ -116,7 +117,16 @@ std::string glue_source(const UnitSettings& s) {
 
 std::string build_unit_binary(const UnitSources& sources, const std::string& compiler,
                               const std::function<void(const std::string&)>& progress) {
-    const FmuToolchain tools = fmu_toolchain();
+    FmuToolchain tools = fmu_toolchain();
+    if (sources.blade_elements) {
+        if (tools.aerodyn_archives.empty())
+            throw diag::UserError("yamsc fmu: this yamsc has no AeroDyn reader to link into a "
+                                  "unit with blade elements (libyamsc_aerodyn_input.a and the "
+                                  "libraries it needs, installed under lib/yamsc/fmu/)");
+        // Before the runtime's: the reader calls it.
+        tools.hidden_archives.insert(tools.hidden_archives.begin(), tools.aerodyn_archives.begin(),
+                                     tools.aerodyn_archives.end());
+    }
     // Cached by content, as the JIT's libraries (jit_cache.hpp): the FMI 3.0 and
     // 2.0 units of a model share their binary, and a rebuild repackages at once.
     std::string key = sources.model.source + sources.model.header + sources.glue +

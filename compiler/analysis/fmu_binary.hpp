@@ -40,6 +40,7 @@ struct UnitSources {
     std::string glue;
     std::string external;            // the user's C or C++ source (a path), or ""
     std::string external_prototypes; // what it is compiled against
+    bool blade_elements = false;     // links the AeroDyn reader (yamsc/fmi/blade_elements.hpp)
 };
 
 /// Compiles the unit into the bytes of its shared library. `compiler`: as the

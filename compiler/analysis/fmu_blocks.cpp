@@ -1,9 +1,15 @@
 #include "analysis/fmu_blocks.hpp"
 
+#include "aerodyn_input/rotor.hpp"
+#include "analysis/load_block_kinds.hpp"
+
 #include "diag/errors.hpp"
 #include "model/load_kinds.hpp"
 
 #include <algorithm>
+#include <filesystem>
+
+#include <yamsc/fmi/blade_elements.hpp>
 
 namespace yamsc::analysis {
 
@@ -14,7 +20,10 @@ std::string literal(const std::string& s) {
     std::string out = "\"";
     for (char c : s) {
         if (c == '"' || c == '\\') out += '\\';
-        out += c;
+        if (c == '\n')
+            out += "\\n";
+        else
+            out += c;
     }
     return out + "\"";
 }
@@ -45,25 +54,69 @@ std::string rotor_table(const model::LoadBlock& d, const std::vector<std::string
            ";\n            plan.rotor_tables.push_back(r);\n        }\n";
 }
 
+/// The AeroDyn files under resources/aerodyn/, at their paths relative to
+/// the deepest folder that holds them all.
+void aerodyn_resources(const std::string& primary, int blades, UnitBlocks& u) {
+    namespace fs = std::filesystem;
+    diag::Diagnostics diags;
+    const std::vector<std::string> files = aerodyn_input::aerodyn_files(primary, blades, diags);
+    if (files.empty() || diags.has_errors()) throw diag::UserError(diags.render());
+    std::vector<fs::path> paths;
+    for (const std::string& f : files) paths.push_back(fs::absolute(f).lexically_normal());
+    fs::path common = paths.front().parent_path();
+    for (const fs::path& p : paths)
+        while (!p.lexically_relative(common).empty() &&
+               *p.lexically_relative(common).begin() == "..")
+            common = common.parent_path();
+    for (std::size_t k = 0; k < files.size(); ++k) {
+        u.files.push_back(files[k]);
+        u.names.push_back("aerodyn/" + paths[k].lexically_relative(common).generic_string());
+    }
+}
+
+std::string blade_elements(const model::LoadBlock& d, const model::Model& m,
+                           const runtime::ModelView& base, const BlockOptions& b, UnitBlocks& u) {
+    if (!u.files.empty())
+        throw diag::UsageError("yamsc fmu: a unit carries one `load blade_elements` block; '" +
+                               d.name + "' is another");
+    fmi::BladeElementsPlan plan;
+    plan.setup = blade_element_channels(d, m, base, b);
+    plan.inflow_angle_tolerance = b.inflow_angle_tolerance;
+    aerodyn_resources(b.aero, static_cast<int>(plan.setup.channels.blades.size()), u);
+    plan.aerodyn = u.names.front();
+    u.blade_elements = true;
+    return literal(fmi::blade_elements_plan_text(plan));
+}
+
 } // namespace
 
-std::string block_plan_source(const model::Model& m, const std::vector<std::string>& param_names,
-                              const BlockOptions& b,
-                              const std::vector<std::string>& resource_names) {
-    if (b.aero.empty()) return "";
-    std::string blocks;
+UnitBlocks unit_blocks(const model::Model& m, const runtime::ModelView& base,
+                       const std::vector<std::string>& param_names, const BlockOptions& b) {
+    UnitBlocks u;
+    if (b.aero.empty()) return u;
+    std::string tables, plans;
+    bool rotor_tables = false;
     for (const model::LoadBlock& d : m.loads) {
         if (d.kind == model::LoadKind::blade_elements)
-            throw diag::UsageError(
-                "yamsc fmu: the blade elements of 'load blade_elements " + d.name +
-                "' cannot be carried in a unit yet (their AeroDyn reader is the compiler's); "
-                "a `load rotor_table` block can");
-        if (d.kind == model::LoadKind::rotor_table)
-            blocks += rotor_table(d, param_names, resource_names.front());
+            plans += (plans.empty() ? "" : ", ") + blade_elements(d, m, base, b, u);
+        if (d.kind == model::LoadKind::rotor_table) rotor_tables = true;
     }
-    if (blocks.empty()) return "";
-    return "    {\n        ::yamsc::fmi::BlockPlan plan;\n" + blocks +
-           "        s.close_blocks = ::yamsc::fmi::block_hook(plan);\n    }\n";
+    if (!plans.empty() && rotor_tables)
+        throw diag::UsageError("yamsc fmu: --aero is an AeroDyn file for the blade elements; "
+                               "a unit does not also carry the model's rotor tables");
+    if (!plans.empty()) {
+        u.source = "    s.close_blocks = ::yamsc::fmi::blade_elements_hook({" + plans + "});\n";
+        return u;
+    }
+    u.files = {b.aero};
+    u.names = {std::filesystem::path(b.aero).filename().string()};
+    for (const model::LoadBlock& d : m.loads)
+        if (d.kind == model::LoadKind::rotor_table)
+            tables += rotor_table(d, param_names, u.names.front());
+    if (!tables.empty())
+        u.source = "    {\n        ::yamsc::fmi::BlockPlan plan;\n" + tables +
+                   "        s.close_blocks = ::yamsc::fmi::block_hook(plan);\n    }\n";
+    return u;
 }
 
 } // namespace yamsc::analysis

@@ -11,12 +11,23 @@
 
 namespace yamsc::analysis {
 
-/// C++ statements, in the glue's settings function, that set `s.close_blocks`
-/// for the blocks `b` supplies ("" when none). `resource_names`: each block
-/// file's name under resources/ (block_files(b)'s order). Throws
-/// diag::UsageError for a kind a unit cannot carry yet (blade elements).
-std::string block_plan_source(const model::Model& m, const std::vector<std::string>& param_names,
-                              const BlockOptions& b,
-                              const std::vector<std::string>& resource_names);
+/// What a unit carries for its blocks.
+struct UnitBlocks {
+    /// C++ statements, in the glue's settings function, that set `s.close_blocks`
+    /// ("" without blocks).
+    std::string source;
+    /// The data files to copy, and their names under resources/ (same order).
+    std::vector<std::string> files, names;
+    bool blade_elements = false; // the unit links the AeroDyn reader
+};
+
+/// The blocks `b` supplies for the model `m` (its base view `base`, the one
+/// the unit's hook closes them around; `param_names`: its parameters). Rotor
+/// tables: each table file by its name. Blade elements: the AeroDyn primary
+/// file and every file it reads, under resources/aerodyn/ at their paths
+/// relative to the folder that holds them all (so the primary file's relative
+/// names still resolve), and the plan (yamsc/fmi/blade_elements.hpp) as text.
+UnitBlocks unit_blocks(const model::Model& m, const runtime::ModelView& base,
+                       const std::vector<std::string>& param_names, const BlockOptions& b);
 
 } // namespace yamsc::analysis

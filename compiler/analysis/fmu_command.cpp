@@ -51,11 +51,6 @@ std::string token_of(const std::string& content) {
            hex.substr(16, 4) + "-" + hex.substr(20, 12) + "}";
 }
 
-std::string base_name(const std::string& path) {
-    const auto slash = path.find_last_of('/');
-    return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-
 runtime::Method runtime_method(driver::SimMethod m) {
     return m == driver::SimMethod::cvode  ? runtime::Method::cvode
            : m == driver::SimMethod::abm4 ? runtime::Method::abm4
@@ -198,15 +193,8 @@ int fmu(const FmuOptions& o, std::ostream& out, std::ostream& err) {
     settings.qd0 = qd0;
     settings.method = layout.method;
     settings.step = step;
-    // Each file once (two kinds of block read --aero's).
-    std::vector<std::string> resource_files, resource_names;
-    for (const NamedFile& f : block_files(blocks))
-        if (std::find(resource_files.begin(), resource_files.end(), f.path) ==
-            resource_files.end()) {
-            resource_files.push_back(f.path);
-            resource_names.push_back(base_name(f.path));
-        }
-    settings.blocks = block_plan_source(m, param_names, blocks, resource_names);
+    const UnitBlocks unit = unit_blocks(m, l->view, param_names, blocks);
+    settings.blocks = unit.source;
     // The token: the model, the parameters' starts and the settings.
     std::string identity = l->digest + "\n" + YAMSC_VERSION + "\n" + glue_source(settings);
     for (double p : l->params) identity += text::shortest(p) + "\n";
@@ -217,6 +205,7 @@ int fmu(const FmuOptions& o, std::ostream& out, std::ostream& err) {
     sources.glue = glue_source(settings);
     sources.external = o.external;
     sources.external_prototypes = driver::external_prototypes(m);
+    sources.blade_elements = unit.blade_elements;
     const std::string binary = build_unit_binary(sources, compiler_of(""), progress);
 
     DescriptionFacts facts;
@@ -227,6 +216,7 @@ int fmu(const FmuOptions& o, std::ostream& out, std::ostream& err) {
     facts.generation_tool = std::string("yamsc ") + YAMSC_VERSION;
     facts.step = step;
     facts.variables = vars;
+    facts.block_states = static_cast<bool>(view.update_discrete);
 
     std::vector<ZipEntry> entries;
     entries.push_back({"modelDescription.xml", model_description(facts)});
@@ -236,8 +226,19 @@ int fmu(const FmuOptions& o, std::ostream& out, std::ostream& err) {
     entries.push_back({"documentation/", ""});
     entries.push_back({"documentation/index.html", documentation(m, vars)});
     entries.push_back({"resources/", ""});
-    for (std::size_t k = 0; k < resource_files.size(); ++k)
-        entries.push_back({"resources/" + resource_names[k], file_bytes(resource_files[k])});
+    std::vector<std::string> folders{"resources/"};
+    for (std::size_t k = 0; k < unit.files.size(); ++k) {
+        const std::string name = "resources/" + unit.names[k];
+        // Each folder's entry before its first file, as a zip tool writes them.
+        for (auto slash = name.find('/', 10); slash != std::string::npos;
+             slash = name.find('/', slash + 1))
+            if (std::find(folders.begin(), folders.end(), name.substr(0, slash + 1)) ==
+                folders.end()) {
+                folders.push_back(name.substr(0, slash + 1));
+                entries.push_back({folders.back(), ""});
+            }
+        entries.push_back({name, file_bytes(unit.files[k])});
+    }
     const std::string archive = zip_stored(entries);
     std::vector<std::pair<std::string, std::string>> files{{o.output, archive}};
     if (!o.depfile.empty()) {
@@ -245,6 +246,9 @@ int fmu(const FmuOptions& o, std::ostream& out, std::ostream& err) {
         read.insert(read.end(), m.files_read.begin(), m.files_read.end());
         for (const NamedFile& f : inputs)
             if (!f.path.empty() && f.path != o.model) read.push_back(f.path);
+        // The AeroDyn files the primary file names, carried too.
+        for (const std::string& f : unit.files)
+            if (std::find(read.begin(), read.end(), f) == read.end()) read.push_back(f);
         files.emplace_back(o.depfile, driver::make_rule({o.output}, read));
     }
     runtime::write_files_atomically(files);

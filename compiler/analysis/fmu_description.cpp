@@ -175,12 +175,12 @@ std::string fmi3(const DescriptionFacts& f, const std::vector<std::string>& unit
                       attribute("generationTool", f.generation_tool) +
                       attribute("variableNamingConvention", "flat") + ">\n";
     out += "  <ModelExchange" + attribute("modelIdentifier", f.model_name) +
-           attribute("needsCompletedIntegratorStep", "false") +
-           attribute("canGetAndSetFMUState", "true") +
+           attribute("needsCompletedIntegratorStep", f.block_states ? "true" : "false") +
+           attribute("canGetAndSetFMUState", f.block_states ? "false" : "true") +
            attribute("providesDirectionalDerivatives", "true") + "/>\n";
     out += "  <CoSimulation" + attribute("modelIdentifier", f.model_name) +
            attribute("canHandleVariableCommunicationStepSize", "true") +
-           attribute("canGetAndSetFMUState", "true") +
+           attribute("canGetAndSetFMUState", f.block_states ? "false" : "true") +
            attribute("providesDirectionalDerivatives", "true") +
            (f.step > 0 ? attribute("fixedInternalStepSize", text::shortest(f.step)) : "") + "/>\n";
     out += units_and_experiment(units, f.step);
@@ -233,12 +233,12 @@ std::string fmi2(const DescriptionFacts& f, const std::vector<std::string>& unit
                       attribute("variableNamingConvention", "flat") +
                       attribute("numberOfEventIndicators", "0") + ">\n";
     out += "  <ModelExchange" + attribute("modelIdentifier", f.model_name) +
-           attribute("completedIntegratorStepNotNeeded", "true") +
-           attribute("canGetAndSetFMUstate", "true") +
+           attribute("completedIntegratorStepNotNeeded", f.block_states ? "false" : "true") +
+           attribute("canGetAndSetFMUstate", f.block_states ? "false" : "true") +
            attribute("providesDirectionalDerivative", "true") + "/>\n";
     out += "  <CoSimulation" + attribute("modelIdentifier", f.model_name) +
            attribute("canHandleVariableCommunicationStepSize", "true") +
-           attribute("canGetAndSetFMUstate", "true") +
+           attribute("canGetAndSetFMUstate", f.block_states ? "false" : "true") +
            attribute("providesDirectionalDerivative", "true") + "/>\n";
     out += units_and_experiment(units, f.step);
     out += "  <ModelVariables>\n";

@@ -23,6 +23,9 @@ struct DescriptionFacts {
     std::string generation_tool; // "yamsc 0.1.0"
     double step = 0;             // the co-simulation fixed step [s]; 0: not declared
     std::vector<fmi::Variable> variables;
+    /// Load blocks with discrete states (the unit cannot get and set its state;
+    /// model exchange advances them at CompletedIntegratorStep).
+    bool block_states = false;
 };
 
 /// The unit of a description that ends with one in brackets ("tip height [m]"

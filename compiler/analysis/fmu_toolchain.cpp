@@ -28,6 +28,7 @@ struct Layout {
     std::vector<std::string> includes;
     std::string fmi, runtime, files; // the archives
     std::string exports;
+    std::vector<std::string> aerodyn; // the blade elements' (FmuToolchain::aerodyn_archives)
 };
 
 Layout installed_under(const std::string& libdir, const std::string& includedir,
@@ -36,7 +37,11 @@ Layout installed_under(const std::string& libdir, const std::string& includedir,
             libdir + "/libyamsc_fmi.a",
             libdir + "/libyamsc_runtime.a",
             libdir + "/libyamsc_files.a",
-            datadir + "/yamsc/fmi/exports.map"};
+            datadir + "/yamsc/fmi/exports.map",
+            {libdir + "/yamsc/fmu/libyamsc_aerodyn_input.a",
+             libdir + "/yamsc/fmu/libyamsc_formats_aerodyn.a",
+             libdir + "/yamsc/fmu/libyamsc_formats_elastodyn.a",
+             libdir + "/yamsc/fmu/libyamsc_diag.a", libdir + "/yamsc/fmu/libyamsc_text.a"}};
 }
 
 Layout build_tree() {
@@ -44,6 +49,7 @@ Layout build_tree() {
     Layout l;
     l.includes = split(YAMSC_FMU_INCLUDES_BUILT);
     l.exports = YAMSC_FMU_EXPORTS_BUILT;
+    l.aerodyn = split(YAMSC_FMU_AERODYN_ARCHIVES_BUILT);
     if (archives.size() == 3) {
         l.fmi = archives[0];
         l.runtime = archives[1];
@@ -85,6 +91,9 @@ FmuToolchain fmu_toolchain() {
             t.include_dirs.push_back(dir);
         t.archives = {l.fmi};
         t.hidden_archives = {l.runtime, l.files};
+        for (const std::string& a : l.aerodyn)
+            if (::access(a.c_str(), R_OK) == 0) t.aerodyn_archives.push_back(a);
+        if (t.aerodyn_archives.size() != l.aerodyn.size()) t.aerodyn_archives.clear();
         t.link_flags = split(YAMSC_FMU_LINK_FLAGS);
         t.exports = l.exports;
         return t;

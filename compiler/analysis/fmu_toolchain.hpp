@@ -14,7 +14,11 @@ struct FmuToolchain {
     std::vector<std::string> include_dirs;    // yamsc's headers, then Eigen's
     std::vector<std::string> archives;        // linked whole: the FMI entry points
     std::vector<std::string> hidden_archives; // linked as needed, their symbols not exported
-    std::vector<std::string> link_flags;      // -L.. -lsundials_cvode .. -ldl
+    /// A unit with blade elements links these too, before the hidden ones: the
+    /// AeroDyn reader (libyamsc_aerodyn_input.a) and what it stands on; empty
+    /// where this yamsc has none (installed under LIBDIR/yamsc/fmu/).
+    std::vector<std::string> aerodyn_archives;
+    std::vector<std::string> link_flags; // -L.. -lsundials_cvode .. -ldl
     std::string
         exports; // the linker's version script: the FMI functions are the unit's only symbols
 };

@@ -5,6 +5,7 @@
 #include "analysis/load_blocks.hpp"
 #include "model/model.hpp"
 
+#include <yamsc/aero/blade_element_block.hpp>
 #include <yamsc/wind/wind_field.hpp>
 
 #include <memory>
@@ -29,6 +30,12 @@ double parameter(const BlockContext& c, const std::string& name);
 
 std::shared_ptr<const runtime::LoadBlock> build_rotor_table(const model::LoadBlock& decl,
                                                             const BlockContext& c);
+/// The blade elements of `decl` bound to the view `v` of `m`: the channels, the
+/// blades' and tower's body points, the output prefix and the options'
+/// derivative settings; no rotor (aerodyn_input::with_aerodyn_rotor reads it)
+/// and no wind field. `yamsc sim` and `yamsc fmu` (the unit's plan) both start here.
+aero::BladeElementSetup blade_element_channels(const model::LoadBlock& decl, const model::Model& m,
+                                               const runtime::ModelView& v, const BlockOptions& o);
 std::shared_ptr<const runtime::LoadBlock> build_blade_elements(const model::LoadBlock& decl,
                                                                const BlockContext& c);
 

@@ -3,7 +3,7 @@
 // (ElastoDyn's geometry, AeroDyn's blades and airfoils), as NREL's tools make
 // it with AeroDyn (yamsc/aero/rotor_table.hpp).
 #include "analysis/rotor_table_bem.hpp"
-#include "analysis/aerodyn_rotor.hpp"
+#include "aerodyn_input/rotor.hpp"
 #include "analysis/commands.hpp"
 #include "driver/outputs.hpp"
 
@@ -36,7 +36,7 @@ int rotor_table_from_deck(const driver::RotorTableOptions& o, std::ostream& out,
     const auto aero_file = deck->module_files.find("AeroFile");
     if (aero_file == deck->module_files.end())
         throw diag::UserError(o.table + ": the deck names no AeroFile");
-    const auto rotor = read_aerodyn_rotor(aero_file->second, deck->blades, diags);
+    const auto rotor = aerodyn_input::read_aerodyn_rotor(aero_file->second, deck->blades, diags);
     if (!rotor) throw diag::UserError(diags.render());
     if (!diags.all().empty()) err << diags.render();
 

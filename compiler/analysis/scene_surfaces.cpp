@@ -1,6 +1,6 @@
 #include "analysis/scene_surfaces.hpp"
 
-#include "analysis/aerodyn_rotor.hpp"
+#include "aerodyn_input/rotor.hpp"
 #include "diag/errors.hpp"
 #include "model/load_kinds.hpp"
 
@@ -17,7 +17,7 @@ std::vector<BodySurface> scene_surfaces(const model::Model& m, const std::string
             if (!decl.role(r).empty()) blades.push_back(r);
         diag::Diagnostics diags;
         const std::optional<aero::RotorInput> rotor =
-            read_aerodyn_rotor(aero, static_cast<int>(blades.size()), diags);
+            aerodyn_input::read_aerodyn_rotor(aero, static_cast<int>(blades.size()), diags);
         if (!rotor || diags.has_errors()) throw diag::UserError(diags.render());
         for (std::size_t k = 0; k < blades.size() && k < rotor->blades.size(); ++k) {
             BodySurface s;

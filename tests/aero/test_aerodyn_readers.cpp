@@ -1,12 +1,12 @@
 // AeroDyn's input files (formats/aerodyn) and their conversion to the rotor's plain
-// data (analysis/aerodyn_rotor.hpp): the NREL 5-MW deck's numbers, the older
+// data (aerodyn_input/rotor.hpp): the NREL 5-MW deck's numbers, the older
 // OpenFAST v3 entries, the unsteady constants AirfoilInfo computes, and damaged
 // files reported at their line.
 #include "aerodyn/airfoil_file.hpp"
 #include "aerodyn/blade_file.hpp"
 #include "aerodyn/primary_file.hpp"
-#include "analysis/aerodyn_airfoil.hpp"
-#include "analysis/aerodyn_rotor.hpp"
+#include "aerodyn_input/airfoil.hpp"
+#include "aerodyn_input/rotor.hpp"
 #include "diag/read_text.hpp"
 #include "yamsc/aero/polar.hpp"
 
@@ -106,7 +106,7 @@ std::optional<aero::RotorInput> rotor_of(const std::string& primary_text, diag::
                                          int blades = 3) {
     auto file = aerodyn::read_primary_file(in_deck("edited.dat", primary_text), blades, diags);
     if (!file) return std::nullopt;
-    return analysis::to_rotor_input(*file, blades, diags);
+    return aerodyn_input::to_rotor_input(*file, blades, diags);
 }
 
 aerodyn::AirfoilColumns deck_columns() {
@@ -117,7 +117,7 @@ aerodyn::AirfoilColumns deck_columns() {
 
 TEST_CASE("the NREL 5-MW deck's AeroDyn files as the rotor's data") {
     diag::Diagnostics diags;
-    auto rotor = analysis::read_aerodyn_rotor(deck + primary_name, 3, diags);
+    auto rotor = aerodyn_input::read_aerodyn_rotor(deck + primary_name, 3, diags);
     INFO(diags.render());
     REQUIRE(rotor);
     CHECK(!diags.has_errors());
@@ -332,7 +332,7 @@ TEST_CASE("unsteady constants computed as AirfoilInfo computes them") {
         t.cm.push_back(-0.1 * std::sin(a));
     }
     for (auto model : {aero::UnsteadyModel::minnema_pierce, aero::UnsteadyModel::oye}) {
-        const aero::UnsteadyConstants k = analysis::unsteady_constants(t, {}, model);
+        const aero::UnsteadyConstants k = aerodyn_input::unsteady_constants(t, {}, model);
         CHECK(k.Cd0 == 0.01);                                       // the least drag, at 0 deg
         CHECK(k.C_lalpha == doctest::Approx(2 * pi).epsilon(1e-9)); // exact on linear rows
         // From the Cn line (Cn = Cl cos(alpha) + ...): near alpha0 and 2 pi.
@@ -372,7 +372,7 @@ TEST_CASE("unsteady constants computed as AirfoilInfo computes them") {
     given.C_nalpha = 6;
     given.UACutout = 30;
     const aero::UnsteadyConstants k =
-        analysis::unsteady_constants(t, given, aero::UnsteadyModel::minnema_pierce);
+        aerodyn_input::unsteady_constants(t, given, aero::UnsteadyModel::minnema_pierce);
     CHECK(k.alpha0 == doctest::Approx(-3 * deg).epsilon(1e-15));
     CHECK(k.C_nalpha == 6);
     CHECK(k.UACutout == doctest::Approx(30 * deg).epsilon(1e-15));
@@ -390,12 +390,12 @@ TEST_CASE("DU25's computed constants and separation function against OpenFAST's 
     REQUIRE(source);
     auto file = aerodyn::read_airfoil_file(source, deck_columns(), diags);
     REQUIRE(file);
-    const aero::Airfoil airfoil = analysis::to_airfoil(*file, aero::UnsteadyModel::oye);
+    const aero::Airfoil airfoil = aerodyn_input::to_airfoil(*file, aero::UnsteadyModel::oye);
     const aero::PolarTable& t = airfoil.tables.at(0);
     REQUIRE(t.unsteady);
     aero::UnsteadyConstants k = *t.unsteady;
-    const analysis::SeparationFunction s =
-        analysis::separation_function(t, k, aero::UnsteadyModel::oye);
+    const aerodyn_input::SeparationFunction s =
+        aerodyn_input::separation_function(t, k, aero::UnsteadyModel::oye);
     auto interp = [&](double a, const std::vector<double>& v) {
         const std::size_t i = static_cast<std::size_t>(
             std::upper_bound(t.alpha.begin(), t.alpha.end(), a) - t.alpha.begin() - 1);

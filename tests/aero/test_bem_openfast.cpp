@@ -3,7 +3,7 @@
 // cases.txt: RtFldCp and RtFldCt within 0.5 %, the nine output nodes' angle of
 // attack within 0.1 deg, their Fx and Fy within 1 % of the blade's largest, at
 // azimuths over a revolution.
-#include "analysis/aerodyn_rotor.hpp"
+#include "aerodyn_input/rotor.hpp"
 #include "analysis/commands.hpp"
 #include "driver/commands.hpp"
 #include "reference_cases.hpp"
@@ -54,7 +54,7 @@ std::vector<Row> read_csv(const std::string& path) {
 const aero::RotorInput& nrel5mw() {
     static const aero::RotorInput input = [] {
         diag::Diagnostics diags;
-        const auto rotor = analysis::read_aerodyn_rotor(
+        const auto rotor = aerodyn_input::read_aerodyn_rotor(
             data_dir + "operating/deck/NRELOffshrBsline5MW_Onshore_AeroDyn15.dat", 3, diags);
         REQUIRE_MESSAGE(rotor, diags.render());
         return *rotor;
@@ -73,7 +73,8 @@ struct Worst {
 aero::RotorInput rotor_of(const reference_cases::Case& c) {
     const std::string deck = reference_cases::deck("bem_openfast_" + c.name(), c.settings);
     diag::Diagnostics diags;
-    const auto rotor = analysis::read_aerodyn_rotor(deck + reference_cases::aerodyn_file, 3, diags);
+    const auto rotor =
+        aerodyn_input::read_aerodyn_rotor(deck + reference_cases::aerodyn_file, 3, diags);
     REQUIRE_MESSAGE(rotor, diags.render());
     return *rotor;
 }

@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/aerodyn_rotor.hpp"
+#include "aerodyn_input/rotor.hpp"
 #include "analysis/compare.hpp"
 #include "reference_cases.hpp"
 #include "run_error.hpp"
@@ -159,7 +159,8 @@ void compare(const reference_cases::Case& c) {
     CAPTURE(c.file);
     const std::string deck = reference_cases::deck("dbemt_openfast_" + c.name(), c.settings);
     diag::Diagnostics diags;
-    const auto input = analysis::read_aerodyn_rotor(deck + reference_cases::aerodyn_file, 3, diags);
+    const auto input =
+        aerodyn_input::read_aerodyn_rotor(deck + reference_cases::aerodyn_file, 3, diags);
     REQUIRE_MESSAGE(input.has_value(), diags.render());
     REQUIRE(int(input->dynamic_inflow) == int(c.number("DBEMT_Mod", 2)));
     const analysis::Table ref = analysis::read_table(c.path());

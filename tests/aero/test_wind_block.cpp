@@ -5,7 +5,7 @@
 // sheared (PLexp 0.2) yawed wind against the rigid rotor of bem_rotor.hpp fed
 // the same field at every node: RtFldCp and RtFldCt within 0.5 %, the nodes'
 // angle of attack within 0.1 deg, their Fx and Fy within 1 % of the largest.
-#include "analysis/aerodyn_rotor.hpp"
+#include "aerodyn_input/rotor.hpp"
 #include "analysis/commands.hpp"
 #include "rigid_deck.hpp"
 
@@ -89,7 +89,7 @@ TEST_CASE("wind: the rigid rotor's blade elements in wind from 20 deg match Open
 TEST_CASE("wind: in sheared, yawed wind the blade elements see the field at each node") {
     const Table y = run_in("shear", "20", "0.2");
     yamsc::diag::Diagnostics diags;
-    const auto rotor = yamsc::analysis::read_aerodyn_rotor(deck().aerodyn, 3, diags);
+    const auto rotor = yamsc::aerodyn_input::read_aerodyn_rotor(deck().aerodyn, 3, diags);
     REQUIRE_MESSAGE(rotor, diags.render());
     const yamsc::runtime::WindInput wind =
         yamsc::runtime::open_wind(work_dir() + "/shear_InflowWind.dat");

@@ -2,7 +2,7 @@
 // OpenFAST's unsteady-aerodynamics driver runs (data/reference/aero/ua*_DU25_*): the
 // driver's prescribed motion (SimMod 1), its output channels, and the DU25 airfoil.
 #include "aerodyn/airfoil_file.hpp"
-#include "analysis/aerodyn_airfoil.hpp"
+#include "aerodyn_input/airfoil.hpp"
 #include "diag/read_text.hpp"
 #include "yamsc/aero/airfoil.hpp"
 #include "yamsc/aero/unsteady_airfoil.hpp"
@@ -139,7 +139,7 @@ inline yamsc::aero::Airfoil read_airfoil(const std::string& path,
     if (!text) throw std::runtime_error("cannot open " + path);
     const auto file = yamsc::aerodyn::read_airfoil_file(text, {}, diags);
     if (!file) throw std::runtime_error("cannot read " + path);
-    return yamsc::analysis::to_airfoil(*file, model);
+    return yamsc::aerodyn_input::to_airfoil(*file, model);
 }
 
 inline std::string data(const std::string& relative) {

@@ -254,6 +254,39 @@ if not WANTED or "turbine_16dof" in WANTED:
     run("from-openfast", deck, "-o", model)
     # The FMI 2.0 unit reuses the 3.0 unit's binary from the cache (a minute's compile).
     case("turbine_16dof", model, [], [], 1.0, 0.01, {}, extra=False)
+if not WANTED or "blade_elements" in WANTED:
+    # AeroDyn's BEM on the flexible blades (`load blade_elements`): the 16-DOF
+    # model of the operating deck with --aero its AeroDyn file, the blade and
+    # airfoil files carried under resources/aerodyn/; the unsteady airfoils
+    # (UA_Mod 3) are discrete states the unit advances after each step, as sim;
+    # model exchange advances them at CompletedIntegratorStep (the host RK4 there).
+    deck = os.path.join(SOURCE, "tests/data/reference/operating/deck")
+    model = os.path.join(WORK, "operating_16dof.mbd")
+    run("from-openfast", os.path.join(deck, "NREL-5MW.fst"), "-o", model)
+    aerodyn = os.path.join(deck, "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat")
+    # Eight steps of the deck's 6.25 ms: the test's time is the unit's compile.
+    case("blade_elements", model, ["--aero", aerodyn, "--wind", "12"], ["--aero", aerodyn],
+         0.05, 0.00625, {"V_wind": 12.0}, versions=("3",), extra=False)
+    if os.path.exists(os.path.join(WORK, "blade_elements_fmi3.fmu")):
+        unit = fmi_host.Unit(os.path.join(WORK, "blade_elements_fmi3.fmu"),
+                             os.path.join(WORK, "blade_elements_state"))
+        names = [n for n in os.listdir(os.path.join(unit.resources, "aerodyn"))]
+        check("blade_elements: the AeroDyn, blade and airfoil files under resources/aerodyn/",
+              "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat" in names and "Airfoils" in names and
+              len(os.listdir(os.path.join(unit.resources, "aerodyn", "Airfoils"))) >= 8,
+              str(names))
+        xml = open(os.path.join(unit.folder, "modelDescription.xml")).read()
+        check("blade_elements: canGetAndSetFMUState false (the airfoils' discrete states)",
+              xml.count('canGetAndSetFMUState="false"') == 2)
+        inst = fmi_host.Instance(unit, cs=True)
+        inst.initialize({unit.description.by_name["V_wind"].vr: 12.0})
+        try:
+            inst.get_state()
+            refused = False
+        except fmi_host.FmiError:
+            refused = True
+        check("blade_elements: GetFMUState refused", refused)
+        inst.close()
 
 if failures:
     print("%d check(s) failed" % len(failures))

@@ -6,7 +6,7 @@
 // exception; a rejected file reports an error; an accepted one has tables of
 // rising angles with a value in every column.
 #include "aerodyn/airfoil_file.hpp"
-#include "analysis/aerodyn_airfoil.hpp"
+#include "aerodyn_input/airfoil.hpp"
 
 #include <cstdint>
 #include <cstdlib>
@@ -33,11 +33,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             if (!(t.alpha[i] > t.alpha[i - 1])) std::abort();
     }
     for (auto model : {aero::UnsteadyModel::minnema_pierce, aero::UnsteadyModel::oye}) {
-        const aero::Airfoil converted = analysis::to_airfoil(*airfoil, model);
+        const aero::Airfoil converted = aerodyn_input::to_airfoil(*airfoil, model);
         for (const auto& t : converted.tables)
             if (t.unsteady) {
                 aero::UnsteadyConstants k = *t.unsteady;
-                const auto s = analysis::separation_function(t, k, model);
+                const auto s = aerodyn_input::separation_function(t, k, model);
                 if (s.f.size() != t.alpha.size()) std::abort();
             }
     }

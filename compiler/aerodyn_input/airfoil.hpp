@@ -16,7 +16,7 @@
 
 #include <vector>
 
-namespace yamsc::analysis {
+namespace yamsc::aerodyn_input {
 
 /// The static separation function of a table, as AirfoilInfo tabulates it beside
 /// the polar for the unsteady models: f (0 .. 1) and the normal-force (or, for
@@ -45,4 +45,4 @@ SeparationFunction separation_function(const aero::PolarTable& table, aero::Unst
 /// The airfoil of a file: every table, angles in radians, unsteady constants filled.
 aero::Airfoil to_airfoil(const aerodyn::AirfoilFile& file, aero::UnsteadyModel model);
 
-} // namespace yamsc::analysis
+} // namespace yamsc::aerodyn_input

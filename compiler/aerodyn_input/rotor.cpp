@@ -1,14 +1,14 @@
-#include "analysis/aerodyn_rotor.hpp"
+#include "aerodyn_input/rotor.hpp"
 
 #include "aerodyn/airfoil_file.hpp"
 #include "aerodyn/blade_file.hpp"
-#include "analysis/aerodyn_airfoil.hpp"
+#include "aerodyn_input/airfoil.hpp"
 #include "diag/read_text.hpp"
 
 #include <cmath>
 #include <map>
 
-namespace yamsc::analysis {
+namespace yamsc::aerodyn_input {
 
 using diag::Kind;
 
@@ -202,4 +202,4 @@ std::optional<aero::RotorInput> read_aerodyn_rotor(const std::filesystem::path& 
     return to_rotor_input(*file, num_blades, diags, defaults);
 }
 
-} // namespace yamsc::analysis
+} // namespace yamsc::aerodyn_input

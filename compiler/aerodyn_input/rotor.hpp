@@ -4,15 +4,17 @@
 // enum, file names relative to the primary file's folder (as AeroDyn resolves them),
 // the blade files' BlCrvAng computed where AeroDyn computes it, and the unsteady
 // constants the airfoil files leave to AeroDyn computed as AirfoilInfo computes them
-// (analysis/aerodyn_airfoil.hpp).
+// (aerodyn_input/airfoil.hpp).
 #include "aerodyn/primary_file.hpp"
 #include "diag/diagnostics.hpp"
 #include "yamsc/aero/rotor_input.hpp"
 
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
-namespace yamsc::analysis {
+namespace yamsc::aerodyn_input {
 
 /// What AeroDyn takes from the glue code when the primary file says "default"
 /// (OpenFAST's AirDens, KinVisc, SpdSound of the .fst).
@@ -30,9 +32,16 @@ std::optional<aero::RotorInput> read_aerodyn_rotor(const std::filesystem::path& 
                                                    int num_blades, diag::Diagnostics& diags,
                                                    const AeroDynDefaults& defaults = {});
 
+/// Every file the rotor of `primary` is read from, as AeroDyn resolves their
+/// names: the primary file first, then its '@' includes, the blade files, the
+/// airfoil files and theirs, each once (what a unit carries under resources/).
+/// Empty after an error (in `diags`).
+std::vector<std::string> aerodyn_files(const std::filesystem::path& primary, int num_blades,
+                                       diag::Diagnostics& diags);
+
 /// The conversion alone, from a primary file already read.
 std::optional<aero::RotorInput> to_rotor_input(const aerodyn::PrimaryFile& primary, int num_blades,
                                                diag::Diagnostics& diags,
                                                const AeroDynDefaults& defaults = {});
 
-} // namespace yamsc::analysis
+} // namespace yamsc::aerodyn_input

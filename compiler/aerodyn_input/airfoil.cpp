@@ -2,13 +2,13 @@
 // AeroDyn's AirfoilInfo computes them (CalculateUACoeffs and the routines it calls).
 // Indices below are 1-based, as in AirfoilInfo, so that each step can be compared
 // with it; at(v, i) reads v[i - 1].
-#include "analysis/aerodyn_airfoil.hpp"
+#include "aerodyn_input/airfoil.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 
-namespace yamsc::analysis {
+namespace yamsc::aerodyn_input {
 
 namespace {
 
@@ -553,4 +553,4 @@ aero::Airfoil to_airfoil(const aerodyn::AirfoilFile& file, aero::UnsteadyModel m
     return out;
 }
 
-} // namespace yamsc::analysis
+} // namespace yamsc::aerodyn_input
