@@ -37,15 +37,17 @@ Command fmu_command() {
         "fmu", "package a model as an FMI 3.0 or 2.0 unit (model exchange and co-simulation)",
         R"(yamsc fmu MODEL.mbd -o model.fmu [--fmi-version 3|2] [--method rk4|abm4|cvode]
                     [--step DT] [--set name=v,..] [--external file.c|file.cpp]
-                    [--aero Cp_Ct_Cq.txt] [--depfile FILE] [-v])",
+                    [--aero Cp_Ct_Cq.txt|AeroDyn15.dat] [--depfile FILE] [-v])",
         R"(  -o FILE             the unit (a ZIP file, conventionally .fmu) (required)
   --fmi-version V     3 (default) or 2: the standard modelDescription.xml follows
   --method M          the co-simulation step's integrator: rk4 (default), abm4 or cvode
   --step DT           its fixed internal step [s] (default 0.001)
   --set name=v,..     the parameters' start values (accept `deg`)
   --external SRC      the model's external functions, a C or C++ source compiled in
-  --aero FILE         the Cp/Ct/Cq table of the model's `load rotor_table` (as for sim),
-                      carried under resources/ (the wind is then the unit's input)
+  --aero FILE         the rotor's data, as for sim: the Cp/Ct/Cq table of a `load
+                      rotor_table`, or the AeroDyn primary file of a `load blade_elements`
+                      (with its blade and airfoil files), carried under resources/
+                      (the wind is then the unit's input)
   --depfile FILE      a make rule: the unit depends on the model and every file it read
   -v                  progress on stderr
 Details: docs/cli.md, docs/packaging.md, docs/fmi.md.
