@@ -12,6 +12,7 @@ turbine_scene.py PVPYTHON REFERENCE_FOLDER OUT_DIR (YAMSC in the environment)
 import os
 import shutil
 import subprocess
+import time
 import sys
 
 pvpython, deck, out = sys.argv[1:4]
@@ -38,7 +39,18 @@ command = [pvpython, "--force-offscreen-rendering", script,
            os.path.join(out, "run", pvd[0]), os.path.join(out, "turbine.png")]
 if not os.environ.get("DISPLAY") and shutil.which("xvfb-run"):
     command = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24"] + command
-run(command)
+    # `xvfb-run -a` takes the first free display number; two runs starting at
+    # once (two builds' suites on one machine) can both take it, and the one
+    # that loses sees "bad X server connection". Such a start is tried again.
+    for attempt in range(3):
+        r = subprocess.run(command, capture_output=True, text=True)
+        if r.returncode == 0 or "bad X server connection" not in r.stdout + r.stderr:
+            break
+        time.sleep(1 + attempt)
+    print(r.stdout + r.stderr)
+    assert r.returncode == 0, " ".join(command)
+else:
+    run(command)
 
 # The operating deck: surfaces from its AeroDyn files.
 import numpy as np  # noqa: E402
