@@ -68,6 +68,20 @@ public:
     /// Forgets its discrete states, as at the start of a run (trim settles them
     /// at its point from there).
     virtual void reset_discrete_states() const {}
+
+    /// Whether its loads also depend on the model's accelerations, linearly (a
+    /// fluid's added mass): then the loads applied are evaluate()'s minus
+    /// A (G^T q''), where G (nq x nl) is how the model applies the block's loads
+    /// (dF/d(load inputs): for a force and moment at a body's origin in body
+    /// axes, G^T q'' is that origin's acceleration and the body's angular
+    /// acceleration in body axes, without the terms in the rates). close_blocks()
+    /// solves for them with the structure, as OpenFAST's glue code solves
+    /// ElastoDyn's and HydroDyn's inputs and outputs together: the closed view's
+    /// mass matrix is M + G A G^T, so `lin` sees the added mass.
+    virtual bool has_added_mass() const { return false; }
+    /// A (nl x nl, row-major) at time t, states z and read values r.
+    virtual void added_mass(double /*t*/, const double* /*z*/, const double* /*r*/,
+                            double* /*A*/) const {}
 };
 
 /// LoadBlock::derivatives' central differences of `block.evaluate`, each value
