@@ -559,3 +559,16 @@ TEST_CASE("errors that end the reading: a file of OpenFAST v3, a file cut short"
     REQUIRE(of(n->diags, Severity::warning).size() == 1);
     CHECK(of(n->diags, Severity::warning)[0].message.find("END") != std::string::npos);
 }
+
+TEST_CASE("the fuzz seeds are files the reader accepts (tables with rows; before v4.0)") {
+    const std::string seeds = std::string(YAMSC_SOURCE_DIR) + "/tests/fuzz/seeds/hydrodyn/";
+    for (const char* name : {"tables.dat", "before_v4.dat"}) {
+        CAPTURE(name);
+        diag::Diagnostics diags;
+        const auto in = hydrodyn::read_hydrodyn_input(std::filesystem::path(seeds + name), diags);
+        INFO(diags.render());
+        REQUIRE(in);
+        CHECK(of(diags, Severity::error).empty());
+        CHECK(in->members.size() == 3);
+    }
+}

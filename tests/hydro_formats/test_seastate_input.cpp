@@ -221,3 +221,17 @@ TEST_CASE("errors at their line and column, with the entry's name") {
         CHECK(e[0].message == "expected the entry 'WaveTp' here (this line holds 'WaveTq')");
     }
 }
+
+TEST_CASE("the fuzz seed is a file the reader accepts (v5, 1P30, an intrinsic seed)") {
+    diag::Diagnostics diags;
+    const auto in = seastate::read_seastate_input(
+        std::filesystem::path(std::string(YAMSC_SOURCE_DIR) +
+                              "/tests/fuzz/seeds/seastate/regular_v5.dat"),
+        diags);
+    INFO(diags.render());
+    REQUIRE(in);
+    CHECK(diags.all().empty());
+    CHECK(in->regular_user_phase);
+    CHECK(in->wave_phase_deg == 30);
+    CHECK(in->seed2 == -42);
+}
