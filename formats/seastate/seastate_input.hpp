@@ -5,6 +5,7 @@
 // constrained waves, current, MacCamy-Fuchs, output, then the OUTPUT CHANNELS up to
 // the END line. Values as written (SI units, angles in degrees). Bad input: located
 // errors and nullopt; options read but not modelled: warnings at their line.
+#include "aerodyn/lines.hpp"
 #include "diag/diagnostics.hpp"
 
 #include <filesystem>
@@ -48,6 +49,7 @@ struct Input {
     bool regular_user_phase = false;          // WaveMod "1P#"
     double wave_phase_deg = 0;                // the # of "1P#" [deg]
     Stretching stretching = Stretching::none; // WaveStMod
+    int wave_current_mod = 0;                 // WvCrntMod (OpenFAST v5; 0 before)
     double wave_tmax = 0, wave_dt = 0, wave_hs = 0, wave_tp = 0;
     std::optional<double> peak_shape;       // WavePkShp; nullopt: DEFAULT
     double low_cutoff = 0, high_cutoff = 0; // WvLowCOff, WvHiCOff [rad/s]
@@ -90,8 +92,10 @@ struct Input {
 
 /// Reads a SeaState input file (file:line:col errors; warnings for WaveMod 3..7,
 /// WaveDirMod 1, second-order waves, constrained waves, current, MacCamy-Fuchs).
-std::optional<Input> read_seastate_input(const std::shared_ptr<const diag::SourceFile>& file,
-                                         diag::Diagnostics& diags);
+/// Files an '@' line includes are read by `includes` (from the disk by default).
+std::optional<Input>
+read_seastate_input(const std::shared_ptr<const diag::SourceFile>& file, diag::Diagnostics& diags,
+                    const aerodyn::IncludeReader& includes = aerodyn::includes_from_disk());
 /// The same, from a path (an unreadable file is an `io` error).
 std::optional<Input> read_seastate_input(const std::filesystem::path& path,
                                          diag::Diagnostics& diags);
