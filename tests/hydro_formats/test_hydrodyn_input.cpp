@@ -572,3 +572,55 @@ TEST_CASE("the fuzz seeds are files the reader accepts (tables with rows; before
         CHECK(in->members.size() == 3);
     }
 }
+
+TEST_CASE("more located errors: a member on one joint, MDivSize, NBodyMod, a member-based row "
+          "for no member") {
+    const std::string strip = file_text("oc3_spar_strip.dat");
+    const std::string member3 =
+        "    3         3          4           2            2           1         0         0.5000";
+    {
+        const std::string t = replaced(strip, member3,
+                                       "    3         3          3           2            2        "
+                                       "   1         0         0.5000");
+        const auto r = read(t);
+        const auto e = of(r->diags, Severity::error);
+        REQUIRE(e.size() == 1);
+        CHECK(e[0].loc.line == line_of(t, "    3         3          3"));
+        CHECK(e[0].loc.col == 26);
+        CHECK(e[0].message == "member 3 joins joint 3 to itself");
+    }
+    {
+        const std::string t = replaced(strip, member3,
+                                       "    3         3          4           2            2        "
+                                       "   1         0         0.0000");
+        const auto r = read(t);
+        const auto e = of(r->diags, Severity::error);
+        REQUIRE(e.size() == 1);
+        CHECK(e[0].loc.line == line_of(t, "0.0000      1"));
+        CHECK(e[0].loc.col == col_of(t, "0.0000      1"));
+        CHECK(e[0].message == "members row 3: MDivSize must be positive");
+    }
+    {
+        const std::string t =
+            replaced(strip, "             1   NBodyMod", "             4   NBodyMod");
+        const auto r = read(t);
+        const auto e = of(r->diags, Severity::error);
+        REQUIRE(e.size() == 1);
+        CHECK(e[0].loc.line == line_of(t, "NBodyMod"));
+        CHECK(e[0].loc.col == 14);
+        CHECK(e[0].message == "'NBodyMod' must be 1, 2 or 3");
+    }
+    {
+        std::string t = replaced(strip, "0   NCoefMembersCyl", "1   NCoefMembersCyl");
+        t = replaced(t, "---------------------- MEMBER-BASED RECTANGULAR",
+                     "9  0.6 0.6 0.6 0.6 1 1 1 1 1 1 1 1 0 0 0 0 0 0 0 0 1 1 1 1 1 1 1 1\n"
+                     "---------------------- MEMBER-BASED RECTANGULAR");
+        const auto r = read(t);
+        const auto e = of(r->diags, Severity::error);
+        REQUIRE(e.size() == 1);
+        CHECK(e[0].loc.line == line_of(t, "9  0.6 0.6"));
+        CHECK(e[0].loc.col == 1);
+        CHECK(e[0].message ==
+              "member-based coefficients for member 9, which the file does not define");
+    }
+}
