@@ -86,6 +86,27 @@ private:
     int last_line_ = 0;
 };
 
+/// Where `key` was read among `entries` (any case), or `file` without a position.
+diag::Location entry_location(const std::vector<std::pair<std::string, diag::Location>>& entries,
+                              const std::shared_ptr<const diag::SourceFile>& file,
+                              const std::string& key);
+
+/// A file read whole by `Reader(cursor, input).read()`: the input, or nullopt after
+/// an error (the reader of each format is this with its own Input and Reader).
+template <class Input, class Reader>
+std::optional<Input> read_entries(const std::shared_ptr<const diag::SourceFile>& file,
+                                  diag::Diagnostics& diags,
+                                  const aerodyn::IncludeReader& includes) {
+    const int errors = diags.error_count();
+    aerodyn::Cursor c(aerodyn::logical_lines(file, &includes, diags), file, diags);
+    Input out;
+    out.path = file->path();
+    out.file = file;
+    Reader(c, out).read();
+    if (diags.error_count() != errors) return std::nullopt;
+    return out;
+}
+
 /// Whether a token reads as a Fortran LOGICAL (T, F, .TRUE., false, ...).
 std::optional<bool> parse_logical(std::string_view text);
 

@@ -567,14 +567,7 @@ private:
 std::optional<Input> read_hydrodyn_input(const std::shared_ptr<const diag::SourceFile>& file,
                                          diag::Diagnostics& diags,
                                          const aerodyn::IncludeReader& includes) {
-    const int errors = diags.error_count();
-    aerodyn::Cursor c(aerodyn::logical_lines(file, &includes, diags), file, diags);
-    Input out;
-    out.path = file->path();
-    out.file = file;
-    Reader(c, out).read();
-    if (diags.error_count() != errors) return std::nullopt;
-    return out;
+    return read_entries<Input, Reader>(file, diags, includes);
 }
 
 std::optional<Input> read_hydrodyn_input(const std::filesystem::path& path,

@@ -14,9 +14,7 @@ using diag::Kind;
 using hydrodyn::EntryReader;
 
 diag::Location Input::location(const std::string& key) const {
-    for (const auto& [name, at] : entries)
-        if (elastodyn::same_key(name, key)) return at;
-    return diag::Location{file, 0, 0};
+    return hydrodyn::entry_location(entries, file, key);
 }
 
 namespace {
@@ -241,14 +239,7 @@ private:
 std::optional<Input> read_seastate_input(const std::shared_ptr<const diag::SourceFile>& file,
                                          diag::Diagnostics& diags,
                                          const aerodyn::IncludeReader& includes) {
-    const int errors = diags.error_count();
-    aerodyn::Cursor c(aerodyn::logical_lines(file, &includes, diags), file, diags);
-    Input out;
-    out.path = file->path();
-    out.file = file;
-    Reader(c, out).read();
-    if (diags.error_count() != errors) return std::nullopt;
-    return out;
+    return hydrodyn::read_entries<Input, Reader>(file, diags, includes);
 }
 
 std::optional<Input> read_seastate_input(const std::filesystem::path& path,
