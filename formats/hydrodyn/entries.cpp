@@ -94,7 +94,7 @@ std::optional<Values> EntryReader::row(const std::string& what, std::size_t n, c
     }
     const aerodyn::Line* l = c_.next(what);
     if (!l) return std::nullopt;
-    last_line_ = l->number;
+    last_row_ = l;
     if (l->tokens.size() < n) {
         diags().error(Kind::MissingProperty, l->at(static_cast<int>(l->tokens.size())),
                       what + ": " + std::to_string(n) + " values expected, this line holds " +

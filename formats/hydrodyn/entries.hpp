@@ -47,8 +47,9 @@ public:
     /// The next line's first `n` tokens (section lines skipped before it), as ParseAry
     /// reads them; `key`, when it follows them, is remembered. An error names `what`.
     std::optional<Values> row(const std::string& what, std::size_t n, const char* key = nullptr);
-    /// The line of the last row() read.
-    int last_line() const { return last_line_; }
+    /// The line of the last row() read (its number, or itself: file and tokens).
+    int last_line() const { return last_row_ ? last_row_->number : 0; }
+    const aerodyn::Line* last_row() const { return last_row_; }
     /// The same, each token a number.
     std::optional<std::vector<double>> numbers(const std::string& what, std::size_t n,
                                                const char* key = nullptr);
@@ -83,7 +84,7 @@ private:
 
     aerodyn::Cursor& c_;
     std::vector<std::pair<std::string, diag::Location>>& where_;
-    int last_line_ = 0;
+    const aerodyn::Line* last_row_ = nullptr;
 };
 
 /// Where `key` was read among `entries` (any case), or `file` without a position.

@@ -4,6 +4,7 @@
 #include "hydrodyn/hydrodyn_input.hpp"
 #include "support.hpp"
 
+#include <fstream>
 #include <numeric>
 
 using namespace yamsc;
@@ -519,12 +520,12 @@ TEST_CASE("errors at their line and column, with the entry's name") {
               "PropPot (True or False) expected");
     check_one(replaced(strip, "    3         3          4           2",
                        "    2         3          4           2"),
-              S::error, "    2         3          4           2", "    2",
+              S::error, "    2         3          4           2", "    |2",
               "member 2 is defined twice (line " +
                   std::to_string(line_of(strip, "    2         2          3           1")) + ")");
     check_one(replaced(strip, "    4     0.00000     0.00000    10.00000      1",
                        "    4     0.00000     0.00000    10.00000      2"),
-              S::error, "    4     0.00000     0.00000    10.00000      2", "    4",
+              S::error, "    4     0.00000     0.00000    10.00000      2", "10.00000      |2",
               "names axial coefficients 2");
     check_one(replaced(strip, "       0.60        0.60    0.969954    0.969954        1.00 ",
                        "       0.60        0.60    0.969954    0.969954        MCF  "),
@@ -623,4 +624,33 @@ TEST_CASE("more located errors: a member on one joint, MDivSize, NBodyMod, a mem
         CHECK(e[0].message ==
               "member-based coefficients for member 9, which the file does not define");
     }
+}
+
+TEST_CASE("rows from a file an '@' line includes: read, and their errors located in it") {
+    const std::string dir = std::string(YAMSC_TEST_BINARY_DIR) + "/hydro_formats_include/";
+    std::filesystem::create_directories(dir);
+    std::string main = file_text("oc3_spar_strip.dat");
+    const std::string rows = "    1         1          2           1            1           1      "
+                             "   0         0.5000      1         1        FALSE\n"
+                             "    2         2          3           1            2           1      "
+                             "   0         0.5000      1         1        FALSE\n"
+                             "    3         3          7           2            2           1      "
+                             "   0         0.5000      1         1        FALSE\n";
+    const auto first = main.find("    1         1          2           1");
+    const auto last = main.find("---------------------- FILLED MEMBERS");
+    main.replace(first, last - first, "@members.inc\n");
+    {
+        std::ofstream(dir + "hd.dat") << main;
+        std::ofstream(dir + "members.inc") << rows;
+    }
+    diag::Diagnostics diags;
+    const auto in = hydrodyn::read_hydrodyn_input(std::filesystem::path(dir + "hd.dat"), diags);
+    CHECK(!in);
+    const auto e = of(diags, Severity::error);
+    REQUIRE(e.size() == 1);
+    REQUIRE(e[0].loc.file);
+    CHECK(e[0].loc.file->path() == dir + "members.inc");
+    CHECK(e[0].loc.line == 3);
+    CHECK(e[0].loc.col == 26);
+    CHECK(e[0].message == "member 3 names joint 7, which the file does not define");
 }
