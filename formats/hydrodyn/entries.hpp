@@ -6,6 +6,7 @@
 // CHANNELS list up to its END line. Every entry read is remembered with its place.
 #include "aerodyn/lines.hpp"
 
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <utility>
@@ -91,6 +92,19 @@ private:
 diag::Location entry_location(const std::vector<std::pair<std::string, diag::Location>>& entries,
                               const std::shared_ptr<const diag::SourceFile>& file,
                               const std::string& key);
+
+/// Runs the `sections` of `reader` in order; stops after one that reported an error, since
+/// the places of the next entries are then unsure (the first error is the one to fix).
+/// Returns whether all ran without error.
+template <class R>
+bool read_sections(R& reader, std::initializer_list<void (R::*)()> sections,
+                   const diag::Diagnostics& diags, int errors_before) {
+    for (auto section : sections) {
+        if (diags.error_count() != errors_before) return false;
+        (reader.*section)();
+    }
+    return diags.error_count() == errors_before;
+}
 
 /// A file read whole by `Reader(cursor, input).read()`: the input, or nullopt after
 /// an error (the reader of each format is this with its own Input and Reader).

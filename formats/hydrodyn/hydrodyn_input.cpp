@@ -34,17 +34,14 @@ public:
         r_.cursor().skip_header(2);
         r_.need("Echo");
         if (!platform()) return;
-        // After a section with an error the places of the next entries are unsure:
-        // the first error is the one to fix.
-        for (void (Reader::*section)() :
-             {&Reader::second_order, &Reader::additional_matrices, &Reader::strip_options,
-              &Reader::axial, &Reader::joints, &Reader::sections, &Reader::coefficients,
-              &Reader::members, &Reader::filled_members, &Reader::marine_growth,
-              &Reader::output_lists, &Reader::outputs}) {
-            if (d_.error_count() != errors_at_start_) return;
-            (this->*section)();
-        }
-        if (d_.error_count() == errors_at_start_) check_references();
+        if (read_sections(*this,
+                          {&Reader::second_order, &Reader::additional_matrices,
+                           &Reader::strip_options, &Reader::axial, &Reader::joints,
+                           &Reader::sections, &Reader::coefficients, &Reader::members,
+                           &Reader::filled_members, &Reader::marine_growth, &Reader::output_lists,
+                           &Reader::outputs},
+                          d_, errors_at_start_))
+            check_references();
     }
 
 private:

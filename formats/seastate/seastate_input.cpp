@@ -32,14 +32,11 @@ public:
     void read() {
         r_.cursor().skip_header(2);
         r_.need("Echo");
-        // After a section with an error the places of the next entries are unsure:
-        // the first error is the one to fix.
-        for (void (Reader::*section)() :
-             {&Reader::environment, &Reader::grid, &Reader::waves, &Reader::second_order,
-              &Reader::constrained, &Reader::current, &Reader::maccamy_fuchs, &Reader::outputs}) {
-            if (d_.error_count() != errors_at_start_) return;
-            (this->*section)();
-        }
+        hydrodyn::read_sections(*this,
+                                {&Reader::environment, &Reader::grid, &Reader::waves,
+                                 &Reader::second_order, &Reader::constrained, &Reader::current,
+                                 &Reader::maccamy_fuchs, &Reader::outputs},
+                                d_, errors_at_start_);
     }
 
 private:
