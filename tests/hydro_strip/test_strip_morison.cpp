@@ -122,3 +122,41 @@ TEST_CASE("Morison inertia on a vertical cylinder in an Airy wave, and Froude-Kr
               doctest::Approx(rho * g * pi * r * r * 40 + pi * r * r * keel).epsilon(1e-9));
     }
 }
+
+TEST_CASE("the flow tabulated at the undisplaced strips is the field's, displaced kinematics at "
+          "rest alike; a turning spar's added mass pulls outwards") {
+    StripSetup s = test::oc3_spar();
+    WaveSettings w;
+    w.kind = WaveKind::irregular;
+    w.water = s.water;
+    w.height = 6;
+    w.period = 10;
+    w.t_max = 600;
+    w.dt = 0.25;
+    w.low_cutoff = 0.1;
+    w.high_cutoff = 3;
+    w.seed1 = 7;
+    s.waves = make_wave_field(w);
+    const auto fixed = strip_theory_block(s);
+    s.kinematics_displaced = true;
+    const auto moving = strip_theory_block(s);
+    const auto frame = test::frame(at_rest, identity);
+    for (double t : {10.0, 33.25}) { // on the field's time grid
+        const auto a = test::evaluate(*fixed, frame, t), b = test::evaluate(*moving, frame, t);
+        CHECK(std::abs(a.loads[0]) > 1e4);
+        for (std::size_t i = 0; i < 6; ++i)
+            CHECK(a.loads[i] == doctest::Approx(b.loads[i]).epsilon(1e-9).scale(1e-3));
+    }
+    // A yaw rate about a vertical axis 10 m off the spar's: the strips accelerate
+    // towards that axis by w^2 * 10 m, so their added mass pushes the spar away.
+    StripSetup still = test::oc3_spar();
+    still.origin_at_rest = {-10, 0, 0};
+    for (StripMember& m : still.members) m.c1.cd = m.c2.cd = 0; // its speed, 2 m/s, drags
+    const auto turning = strip_theory_block(still);
+    const double origin[3] = {-10, 0, 0}, yaw[3] = {0, 0, 0.2};
+    const auto e = test::evaluate(*turning, test::frame(origin, identity, nullptr, yaw));
+    double A[36];
+    turning->added_mass(0, nullptr, nullptr, A);
+    CHECK(e.loads[0] == doctest::Approx(A[0] * 0.04 * 10).epsilon(1e-12));
+    CHECK(std::abs(e.loads[1]) < 1e-6);
+}

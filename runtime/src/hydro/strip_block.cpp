@@ -39,6 +39,7 @@ public:
         ports_.outputs_read = setup_.frame_outputs;
         ports_.loads = setup_.loads;
         collect_added_mass();
+        tabulate_fixed_points();
     }
 
     const BlockPorts& ports() const override { return ports_; }
@@ -103,6 +104,33 @@ private:
         return setup_.waves->flow(t, {p.x(), p.y(), p.z()});
     }
 
+    // With the kinematics at the undisplaced positions (WaveDisp 0) the points the
+    // waves are taken at never move: the field tabulates each once.
+    void tabulate_fixed_points() {
+        if (!setup_.waves || setup_.kinematics_displaced) return;
+        BodyFrame rest;
+        rest.r = Vector3d::Zero();
+        rest.R = Matrix3d::Identity();
+        std::vector<double> z;
+        for (const strip::Member& m : members_) {
+            const int nodes = m.elements + 1;
+            z.resize(static_cast<std::size_t>(nodes));
+            for (int n = 0; n < nodes; ++n)
+                z[static_cast<std::size_t>(n)] = kinematics_point(rest, m.node(n)).z();
+            for (int n = 0; n < nodes; ++n) {
+                const strip::StripSpan span = strip::strip_span(z, n, m.element);
+                const Vector3d p = kinematics_point(rest, m.node(n) + span.offset * m.axis);
+                fixed_strips_.push_back(span.length > 0 && p.z() <= 0
+                                            ? setup_.waves->at({p.x(), p.y(), p.z()})
+                                            : nullptr);
+            }
+        }
+        for (const strip::Joint& j : joints_) {
+            const Vector3d p = kinematics_point(rest, j.position);
+            fixed_joints_.push_back(p.z() <= 0 ? setup_.waves->at({p.x(), p.y(), p.z()}) : nullptr);
+        }
+    }
+
     Vector3d kinematics_point(const BodyFrame& frame, const Vector3d& body) const {
         if (setup_.kinematics_displaced) return frame.r + frame.R * body;
         return Vector3d(setup_.origin_at_rest[0], setup_.origin_at_rest[1],
@@ -110,15 +138,22 @@ private:
                body;
     }
 
+    static FlowAt tabulated(const std::shared_ptr<const PointWaves>& p, double t) {
+        return p ? p->flow(t) : FlowAt{};
+    }
+
     // Drag and wave inertia on each node's strip (HydroDyn's distributed loads).
     template <class Apply> void members_flow(double t, const BodyFrame& frame, Apply& apply) const {
         const double rho = water_.density;
         std::vector<double> z;
+        std::size_t fixed = 0;
         for (const strip::Member& m : members_) {
             const int nodes = m.elements + 1;
             z.resize(static_cast<std::size_t>(nodes));
             for (int n = 0; n < nodes; ++n)
                 z[static_cast<std::size_t>(n)] = kinematics_point(frame, m.node(n)).z();
+            const std::size_t first = fixed;
+            fixed += static_cast<std::size_t>(nodes);
             const Vector3d k = frame.R * m.axis;
             const Matrix3d kkt = k * k.transpose();
             const Matrix3d ak = Matrix3d::Identity() - kkt;
@@ -128,7 +163,10 @@ private:
                 if (span.length <= 0) continue;
                 const Vector3d body = m.node(n) + span.offset * m.axis;
                 const Vector3d at = frame.r + frame.R * body;
-                const FlowAt water = flow_at(t, kinematics_point(frame, body));
+                const FlowAt water =
+                    fixed_strips_.empty()
+                        ? flow_at(t, kinematics_point(frame, body))
+                        : tabulated(fixed_strips_[first + static_cast<std::size_t>(n)], t);
                 const Vector3d structure = frame.v + frame.w.cross(at - frame.r);
                 const Vector3d vrel =
                     Vector3d(water.velocity[0], water.velocity[1], water.velocity[2]) - structure;
@@ -155,11 +193,13 @@ private:
     // dynamic pressure and acceleration on them.
     template <class Apply> void joints_flow(double t, const BodyFrame& frame, Apply& apply) const {
         const double rho = water_.density;
-        for (const strip::Joint& j : joints_) {
+        for (std::size_t i = 0; i < joints_.size(); ++i) {
+            const strip::Joint& j = joints_[i];
             const Vector3d kin = kinematics_point(frame, j.position);
             if (kin.z() > 0) continue;
             const Vector3d at = frame.r + frame.R * j.position;
-            const FlowAt water = flow_at(t, kin);
+            const FlowAt water =
+                fixed_joints_.empty() ? flow_at(t, kin) : tabulated(fixed_joints_[i], t);
             Vector3d f = Vector3d::Zero();
             const double a2 = j.area_drag.squaredNorm();
             if (a2 > 0 && j.c.ax_cd != 0) {
@@ -247,6 +287,9 @@ private:
     Water water_;
     BlockPorts ports_;
     std::vector<MassPoint> points_;
+    // WaveDisp 0: the tabulated flow at each member node's strip (members in
+    // order, null where dry) and at each joint.
+    std::vector<std::shared_ptr<const PointWaves>> fixed_strips_, fixed_joints_;
     std::array<double, 36> added_mass_{};
 };
 
