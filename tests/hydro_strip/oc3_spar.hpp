@@ -14,6 +14,9 @@ namespace test {
 inline constexpr double pi = 3.14159265358979323846;
 inline constexpr double rho = 1025, g = 9.80665;
 inline constexpr double ca = 0.969954, cd = 0.6;
+/// The body frame at rest: no rotation, the origin at the still-water level.
+inline constexpr double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+inline constexpr double at_rest[3] = {0, 0, 0};
 
 inline yamsc::runtime::hydro::StripSetup oc3_spar(double division = 0.5) {
     using namespace yamsc::runtime::hydro;

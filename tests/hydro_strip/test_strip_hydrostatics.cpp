@@ -10,14 +10,9 @@
 #include <cmath>
 
 using namespace yamsc::runtime::hydro;
-using test::g;
-using test::pi;
-using test::rho;
+using namespace test;
 
 namespace {
-
-const double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-const double at_rest[3] = {0, 0, 0};
 
 // Volume below z = 0 of the frustum from a (radius ra) to b (radius rb) and its
 // first moment, by slices across the axis: each slice's wetted part is a circular

@@ -8,14 +8,7 @@
 #include <cmath>
 
 using namespace yamsc::runtime::hydro;
-using test::g;
-using test::pi;
-using test::rho;
-
-namespace {
-const double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-const double at_rest[3] = {0, 0, 0};
-} // namespace
+using namespace test;
 
 TEST_CASE("drag on a uniform relative velocity: Cd rho D |v| v / 2 over the wet length") {
     const auto block = strip_theory_block(test::oc3_spar());
