@@ -279,3 +279,35 @@ TEST_CASE("additional matrices: F0 - C q - R B R^T q' - R Bq |R^T q'| R^T q' at 
     for (int i = 0; i < 6; ++i)
         CHECK(g[i] == doctest::Approx(out[static_cast<std::size_t>(i)]).epsilon(1e-9));
 }
+
+TEST_CASE("radiation history: steps shorter than RdtnDT store the same samples; reset forgets") {
+    const double dt = 0.1;
+    std::vector<double> omega{0.0, 1.0, 2.0, 3.0};
+    std::vector<Mat6> damping(4);
+    for (std::size_t k = 0; k < 4; ++k) damping[k][0] = 1e4 * (1 + static_cast<double>(k));
+    damping[0][0] = 0;
+    PotentialFlowSetup s = bare_setup();
+    s.kernel_dt = dt;
+    s.radiation_kernel = radiation_kernel(omega, damping, dt, 3);
+    const auto coarse = potential_flow_block(s), fine = potential_flow_block(s);
+    // A surge velocity linear in time: the samples between a step's ends are exact.
+    const auto at = [](double t) {
+        return frame(Eigen::Vector3d(0.1 * t * t, 0, 0), Eigen::Matrix3d::Identity(),
+                     Eigen::Vector3d(0.2 * t + 0.05, 0, 0));
+    };
+    for (int k = 0; k < 40; ++k) {
+        const double t = k * dt, t1 = (k + 1) * dt;
+        coarse->update_discrete_states(t, nullptr, at(t).data(), t1, nullptr, at(t1).data());
+        for (int m = 0; m < 4; ++m) {
+            const double a = t + m * dt / 4, b = t + (m + 1) * dt / 4;
+            fine->update_discrete_states(a, nullptr, at(a).data(), b, nullptr, at(b).data());
+        }
+    }
+    const double f = evaluate(*coarse, 4.0, at(4.0)).out[12];
+    CHECK(f < -1e2); // a real force
+    CHECK(evaluate(*fine, 4.0, at(4.0)).out[12] == doctest::Approx(f).epsilon(1e-12));
+    fine->reset_discrete_states();
+    // Forgotten: the current velocity alone, -RdtnDT K(0) v.
+    CHECK(evaluate(*fine, 4.0, at(4.0)).out[12] ==
+          doctest::Approx(-dt * s.radiation_kernel[0][0] * (0.2 * 4.0 + 0.05)).epsilon(1e-12));
+}
