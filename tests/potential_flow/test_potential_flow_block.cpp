@@ -311,3 +311,35 @@ TEST_CASE("radiation history: steps shorter than RdtnDT store the same samples; 
     CHECK(evaluate(*fine, 4.0, at(4.0)).out[12] ==
           doctest::Approx(-dt * s.radiation_kernel[0][0] * (0.2 * 4.0 + 0.05)).epsilon(1e-12));
 }
+
+TEST_CASE(
+    "excitation on SeaState's regular wave: a real X gives X times the elevation at the origin") {
+    WaveSettings w;
+    w.kind = WaveKind::regular;
+    w.height = 2.0;
+    w.period = 10.0;
+    w.t_max = 600;
+    w.dt = 0.25;
+    w.phase = 0.7;
+    w.direction = 0.3;
+    const auto field = make_wave_field(w);
+    REQUIRE(field->time_step() > 0);
+    PotentialFlowSetup s = bare_setup();
+    s.excitation.omega = {0.0, 2.0};
+    s.excitation.heading = {-pi, pi};
+    for (int k = 0; k < 4; ++k)
+        for (int i = 0; i < 6; ++i) s.excitation.force.push_back(1e5 * (i + 1));
+    s.waves = field;
+    const auto block = potential_flow_block(s);
+    int checked = 0;
+    for (double t = 0; t < 30; t += 1.25) {
+        const double eta = field->elevation(t, 0, 0);
+        const auto r =
+            evaluate(*block, t, frame(Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity()));
+        for (int i = 0; i < 6; ++i)
+            CHECK(r.out[static_cast<std::size_t>(i)] ==
+                  doctest::Approx(1e5 * (i + 1) * eta).scale(1e5 * (i + 1)).epsilon(1e-9));
+        checked += std::abs(eta) > 0.5;
+    }
+    CHECK(checked > 5); // the wave is there
+}
