@@ -81,6 +81,9 @@ std::optional<std::vector<runtime::mooring::Line>> moordyn_lines(const moordyn::
             error(Kind::NotSupported, p.at,
                   "the mass and volume of " + entry +
                       " are not supported (point masses and buoyancy modules)");
+        else if (p.force[0] != 0 || p.force[1] != 0 || p.force[2] != 0)
+            error(Kind::NotSupported, p.at,
+                  "the forces (FX, FY, FZ) on " + entry + " are not supported");
         else if (p.attachment == Attachment::fixed) {
             const double z = p.on_seabed ? -depth : p.z;
             if (std::abs(z + depth) > seabed_tolerance * depth)

@@ -152,6 +152,7 @@ public:
             if (r.words.empty() || text[0] == '!' || text[0] == '#' || text[0] == '%') continue;
             const std::string u = upper(text);
             if (contains(u, "---")) {
+                check_count();
                 section = section_of(u);
                 to_skip = is_table(section) ? 2 : 0;
                 if (section == Section::skipped)
@@ -161,13 +162,29 @@ public:
                 if (section == Section::options) in_.options_at = at(line, r.words[0].col);
                 continue;
             }
+            if (to_skip == 2 && is_table(section) && r.words.size() >= 2 &&
+                (upper(r.words[1].text) == "NTYPES" || upper(r.words[1].text) == "NCONNECTS" ||
+                 upper(r.words[1].text) == "NLINES")) {
+                // MoorDyn v1: the table's length before its column names.
+                in_.layout = 1;
+                const auto count = whole(r.words[0].text, at(r, 0), std::string(r.words[1].text));
+                if (!count) return std::nullopt;
+                announced_ = *count;
+                announced_at_ = at(r, 0);
+                continue;
+            }
             if (to_skip > 0) {
                 --to_skip;
                 continue;
             }
             if (section == Section::outputs && contains(u, "END")) section = Section::none;
+            // v1 ends its options with END too.
+            if (section == Section::options && in_.layout == 1 && r.words.size() == 1 &&
+                upper(r.words[0].text) == "END")
+                section = Section::none;
             if (!row(section, r)) return std::nullopt;
         }
+        check_count();
         if (!errors_) check_references();
         if (errors_) return std::nullopt;
         return std::move(in_);
@@ -183,8 +200,19 @@ private:
         diags_.error(kind, std::move(where), std::move(message));
     }
 
+    // A v1 table holds as many rows as its count line says.
+    void check_count() {
+        if (announced_ >= 0 && table_rows_ != announced_)
+            error(Kind::InvalidValue, announced_at_,
+                  "the table announces " + std::to_string(announced_) + " rows and holds " +
+                      std::to_string(table_rows_));
+        announced_ = -1;
+        table_rows_ = 0;
+    }
+
     // One row of a section; false after a limit (reading stops there).
     bool row(Section section, const Row& r) {
+        if (is_table(section)) ++table_rows_;
         std::size_t count = 0;
         switch (section) {
         case Section::line_types:
@@ -278,6 +306,10 @@ private:
 
     void read_line_type(const Row& r) {
         const std::size_t n = r.words.size();
+        if (in_.layout == 1) {
+            read_line_type_v1(r);
+            return;
+        }
         if (n != 10 && n != 11 && n != 13) {
             error(Kind::InvalidValue, at(r, 0),
                   "a LINE TYPES row has 10, 11 or 13 values (Name Diam MassDen EA BA/-zeta EI Cd "
@@ -310,6 +342,29 @@ private:
         t.mass_density = *m;
         t.axial_stiffness = *ea;
         t.internal_damping = *ba;
+        add_line_type(std::move(t), r);
+    }
+
+    void read_line_type_v1(const Row& r) {
+        if (!enough(r, 9, "LINE TYPES (v1: Name Diam MassDen EA BA/-zeta Can Cat Cdn Cdt)")) return;
+        LineType t;
+        t.name = std::string(r.words[0].text);
+        t.at = at(r, 0);
+        const std::string entry = "line type '" + t.name + "'";
+        const char* names[] = {"Diam", "MassDen", "EA", "BA/-zeta", "Can", "Cat", "Cdn", "Cdt"};
+        double* fields[] = {&t.diameter,         &t.mass_density,      &t.axial_stiffness,
+                            &t.internal_damping, &t.added_mass_normal, &t.added_mass_axial,
+                            &t.drag_normal,      &t.drag_axial};
+        for (std::size_t k = 0; k < 8; ++k) {
+            const auto v = number(r, 1 + k, names[k], entry);
+            if (!v) return;
+            *fields[k] = *v;
+        }
+        add_line_type(std::move(t), r);
+    }
+
+    void add_line_type(LineType t, const Row& r) {
+        const std::string entry = "line type '" + t.name + "'";
         if (!(t.diameter > 0) || !(t.mass_density > 0) || !(t.axial_stiffness > 0))
             error(Kind::InvalidValue, at(r, 1),
                   "the diameter, mass density and EA of " + entry + " must be positive");
@@ -349,7 +404,15 @@ private:
 
     void read_point(const Row& r) {
         ++point_rows_;
-        if (r.words.size() != 9) {
+        const bool v1 = in_.layout == 1;
+        if (v1 && r.words.size() < 12) {
+            error(Kind::InvalidValue, at(r, 0),
+                  "a CONNECTION PROPERTIES row (v1) has 12 values (Node Type X Y Z M V FX FY FZ "
+                  "CdA CA), found " +
+                      std::to_string(r.words.size()));
+            return;
+        }
+        if (!v1 && r.words.size() != 9) {
             error(Kind::InvalidValue, at(r, 0),
                   "a POINTS row has 9 values (ID Attachment X Y Z M V CdA Ca), found " +
                       std::to_string(r.words.size()));
@@ -370,11 +433,14 @@ private:
         if (contains(z, "SEABED") || contains(z, "GROUND") || contains(z, "FLOOR")) {
             p.on_seabed = true;
         }
-        const char* names[] = {"X", "Y", "Z", "M", "V", "CdA", "Ca"};
-        double* fields[] = {&p.x, &p.y, &p.z, &p.mass, &p.volume, &p.drag_area, &p.added_mass};
-        for (std::size_t k = 0; k < 7; ++k) {
+        const char* names[] = {"X", "Y", "Z", "M", "V", "CdA", "Ca", "FX", "FY", "FZ"};
+        double* fields[] = {&p.x,         &p.y,          &p.z,        &p.mass,     &p.volume,
+                            &p.drag_area, &p.added_mass, &p.force[0], &p.force[1], &p.force[2]};
+        // v1's columns: X Y Z M V FX FY FZ CdA CA
+        const std::size_t v1_words[] = {2, 3, 4, 5, 6, 10, 11, 7, 8, 9};
+        for (std::size_t k = 0; k < (v1 ? 10u : 7u); ++k) {
             if (k == 2 && p.on_seabed) continue;
-            const auto v = number(r, 2 + k, names[k], entry);
+            const auto v = number(r, v1 ? v1_words[k] : 2 + k, names[k], entry);
             if (!v) return;
             *fields[k] = *v;
         }
@@ -418,11 +484,17 @@ private:
         if (!id) return;
         l.id = *id;
         const std::string entry = "line " + std::to_string(l.id);
-        const auto a = end(r, 2, entry);
-        const auto b = a ? end(r, 3, entry) : std::nullopt;
-        const auto length = b ? number(r, 4, "UnstrLen", entry) : std::nullopt;
+        // v1: ID LineType UnstrLen NumSegs NodeAnch NodeFair; v2: ID LineType AttachA
+        // AttachB UnstrLen NumSegs.
+        const bool v1 = in_.layout == 1;
+        const std::size_t a_word = v1 ? 4 : 2, b_word = v1 ? 5 : 3;
+        const std::size_t length_word = v1 ? 2 : 4, segments_word = v1 ? 3 : 5;
+        const auto a = end(r, a_word, entry);
+        const auto b = a ? end(r, b_word, entry) : std::nullopt;
+        const auto length = b ? number(r, length_word, "UnstrLen", entry) : std::nullopt;
         const auto segments =
-            length ? whole(r.words[5].text, at(r, 5), "NumSegs of " + entry) : std::nullopt;
+            length ? whole(r.words[segments_word].text, at(r, segments_word), "NumSegs of " + entry)
+                   : std::nullopt;
         if (!segments) return;
         l.type = std::string(r.words[1].text);
         l.end_a = *a;
@@ -431,7 +503,7 @@ private:
         l.segments = *segments;
         l.outputs = std::string(r.words[6].text);
         if (!(l.unstretched_length > 0))
-            error(Kind::InvalidValue, at(r, 4),
+            error(Kind::InvalidValue, at(r, length_word),
                   "the unstretched length of " + entry + " must be positive");
         for (const LineRow& other : in_.lines)
             if (other.id == l.id) error(Kind::DuplicateName, l.at, entry + " is defined twice");
@@ -515,6 +587,9 @@ private:
     MoorDynInput in_;
     int errors_ = 0;
     std::size_t point_rows_ = 0; // rows read so far, with errors or not
+    int table_rows_ = 0;         // rows of the current table
+    int announced_ = -1;         // its v1 count, -1 without one
+    diag::Location announced_at_;
 };
 
 } // namespace

@@ -15,6 +15,12 @@
 //   OUTPUT(S)                     channel names until END or the next "---"
 // The tables skip two lines after their header (column names and units). Values
 // as in the file (SI units). Bad input: located errors and nullopt.
+//
+// MoorDyn v1's layout (OpenFAST v2/v3) is read too, told apart by the count line
+// after each table's header (`3 NLines`): LINE TYPES `Name Diam MassDen EA BA/-zeta
+// Can Cat Cdn Cdt`, CONNECTION PROPERTIES `Node Type X Y Z M V FX FY FZ CdA CA`,
+// LINE PROPERTIES `Line LineType UnstrLen NumSegs NodeAnch NodeFair Flags/Outputs`,
+// each table as long as its count.
 #include "diag/diagnostics.hpp"
 
 #include <memory>
@@ -67,6 +73,7 @@ struct Point {
     double mass = 0, volume = 0; // M [kg], V [m^3]
     double drag_area = 0;        // CdA [m^2]
     double added_mass = 0;       // Ca
+    double force[3] = {0, 0, 0}; // FX FY FZ [N] of v1's connections
     diag::Location at, attachment_at, z_at;
 };
 
@@ -96,6 +103,7 @@ struct Option {
 
 struct MoorDynInput {
     std::shared_ptr<const diag::SourceFile> file;
+    int layout = 2; // MoorDyn's version of the file's tables: 2, or 1 (count lines)
     std::vector<LineType> line_types;
     std::vector<OtherRow> rod_types, bodies, rods;
     std::vector<Point> points;

@@ -254,3 +254,44 @@ TEST_CASE("MoorDyn files with errors: each at its line and column, naming its en
     CHECK(has(diagnostics_of(replaced(good, "AnchTen1\n", many)),
               "moor.dat:10032:1: error: more than 10000 entries in a section of a MoorDyn file"));
 }
+
+TEST_CASE("MoorDyn v1's layout: the same lines, its count lines checked") {
+    const std::string v1_path = data_dir + "oc3_hywind_moordyn_v1.dat";
+    diag::Diagnostics diags;
+    auto file = diag::read_text_file(v1_path, diags);
+    REQUIRE(file);
+    const auto in = moordyn::read_moordyn_input(file, diags);
+    INFO(diags.render());
+    REQUIRE(in);
+    CHECK(in->layout == 1);
+    REQUIRE(in->line_types.size() == 1);
+    CHECK(in->line_types[0].added_mass_normal == 1.0);
+    CHECK(in->line_types[0].added_mass_axial == 0.0);
+    CHECK(in->line_types[0].drag_normal == 1.2);
+    CHECK(in->line_types[0].drag_axial == 0.2);
+    CHECK(in->points.size() == 6);
+    CHECK(in->outputs.size() == 3);
+    const auto lines = analysis::read_moordyn_mooring(v1_path, oc3, diags);
+    const auto v2 = analysis::read_moordyn_mooring(moordyn_path, oc3, diags);
+    REQUIRE(lines);
+    REQUIRE(v2);
+    REQUIRE(lines->size() == 3);
+    for (std::size_t k = 0; k < 3; ++k) {
+        CHECK((*lines)[k].anchor == (*v2)[k].anchor);
+        CHECK((*lines)[k].fairlead == (*v2)[k].fairlead);
+        CHECK((*lines)[k].properties.length == (*v2)[k].properties.length);
+        CHECK((*lines)[k].properties.axial_stiffness == (*v2)[k].properties.axial_stiffness);
+        CHECK((*lines)[k].properties.weight_in_fluid == (*v2)[k].properties.weight_in_fluid);
+    }
+    const std::string good = file_text(v1_path);
+    CHECK(has(diagnostics_of(replaced(good, "3        NLines", "4        NLines")),
+              "moor.dat:20:1: error: the table announces 4 rows and holds 3"));
+    CHECK(has(diagnostics_of(replaced(good,
+                                      "4    Vessel  5.2         0.0         -70.0    0     0"
+                                      "     0 ",
+                                      "4    Vessel  5.2         0.0         -70.0    0     0"
+                                      "     9 ")),
+              "moor.dat:16:1: error: the forces (FX, FY, FZ) on point 4 are not supported"));
+    CHECK(has(diagnostics_of(replaced(good, "4    Vessel", "4    Connect")),
+              "moor.dat:16:6: error: Free point 4 is not supported"));
+}
