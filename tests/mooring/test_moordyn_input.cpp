@@ -120,6 +120,15 @@ TEST_CASE("the OC3-Hywind MoorDyn file: every field read") {
     const std::vector<std::string> outputs = {"FairTen1", "FairTen2", "FairTen3",
                                               "AnchTen1", "AnchTen2", "AnchTen3"};
     CHECK(in->outputs == outputs);
+    // Cl (VIV) as an 11th value, Z on the seabed by keyword.
+    auto other = std::make_shared<const diag::SourceFile>(
+        "moor.dat",
+        replaced(replaced(file->text(), "0.2    0.0\n", "0.2    0.0  0.8\n"), "-320.0", "Seabed"));
+    const auto in2 = moordyn::read_moordyn_input(other, diags);
+    REQUIRE(in2);
+    CHECK(in2->line_types[0].lift == 0.8);
+    CHECK(in2->points[0].on_seabed);
+    CHECK(!in2->points[1].on_seabed);
 }
 
 TEST_CASE("the OC3-Hywind MoorDyn file gives the lines of the MAP++ file, and the published "
@@ -249,6 +258,13 @@ TEST_CASE("MoorDyn files with errors: each at its line and column, naming its en
                                       "---------------------- FAILURE ---\nx\n"
                                       "---------------------- OPTIONS")),
               "moor.dat:22:1: warning: this MoorDyn section is not read"));
+    CHECK(has(diagnostics_of(replaced(good, "4    Vessel", "4    Body1 ")),
+              "moor.dat:13:6: error: no body 1 for point 4 (the file has 0)"));
+    CHECK(has(diagnostics_of(replaced(good, "4    Vessel", "4    T2    ")),
+              "moor.dat:13:6: error: Turbine point 4 is not supported"));
+    CHECK(has(diagnostics_of(replaced(good, "0.0    1.2   1.0   0.2    0.0",
+                                      "0.0    1.2   1.0   0.2    0.0  0.7  0.1")),
+              "moor.dat:6:1: error: a LINE TYPES row has 10, 11 or 13 values"));
     std::string many;
     for (int k = 0; k <= moordyn::max_rows; ++k) many += "FairTen1\n";
     CHECK(has(diagnostics_of(replaced(good, "AnchTen1\n", many)),
