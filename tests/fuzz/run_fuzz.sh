@@ -58,6 +58,9 @@ case $target in
   fuzz_map_input)
     seeds=("$root"/tests/data/mooring/*.map)
     dict= ;;
+  fuzz_moordyn_input)
+    seeds=("$root"/tests/data/mooring/*moordyn*.dat)
+    dict= ;;
   fuzz_hydrodyn_input)
     seeds=("$root"/tests/data/hydro/oc3_spar_*.dat "$here"/seeds/hydrodyn/*)
     dict= ;;
