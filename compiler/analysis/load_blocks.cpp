@@ -30,6 +30,7 @@ struct Registration {
 const Registration registry[] = {
     {model::LoadKind::rotor_table, "--aero", &BlockOptions::aero, build_rotor_table},
     {model::LoadKind::blade_elements, "--aero", &BlockOptions::aero, build_blade_elements},
+    {model::LoadKind::mooring, "--mooring", &BlockOptions::mooring, build_mooring},
 };
 
 bool supplied(const Registration& r, const BlockOptions& b) {

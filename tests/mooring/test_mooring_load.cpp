@@ -1,0 +1,143 @@
+// `load mooring` on models/oc3_spar_rigid.mbd with --mooring: the lines' stiffness
+// in the linear model (-dF/dq with the block less without) against the exact
+// derivative of the runtime's lines and the OC3 definition's published matrix,
+// and trim's static offset against the balance of forces at the point it finds.
+#include "analysis/load_blocks.hpp"
+#include "analysis/loaded_model.hpp"
+#include "analysis/map_mooring.hpp"
+#include "codegen/routines.hpp"
+
+#include <yamsc/mooring/mooring_system.hpp>
+#include <yamsc/trim.hpp>
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <optional>
+#include <sstream>
+
+namespace {
+
+using namespace yamsc;
+
+const std::string model_path = std::string(YAMSC_SOURCE_DIR) + "/models/oc3_spar_rigid.mbd";
+const std::string map_file = std::string(YAMSC_TEST_DATA_DIR) + "/mooring/oc3_hywind.map";
+
+analysis::Loaded& spar() {
+    static std::optional<analysis::Loaded> l = [] {
+        std::ostringstream err;
+        auto loaded = analysis::load(model_path, {}, "", false, err, {}, codegen::abi_routines());
+        REQUIRE_MESSAGE(loaded, err.str());
+        return loaded;
+    }();
+    return *l;
+}
+
+analysis::BlockOptions with_mooring() {
+    analysis::BlockOptions b;
+    b.mooring = map_file;
+    return b;
+}
+
+std::vector<runtime::mooring::Line> lines() {
+    diag::Diagnostics diags;
+    auto l = analysis::read_map_mooring(map_file, {320, 1025, 9.80665}, diags);
+    REQUIRE_MESSAGE(l, diags.render());
+    return *l;
+}
+
+double param(const analysis::Loaded& l, const std::string& name) {
+    return l.params.at(static_cast<std::size_t>(l.library->param_index(name)));
+}
+
+// Rotation x, then y, then z of the platform's joint.
+runtime::mooring::Pose pose_of(const std::vector<double>& q) {
+    const double cx = std::cos(q[3]), sx = std::sin(q[3]), cy = std::cos(q[4]), sy = std::sin(q[4]),
+                 cz = std::cos(q[5]), sz = std::sin(q[5]);
+    runtime::mooring::Pose p;
+    p.position = {q[0], q[1], q[2]};
+    // Rx Ry Rz, row-major
+    p.rotation = {cy * cz,
+                  -cy * sz,
+                  sy,
+                  sx * sy * cz + cx * sz,
+                  -sx * sy * sz + cx * cz,
+                  -sx * cy,
+                  -cx * sy * cz + sx * sz,
+                  cx * sy * sz + sx * cz,
+                  cx * cy};
+    return p;
+}
+
+} // namespace
+
+TEST_CASE("load mooring: the lines' stiffness in lin is the runtime's exact one and OC3's") {
+    analysis::Loaded& l = spar();
+    const runtime::ModelView moored = analysis::with_load_blocks(l, with_mooring());
+    // dF/dq of the closed view (the chain rule through the mesh) less the
+    // model's own: the lines' part. (K0 is not used: at a point that is not an
+    // equilibrium it holds d(M q''0)/dq too, and q''0 differs with the lines.)
+    auto dF_dq = [](const runtime::ModelView& v) {
+        const std::vector<double> zero(6, 0.0), u(static_cast<std::size_t>(v.nu), 0.0);
+        std::vector<double> dq(36), dqd(36), du(static_cast<std::size_t>(6 * v.nu));
+        v.jacobians(0, zero.data(), zero.data(), u.data(), dq.data(), dqd.data(), du.data());
+        return dq;
+    };
+    const std::vector<double> held = dF_dq(moored), free = dF_dq(l.view);
+    const runtime::mooring::MooringLoads exact =
+        runtime::mooring::mooring_loads(lines(), runtime::mooring::Pose{});
+    auto k = [&](int i, int j) {
+        const auto n = static_cast<std::size_t>(6 * (i - 1) + (j - 1));
+        return free[n] - held[n];
+    };
+    for (int i = 1; i <= 6; ++i)
+        for (int j = 1; j <= 6; ++j) {
+            CAPTURE(i);
+            CAPTURE(j);
+            double e = -exact.derivative[static_cast<std::size_t>(6 * (i - 1) + (j - 1))];
+            // The angles turn about x, then the turned y, then z: the pitch's and
+            // yaw's axes turn with the angles before them, which the lines' small
+            // moment at rest (the rounded REPEAT coordinates) sees.
+            if (i == 5 && j == 4) e -= exact.moment[2];
+            if (i == 6 && j == 4) e += exact.moment[1];
+            if (i == 6 && j == 5) e -= exact.moment[0];
+            // The block's derivatives are exact (the chain rule through the mesh):
+            // what is left is round-off on entries up to 3e8.
+            CHECK(k(i, j) == doctest::Approx(e).epsilon(1e-7).scale(3e8));
+        }
+    // NREL/TP-500-47535, section 5.2, good to about 0.2 % (docs/mooring.md).
+    CHECK(k(1, 1) == doctest::Approx(41180).epsilon(0.002));
+    CHECK(k(2, 2) == doctest::Approx(41180).epsilon(0.002));
+    CHECK(k(3, 3) == doctest::Approx(11940).epsilon(0.002));
+    CHECK(k(4, 4) == doctest::Approx(311100000).epsilon(0.002));
+    CHECK(k(5, 5) == doctest::Approx(311100000).epsilon(0.002));
+    CHECK(k(6, 6) == doctest::Approx(11560000).epsilon(0.002));
+    CHECK(k(1, 5) == doctest::Approx(-2821000).epsilon(0.003));
+    CHECK(k(5, 1) == doctest::Approx(-2816000).epsilon(0.003));
+}
+
+TEST_CASE("load mooring: trim's offset balances buoyancy, weight, thrust and the lines") {
+    analysis::Loaded& l = spar();
+    const runtime::ModelView moored = analysis::with_load_blocks(l, with_mooring());
+    const double thrust = 800e3; // about the rated thrust [N]
+    std::vector<double> u(static_cast<std::size_t>(moored.nu), 0.0);
+    u[0] = thrust; // f_x, the model's only declared input
+    REQUIRE(moored.input_names[0] == "f_x");
+    const std::vector<double> zero(6, 0.0);
+    const runtime::TrimResult t = runtime::trim(moored, zero, zero, u, std::vector<bool>(6, false));
+    REQUIRE(t.converged);
+    const runtime::mooring::MooringLoads m = runtime::mooring::mooring_loads(lines(), pose_of(t.q));
+    const double g = param(l, "g"), rho = param(l, "rho_w");
+    const double mass = param(l, "PtfmMass") + param(l, "TwrMass") + param(l, "M_N");
+    const double area = M_PI * std::pow(param(l, "D_wp"), 2) / 4;
+    const double buoyancy = rho * g * (param(l, "V_0") - area * t.q[2]);
+    MESSAGE("trimmed: surge " << t.q[0] << " m, heave " << t.q[2] << " m, pitch "
+                              << t.q[4] * 180 / M_PI << " deg");
+    // Forces along ground x and z: nothing else acts along them.
+    CHECK(m.force[0] + thrust == doctest::Approx(0).scale(thrust * 1e-6));
+    CHECK(m.force[1] == doctest::Approx(0).scale(thrust * 1e-6));
+    CHECK(buoyancy - mass * g + m.force[2] == doctest::Approx(0).scale(mass * g * 1e-9));
+    // Downwind, and tilted downwind (the thrust acts 90 m above the lines).
+    CHECK(t.q[0] > 0);
+    CHECK(t.q[4] > 0);
+}
