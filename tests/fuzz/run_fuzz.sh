@@ -58,6 +58,12 @@ case $target in
   fuzz_map_input)
     seeds=("$root"/tests/data/mooring/*.map)
     dict= ;;
+  fuzz_hydrodyn_input)
+    seeds=("$root"/tests/data/hydro/oc3_spar_*.dat "$here"/seeds/hydrodyn/*)
+    dict= ;;
+  fuzz_seastate_input)
+    seeds=("$root"/tests/data/hydro/oc3_sea_state.dat "$here"/seeds/seastate/*)
+    dict= ;;
   fuzz_aerodyn_blade)
     seeds=("$root"/tests/data/reference/operating/deck/*AeroDyn_blade.dat)
     dict= ;;

@@ -1,0 +1,151 @@
+// A fixed point's flow tabulated on SeaState's time grid (t_j = j WaveDT, one period)
+// by inverse FFTs, as SeaState tabulates its grid's nodes, and interpolated linearly
+// in time as SeaState's GridInterp4D does. Wheeler stretching moves the evaluation
+// depth with the surface, so it is not tabulated: those points evaluate exactly.
+#include "../wind/turbulence_fft.hpp"
+#include "waves_linear.hpp"
+
+#include <cmath>
+
+namespace yamsc::runtime::hydro {
+
+namespace {
+
+// Real series Re(sum_m c_m exp(2 pi i m j / n)) and the same of d, by one complex
+// transform of the Hermitian halves of c and i d.
+void two_series(const Fft& fft, int first, const std::vector<std::complex<double>>& c,
+                const std::vector<std::complex<double>>& d, std::vector<double>& x,
+                std::vector<double>& y) {
+    const int n = fft.size();
+    std::vector<std::complex<double>> in(static_cast<std::size_t>(n)), out(in.size());
+    const std::complex<double> i1(0, 1);
+    for (std::size_t q = 0; q < c.size(); ++q) {
+        const int m = first + static_cast<int>(q);
+        in[static_cast<std::size_t>(m)] += 0.5 * (c[q] + i1 * d[q]);
+        in[static_cast<std::size_t>(n - m)] += 0.5 * (std::conj(c[q]) + i1 * std::conj(d[q]));
+    }
+    fft.inverse(in.data(), out.data());
+    x.resize(static_cast<std::size_t>(n) + 1);
+    y.resize(x.size());
+    for (int j = 0; j < n; ++j) {
+        x[static_cast<std::size_t>(j)] = out[static_cast<std::size_t>(j)].real();
+        y[static_cast<std::size_t>(j)] = out[static_cast<std::size_t>(j)].imag();
+    }
+    x[static_cast<std::size_t>(n)] = x[0]; // SeaState repeats the first value as the last
+    y[static_cast<std::size_t>(n)] = y[0];
+}
+
+struct Series {
+    std::vector<double> u, w, du, dw, p;
+};
+
+class TabulatedPoint final : public PointWaves {
+public:
+    TabulatedPoint(const LinearWaveField& field, const Vec3& p)
+        : dt_(field.time_step()), period_(field.period()), z_(p[2]), cos_(field.cos_dir()),
+          sin_(field.sin_dir()), stretching_(field.stretching()) {
+        const double h = field.water().depth;
+        const double xp = p[0] * cos_ + p[1] * sin_;
+        wet_ = z_ >= -h && (stretching_ != Stretching::none || z_ <= 0);
+        slope_ = stretching_ == Stretching::extrapolation && z_ > 0;
+        const auto& terms = field.terms();
+        const Fft fft(field.steps());
+        const double rho_g = field.water().density * field.water().gravity;
+        const double ze = std::min(z_, 0.0);
+        const std::size_t nt = terms.size();
+        std::vector<std::complex<double>> a(nt), u(nt), w(nt), du(nt), dw(nt), pr(nt);
+        const std::complex<double> i1(0, 1);
+        auto fill = [&](bool slope) {
+            for (std::size_t q = 0; q < nt; ++q) {
+                const auto& m = terms[q];
+                a[q] = m.amplitude * std::polar(1.0, -m.k * xp);
+                double ch_sh, sh_sh, ch_ch;
+                if (slope) {
+                    ch_sh = m.k, sh_sh = m.k / m.tanh_kh, ch_ch = m.k * m.tanh_kh;
+                } else {
+                    const double ez = std::exp(m.k * ze), ed = std::exp(-m.k * (ze + 2 * h));
+                    ch_sh = (ez + ed) / (1 - m.e2kh);
+                    sh_sh = (ez - ed) / (1 - m.e2kh);
+                    ch_ch = (ez + ed) / (1 + m.e2kh);
+                }
+                u[q] = m.omega * ch_sh * a[q];
+                w[q] = i1 * m.omega * sh_sh * a[q];
+                du[q] = i1 * m.omega * u[q];
+                dw[q] = i1 * m.omega * w[q];
+                pr[q] = rho_g * ch_ch * a[q];
+            }
+        };
+        fill(false);
+        if (wet_) {
+            two_series(fft, field.first_index(), a, pr, eta_, value_.p);
+            two_series(fft, field.first_index(), u, w, value_.u, value_.w);
+            two_series(fft, field.first_index(), du, dw, value_.du, value_.dw);
+        } else {
+            std::vector<double> unused;
+            two_series(fft, field.first_index(), a, a, eta_, unused);
+        }
+        if (slope_) {
+            fill(true);
+            std::vector<double> unused;
+            two_series(fft, field.first_index(), u, w, slope_values_.u, slope_values_.w);
+            two_series(fft, field.first_index(), du, dw, slope_values_.du, slope_values_.dw);
+            two_series(fft, field.first_index(), pr, pr, slope_values_.p, unused);
+        }
+    }
+
+    double elevation(double t) const override {
+        std::size_t j;
+        double f;
+        locate(t, j, f);
+        return at(eta_, j, f);
+    }
+
+    FlowAt flow(double t) const override {
+        if (!wet_) return {};
+        std::size_t j;
+        double f;
+        locate(t, j, f);
+        if (stretching_ != Stretching::none && z_ > at(eta_, j, f)) return {};
+        double u = at(value_.u, j, f), w = at(value_.w, j, f), du = at(value_.du, j, f),
+               dw = at(value_.dw, j, f), p = at(value_.p, j, f);
+        if (slope_) {
+            u += z_ * at(slope_values_.u, j, f), w += z_ * at(slope_values_.w, j, f);
+            du += z_ * at(slope_values_.du, j, f), dw += z_ * at(slope_values_.dw, j, f);
+            p += z_ * at(slope_values_.p, j, f);
+        }
+        FlowAt r;
+        r.velocity = {u * cos_, u * sin_, w};
+        r.acceleration = {du * cos_, du * sin_, dw};
+        r.dynamic_pressure = p;
+        return r;
+    }
+
+private:
+    void locate(double t, std::size_t& j, double& f) const {
+        double tr = std::fmod(t, period_);
+        if (tr < 0) tr += period_;
+        const double s = tr / dt_;
+        const double last = static_cast<double>(eta_.size() - 2);
+        const double fl = std::min(std::floor(s), last);
+        j = static_cast<std::size_t>(fl);
+        f = s - fl;
+    }
+    static double at(const std::vector<double>& v, std::size_t j, double f) {
+        return v[j] + f * (v[j + 1] - v[j]);
+    }
+
+    double dt_, period_, z_, cos_, sin_;
+    Stretching stretching_;
+    bool wet_ = false, slope_ = false;
+    std::vector<double> eta_;
+    Series value_, slope_values_;
+};
+
+} // namespace
+
+std::shared_ptr<const PointWaves> LinearWaveField::at(const Vec3& p) const {
+    if (stretching_ == Stretching::wheeler || terms_.empty()) return WaveField::at(p);
+    return std::make_shared<TabulatedPoint>(*this, p);
+}
+
+} // namespace yamsc::runtime::hydro
