@@ -10,10 +10,16 @@ namespace yamsc::hydrodyn {
 using aerodyn::Entry;
 using diag::Kind;
 
-diag::Location Input::location(const std::string& key) const {
+diag::Location entry_location(const std::vector<std::pair<std::string, diag::Location>>& entries,
+                              const std::shared_ptr<const diag::SourceFile>& file,
+                              const std::string& key) {
     for (const auto& [name, at] : entries)
         if (elastodyn::same_key(name, key)) return at;
     return diag::Location{file, 0, 0};
+}
+
+diag::Location Input::location(const std::string& key) const {
+    return entry_location(entries, file, key);
 }
 
 diag::Location Values::at(std::size_t i) const {
@@ -88,7 +94,7 @@ std::optional<Values> EntryReader::row(const std::string& what, std::size_t n, c
     }
     const aerodyn::Line* l = c_.next(what);
     if (!l) return std::nullopt;
-    last_line_ = l->number;
+    last_row_ = l;
     if (l->tokens.size() < n) {
         diags().error(Kind::MissingProperty, l->at(static_cast<int>(l->tokens.size())),
                       what + ": " + std::to_string(n) + " values expected, this line holds " +

@@ -6,6 +6,7 @@
 // CHANNELS list up to its END line. Every entry read is remembered with its place.
 #include "aerodyn/lines.hpp"
 
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <utility>
@@ -47,8 +48,9 @@ public:
     /// The next line's first `n` tokens (section lines skipped before it), as ParseAry
     /// reads them; `key`, when it follows them, is remembered. An error names `what`.
     std::optional<Values> row(const std::string& what, std::size_t n, const char* key = nullptr);
-    /// The line of the last row() read.
-    int last_line() const { return last_line_; }
+    /// The line of the last row() read (its number, or itself: file and tokens).
+    int last_line() const { return last_row_ ? last_row_->number : 0; }
+    const aerodyn::Line* last_row() const { return last_row_; }
     /// The same, each token a number.
     std::optional<std::vector<double>> numbers(const std::string& what, std::size_t n,
                                                const char* key = nullptr);
@@ -83,8 +85,42 @@ private:
 
     aerodyn::Cursor& c_;
     std::vector<std::pair<std::string, diag::Location>>& where_;
-    int last_line_ = 0;
+    const aerodyn::Line* last_row_ = nullptr;
 };
+
+/// Where `key` was read among `entries` (any case), or `file` without a position.
+diag::Location entry_location(const std::vector<std::pair<std::string, diag::Location>>& entries,
+                              const std::shared_ptr<const diag::SourceFile>& file,
+                              const std::string& key);
+
+/// Runs the `sections` of `reader` in order; stops after one that reported an error, since
+/// the places of the next entries are then unsure (the first error is the one to fix).
+/// Returns whether all ran without error.
+template <class R>
+bool read_sections(R& reader, std::initializer_list<void (R::*)()> sections,
+                   const diag::Diagnostics& diags, int errors_before) {
+    for (auto section : sections) {
+        if (diags.error_count() != errors_before) return false;
+        (reader.*section)();
+    }
+    return diags.error_count() == errors_before;
+}
+
+/// A file read whole by `Reader(cursor, input).read()`: the input, or nullopt after
+/// an error (the reader of each format is this with its own Input and Reader).
+template <class Input, class Reader>
+std::optional<Input> read_entries(const std::shared_ptr<const diag::SourceFile>& file,
+                                  diag::Diagnostics& diags,
+                                  const aerodyn::IncludeReader& includes) {
+    const int errors = diags.error_count();
+    aerodyn::Cursor c(aerodyn::logical_lines(file, &includes, diags), file, diags);
+    Input out;
+    out.path = file->path();
+    out.file = file;
+    Reader(c, out).read();
+    if (diags.error_count() != errors) return std::nullopt;
+    return out;
+}
 
 /// Whether a token reads as a Fortran LOGICAL (T, F, .TRUE., false, ...).
 std::optional<bool> parse_logical(std::string_view text);

@@ -34,17 +34,14 @@ public:
         r_.cursor().skip_header(2);
         r_.need("Echo");
         if (!platform()) return;
-        // After a section with an error the places of the next entries are unsure:
-        // the first error is the one to fix.
-        for (void (Reader::*section)() :
-             {&Reader::second_order, &Reader::additional_matrices, &Reader::strip_options,
-              &Reader::axial, &Reader::joints, &Reader::sections, &Reader::coefficients,
-              &Reader::members, &Reader::filled_members, &Reader::marine_growth,
-              &Reader::output_lists, &Reader::outputs}) {
-            if (d_.error_count() != errors_at_start_) return;
-            (this->*section)();
-        }
-        if (d_.error_count() == errors_at_start_) check_references();
+        if (read_sections(*this,
+                          {&Reader::second_order, &Reader::additional_matrices,
+                           &Reader::strip_options, &Reader::axial, &Reader::joints,
+                           &Reader::sections, &Reader::coefficients, &Reader::members,
+                           &Reader::filled_members, &Reader::marine_growth, &Reader::output_lists,
+                           &Reader::outputs},
+                          d_, errors_at_start_))
+            check_references();
     }
 
 private:
@@ -238,6 +235,7 @@ private:
             j.axial_coefficient_id = r_.integer(*v, 4, what, true).value_or(0);
             j.overlap = r_.integer(*v, 5, what, true).value_or(0);
             out_.joints.push_back(j);
+            rows_.joints.push_back(v->line);
         }
     }
 
@@ -251,6 +249,7 @@ private:
             if (!v) return;
             out_.sections.push_back(
                 {static_cast<int>(std::nearbyint((*v)[0])), (*v)[1], (*v)[2], r_.last_line()});
+            rows_.sections.push_back(r_.last_row());
         }
         if (!rectangular_) return;
         const auto rec = table("NPropSetsRec");
@@ -348,6 +347,7 @@ private:
             m.end2 = coefficients_from(*row, 2, 2);
             m.line = row->line->number;
             out_.member_coefficients.push_back(m);
+            rows_.member_coefficients.push_back(row->line);
         }
         if (rectangular_) {
             const auto n = table("NCoefMembersRec");
@@ -408,6 +408,7 @@ private:
                 d_.error(Kind::InvalidValue, v->at(pot == 10 ? 7 : 5),
                          what + ": MDivSize must be positive");
             out_.members.push_back(m);
+            rows_.members.push_back(v->line);
         }
     }
 
@@ -505,30 +506,32 @@ private:
     void check_references() {
         std::map<int, int> joint_rows, section_rows, member_rows;
         std::set<int> axial_ids;
-        auto unique = [&](std::map<int, int>& seen, int id, int line, const char* what) {
-            if (!seen.emplace(id, line).second)
-                d_.error(Kind::DuplicateName, {out_.file, line, 1},
+        auto unique = [&](std::map<int, int>& seen, int id, const aerodyn::Line* line,
+                          const char* what) {
+            if (!seen.emplace(id, line->number).second)
+                d_.error(Kind::DuplicateName, line->at(0),
                          std::string(what) + " " + std::to_string(id) + " is defined twice (line " +
                              std::to_string(seen[id]) + ")");
         };
         for (const auto& a : out_.axial) axial_ids.insert(a.id);
-        for (const auto& j : out_.joints) {
-            unique(joint_rows, j.id, j.line, "joint");
+        for (std::size_t i = 0; i < out_.joints.size(); ++i) {
+            const Joint& j = out_.joints[i];
+            unique(joint_rows, j.id, rows_.joints[i], "joint");
             if (!axial_ids.count(j.axial_coefficient_id))
-                d_.error(Kind::UnknownName, {out_.file, j.line, 1},
+                d_.error(Kind::UnknownName, rows_.joints[i]->at(4),
                          "joint " + std::to_string(j.id) + " names axial coefficients " +
                              std::to_string(j.axial_coefficient_id) +
                              ", which no AxCoefID defines");
         }
-        for (const auto& s : out_.sections) unique(section_rows, s.id, s.line, "property set");
-        for (const auto& m : out_.members) {
-            unique(member_rows, m.id, m.line, "member");
-            const auto& tokens = member_line_tokens(m.line);
-            auto refer = [&](std::map<int, int>& rows, int id, std::size_t column,
-                             const char* what) {
+        for (std::size_t i = 0; i < out_.sections.size(); ++i)
+            unique(section_rows, out_.sections[i].id, rows_.sections[i], "property set");
+        for (std::size_t i = 0; i < out_.members.size(); ++i) {
+            const Member& m = out_.members[i];
+            const aerodyn::Line* row = rows_.members[i];
+            unique(member_rows, m.id, row, "member");
+            auto refer = [&](std::map<int, int>& rows, int id, int column, const char* what) {
                 if (rows.count(id) || (m.section_kind == 2 && column >= 3)) return;
-                const int col = column < tokens.size() ? tokens[column] : 1;
-                d_.error(Kind::UnknownName, {out_.file, m.line, col},
+                d_.error(Kind::UnknownName, row->at(column),
                          "member " + std::to_string(m.id) + " names " + what + " " +
                              std::to_string(id) + ", which the file does not define");
             };
@@ -537,28 +540,26 @@ private:
             refer(section_rows, m.section1, 3, "property set");
             refer(section_rows, m.section2, 4, "property set");
             if (m.joint1 == m.joint2 && joint_rows.count(m.joint1))
-                d_.error(Kind::InvalidValue, {out_.file, m.line, tokens.size() > 2 ? tokens[2] : 1},
+                d_.error(Kind::InvalidValue, row->at(2),
                          "member " + std::to_string(m.id) + " joins joint " +
                              std::to_string(m.joint1) + " to itself");
         }
-        for (const auto& c : out_.member_coefficients)
-            if (!member_rows.count(c.member_id))
-                d_.error(Kind::UnknownName, {out_.file, c.line, 1},
-                         "member-based coefficients for member " + std::to_string(c.member_id) +
+        for (std::size_t i = 0; i < out_.member_coefficients.size(); ++i)
+            if (!member_rows.count(out_.member_coefficients[i].member_id))
+                d_.error(Kind::UnknownName, rows_.member_coefficients[i]->at(0),
+                         "member-based coefficients for member " +
+                             std::to_string(out_.member_coefficients[i].member_id) +
                              ", which the file does not define");
-    }
-
-    /// The columns of the tokens of a source line (for errors at a member's column).
-    std::vector<int> member_line_tokens(int line) const {
-        std::vector<int> cols;
-        for (const auto& t : elastodyn::tokenize(out_.file->line(line))) cols.push_back(t.col);
-        return cols;
     }
 
     EntryReader r_;
     diag::Diagnostics& d_;
     Input& out_;
     bool rectangular_ = false; // OpenFAST v4.1's tables of rectangular members follow
+    /// The lines of the rows kept, for errors at their columns (an included file's too).
+    struct {
+        std::vector<const aerodyn::Line*> joints, sections, members, member_coefficients;
+    } rows_;
     int errors_at_start_ = 0;
 };
 
@@ -567,14 +568,7 @@ private:
 std::optional<Input> read_hydrodyn_input(const std::shared_ptr<const diag::SourceFile>& file,
                                          diag::Diagnostics& diags,
                                          const aerodyn::IncludeReader& includes) {
-    const int errors = diags.error_count();
-    aerodyn::Cursor c(aerodyn::logical_lines(file, &includes, diags), file, diags);
-    Input out;
-    out.path = file->path();
-    out.file = file;
-    Reader(c, out).read();
-    if (diags.error_count() != errors) return std::nullopt;
-    return out;
+    return read_entries<Input, Reader>(file, diags, includes);
 }
 
 std::optional<Input> read_hydrodyn_input(const std::filesystem::path& path,

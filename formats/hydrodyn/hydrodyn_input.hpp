@@ -1,12 +1,14 @@
 #pragma once
 // HydroDyn's primary input file (OpenFAST v4/v5), read in the order HydroDyn's
-// ParseInputFileInfo reads it: key/value entries ("1   PotMod  - ..."), vectors and
+// HydroDyn_ParseInput reads it: key/value entries ("1   PotMod  - ..."), vectors and
 // 6x6 matrices of one row per line (AddF0, AddCLin, AddBLin, AddBQuad), tables under a
 // row of column names and a row of units (axial coefficients, joints, cross sections,
 // coefficient tables, members, fill groups, marine growth, member and joint outputs),
 // then the OUTPUT CHANNELS up to the END line. Values as written (SI units); the file's
 // relative paths stay relative to the file. Bad input: located errors and nullopt;
 // options read but not modelled: warnings at their line.
+// Rows keep `line`: their line in the file that holds them (for rows an '@' line
+// brings in, the included file's numbering).
 #include "aerodyn/lines.hpp"
 #include "diag/diagnostics.hpp"
 

@@ -14,9 +14,7 @@ using diag::Kind;
 using hydrodyn::EntryReader;
 
 diag::Location Input::location(const std::string& key) const {
-    for (const auto& [name, at] : entries)
-        if (elastodyn::same_key(name, key)) return at;
-    return diag::Location{file, 0, 0};
+    return hydrodyn::entry_location(entries, file, key);
 }
 
 namespace {
@@ -34,14 +32,11 @@ public:
     void read() {
         r_.cursor().skip_header(2);
         r_.need("Echo");
-        // After a section with an error the places of the next entries are unsure:
-        // the first error is the one to fix.
-        for (void (Reader::*section)() :
-             {&Reader::environment, &Reader::grid, &Reader::waves, &Reader::second_order,
-              &Reader::constrained, &Reader::current, &Reader::maccamy_fuchs, &Reader::outputs}) {
-            if (d_.error_count() != errors_at_start_) return;
-            (this->*section)();
-        }
+        hydrodyn::read_sections(*this,
+                                {&Reader::environment, &Reader::grid, &Reader::waves,
+                                 &Reader::second_order, &Reader::constrained, &Reader::current,
+                                 &Reader::maccamy_fuchs, &Reader::outputs},
+                                d_, errors_at_start_);
     }
 
 private:
@@ -90,7 +85,9 @@ private:
         r_.set(r_.need("WaveNDir"), out_.wave_n_dir);
         r_.set(r_.need("WaveDirRange"), out_.wave_dir_range);
         out_.wave_dir_range = std::fabs(out_.wave_dir_range); // as SeaState
-        r_.set(r_.need("WaveSeed(1)"), out_.seed1);
+        if (auto e = r_.need("WaveSeed(1)")) {
+            if (auto n = seed(*e, elastodyn::parse_number(e->value()))) out_.seed1 = *n;
+        }
         if (auto e = r_.need("WaveSeed(2)")) seed2(*e);
         r_.set(r_.need("WaveNDAmp"), out_.normal_amplitudes);
         r_.set(r_.need("WvKinFile"), out_.wave_kin_file);
@@ -126,6 +123,16 @@ private:
                                " (only still water, regular and JONSWAP waves are modelled)");
     }
 
+    /// A seed: a 32-bit integer, as SeaState's INTEGER(IntKi) reads it.
+    std::optional<int> seed(const Entry& e, std::optional<double> n) {
+        if (!n || *n != std::floor(*n) || *n < -2147483648.0 || *n > 2147483647.0) {
+            d_.error(Kind::InvalidValue, e.at(),
+                     "'" + e.key + "' must be a 32-bit integer, not '" + e.value() + "'");
+            return std::nullopt;
+        }
+        return static_cast<int>(*n);
+    }
+
     /// A number (the intrinsic generator's second seed) or RANLUX.
     void seed2(const Entry& e) {
         const std::string v = upper(e.value());
@@ -134,14 +141,11 @@ private:
                      "'WaveSeed(2)': invalid generator '" + e.value() + "'");
             return;
         }
-        if (auto n = elastodyn::parse_number(v)) {
-            if (*n != std::floor(*n) || *n < -2147483648.0 || *n > 2147483647.0) {
-                d_.error(Kind::InvalidValue, e.at(),
-                         "'WaveSeed(2)' must be a 32-bit integer or RANLUX");
-                return;
+        if (auto number = elastodyn::parse_number(v)) {
+            if (auto n = seed(e, number)) {
+                out_.seed2 = *n;
+                out_.generator = RandomGenerator::intrinsic;
             }
-            out_.seed2 = static_cast<int>(*n);
-            out_.generator = RandomGenerator::intrinsic;
             return;
         }
         if (v != "RANLUX") {
@@ -241,14 +245,7 @@ private:
 std::optional<Input> read_seastate_input(const std::shared_ptr<const diag::SourceFile>& file,
                                          diag::Diagnostics& diags,
                                          const aerodyn::IncludeReader& includes) {
-    const int errors = diags.error_count();
-    aerodyn::Cursor c(aerodyn::logical_lines(file, &includes, diags), file, diags);
-    Input out;
-    out.path = file->path();
-    out.file = file;
-    Reader(c, out).read();
-    if (diags.error_count() != errors) return std::nullopt;
-    return out;
+    return hydrodyn::read_entries<Input, Reader>(file, diags, includes);
 }
 
 std::optional<Input> read_seastate_input(const std::filesystem::path& path,

@@ -4,6 +4,7 @@
 #include "hydrodyn/hydrodyn_input.hpp"
 #include "support.hpp"
 
+#include <fstream>
 #include <numeric>
 
 using namespace yamsc;
@@ -519,12 +520,12 @@ TEST_CASE("errors at their line and column, with the entry's name") {
               "PropPot (True or False) expected");
     check_one(replaced(strip, "    3         3          4           2",
                        "    2         3          4           2"),
-              S::error, "    2         3          4           2", "    2",
+              S::error, "    2         3          4           2", "    |2",
               "member 2 is defined twice (line " +
                   std::to_string(line_of(strip, "    2         2          3           1")) + ")");
     check_one(replaced(strip, "    4     0.00000     0.00000    10.00000      1",
                        "    4     0.00000     0.00000    10.00000      2"),
-              S::error, "    4     0.00000     0.00000    10.00000      2", "    4",
+              S::error, "    4     0.00000     0.00000    10.00000      2", "10.00000      |2",
               "names axial coefficients 2");
     check_one(replaced(strip, "       0.60        0.60    0.969954    0.969954        1.00 ",
                        "       0.60        0.60    0.969954    0.969954        MCF  "),
@@ -571,4 +572,85 @@ TEST_CASE("the fuzz seeds are files the reader accepts (tables with rows; before
         CHECK(of(diags, Severity::error).empty());
         CHECK(in->members.size() == 3);
     }
+}
+
+TEST_CASE("more located errors: a member on one joint, MDivSize, NBodyMod, a member-based row "
+          "for no member") {
+    const std::string strip = file_text("oc3_spar_strip.dat");
+    const std::string member3 =
+        "    3         3          4           2            2           1         0         0.5000";
+    {
+        const std::string t = replaced(strip, member3,
+                                       "    3         3          3           2            2        "
+                                       "   1         0         0.5000");
+        const auto r = read(t);
+        const auto e = of(r->diags, Severity::error);
+        REQUIRE(e.size() == 1);
+        CHECK(e[0].loc.line == line_of(t, "    3         3          3"));
+        CHECK(e[0].loc.col == 26);
+        CHECK(e[0].message == "member 3 joins joint 3 to itself");
+    }
+    {
+        const std::string t = replaced(strip, member3,
+                                       "    3         3          4           2            2        "
+                                       "   1         0         0.0000");
+        const auto r = read(t);
+        const auto e = of(r->diags, Severity::error);
+        REQUIRE(e.size() == 1);
+        CHECK(e[0].loc.line == line_of(t, "0.0000      1"));
+        CHECK(e[0].loc.col == col_of(t, "0.0000      1"));
+        CHECK(e[0].message == "members row 3: MDivSize must be positive");
+    }
+    {
+        const std::string t =
+            replaced(strip, "             1   NBodyMod", "             4   NBodyMod");
+        const auto r = read(t);
+        const auto e = of(r->diags, Severity::error);
+        REQUIRE(e.size() == 1);
+        CHECK(e[0].loc.line == line_of(t, "NBodyMod"));
+        CHECK(e[0].loc.col == 14);
+        CHECK(e[0].message == "'NBodyMod' must be 1, 2 or 3");
+    }
+    {
+        std::string t = replaced(strip, "0   NCoefMembersCyl", "1   NCoefMembersCyl");
+        t = replaced(t, "---------------------- MEMBER-BASED RECTANGULAR",
+                     "9  0.6 0.6 0.6 0.6 1 1 1 1 1 1 1 1 0 0 0 0 0 0 0 0 1 1 1 1 1 1 1 1\n"
+                     "---------------------- MEMBER-BASED RECTANGULAR");
+        const auto r = read(t);
+        const auto e = of(r->diags, Severity::error);
+        REQUIRE(e.size() == 1);
+        CHECK(e[0].loc.line == line_of(t, "9  0.6 0.6"));
+        CHECK(e[0].loc.col == 1);
+        CHECK(e[0].message ==
+              "member-based coefficients for member 9, which the file does not define");
+    }
+}
+
+TEST_CASE("rows from a file an '@' line includes: read, and their errors located in it") {
+    const std::string dir = std::string(YAMSC_TEST_BINARY_DIR) + "/hydro_formats_include/";
+    std::filesystem::create_directories(dir);
+    std::string main = file_text("oc3_spar_strip.dat");
+    const std::string rows = "    1         1          2           1            1           1      "
+                             "   0         0.5000      1         1        FALSE\n"
+                             "    2         2          3           1            2           1      "
+                             "   0         0.5000      1         1        FALSE\n"
+                             "    3         3          7           2            2           1      "
+                             "   0         0.5000      1         1        FALSE\n";
+    const auto first = main.find("    1         1          2           1");
+    const auto last = main.find("---------------------- FILLED MEMBERS");
+    main.replace(first, last - first, "@members.inc\n");
+    {
+        std::ofstream(dir + "hd.dat") << main;
+        std::ofstream(dir + "members.inc") << rows;
+    }
+    diag::Diagnostics diags;
+    const auto in = hydrodyn::read_hydrodyn_input(std::filesystem::path(dir + "hd.dat"), diags);
+    CHECK(!in);
+    const auto e = of(diags, Severity::error);
+    REQUIRE(e.size() == 1);
+    REQUIRE(e[0].loc.file);
+    CHECK(e[0].loc.file->path() == dir + "members.inc");
+    CHECK(e[0].loc.line == 3);
+    CHECK(e[0].loc.col == 26);
+    CHECK(e[0].message == "member 3 names joint 7, which the file does not define");
 }

@@ -130,6 +130,7 @@ TEST_CASE("values as OpenFAST accepts them: numbers for defaults, 1P#, a numeric
     t = with_value(t, "WaveStMod", "3");
     t = with_value(t, "WavePkShp", "3.3");
     t = with_value(t, "WaveSeed(2)", "-42");
+    t = with_value(t, "WaveSeed(1)", "2147483647");
     t = with_value(t, "WaveNDAmp", ".false.");
     t = with_value(t, "CurrSSDir", "45");
     t = replaced(t, "           600   WaveTMax",
@@ -151,6 +152,7 @@ TEST_CASE("values as OpenFAST accepts them: numbers for defaults, 1P#, a numeric
     CHECK(in.stretching == seastate::Stretching::wheeler);
     CHECK(in.peak_shape == 3.3);
     CHECK(in.seed2 == -42);
+    CHECK(in.seed1 == 2147483647);
     CHECK(in.generator == seastate::RandomGenerator::intrinsic);
     CHECK(!in.normal_amplitudes);
     CHECK(in.curr_ss_dir_deg == 45);
@@ -190,7 +192,9 @@ TEST_CASE("errors at their line and column, with the entry's name") {
     check_at_value(with_value(t, "WaveSeed(2)", "MT19937"), S::error, "WaveSeed(2)",
                    "must be an integer or RANLUX, not 'MT19937'");
     check_at_value(with_value(t, "WaveSeed(2)", "3000000000"), S::error, "WaveSeed(2)",
-                   "32-bit integer");
+                   "must be a 32-bit integer, not '3000000000'");
+    check_at_value(with_value(t, "WaveSeed(1)", "1.5"), S::error, "WaveSeed(1)",
+                   "'WaveSeed(1)' must be a 32-bit integer, not '1.5'");
     check_at_value(with_value(t, "WaveStMod", "4"), S::error, "WaveStMod",
                    "'WaveStMod' must be 0 to 3");
     check_at_value(with_value(t, "NWaveElev", "10"), S::error, "NWaveElev",
