@@ -41,5 +41,8 @@ std::shared_ptr<const runtime::LoadBlock> build_blade_elements(const model::Load
 /// MAP++'s lines of --mooring on the platform (mooring_block.cpp).
 std::shared_ptr<const runtime::LoadBlock> build_mooring(const model::LoadBlock& decl,
                                                         const BlockContext& c);
+/// HydroDyn's loads of --hydro (and --sea-state's waves) on the platform: a
+/// block per part of the file (hydrodyn_block.cpp, hydrodyn_parts.hpp).
+runtime::LoadBlocks build_hydrodyn(const model::LoadBlock& decl, const BlockContext& c);
 
 } // namespace yamsc::analysis

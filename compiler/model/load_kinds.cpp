@@ -65,7 +65,7 @@ const std::vector<LoadKindInfo>& load_kinds() {
         {LoadKind::hydrodyn,
          "hydrodyn",
          platform_roles("the body HydroDyn's members and potential flow move with", false),
-         {"Wave1Elev"},
+         {}, // the parts' own (analysis/hydrodyn_parts.hpp)
          -1},
     };
     return kinds;

@@ -6,6 +6,7 @@
 #include "analysis/loaded_model.hpp"
 #include "analysis/map_mooring.hpp"
 #include "codegen/routines.hpp"
+#include "diag/errors.hpp"
 
 #include <yamsc/mooring/mooring_system.hpp>
 #include <yamsc/trim.hpp>
@@ -13,6 +14,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
 #include <optional>
 #include <sstream>
 
@@ -140,4 +142,41 @@ TEST_CASE("load mooring: trim's offset balances buoyancy, weight, thrust and the
     // Downwind, and tilted downwind (the thrust acts 90 m above the lines).
     CHECK(t.q[0] > 0);
     CHECK(t.q[4] > 0);
+}
+
+TEST_CASE("load hydrodyn: --hydro's file is read with located errors, its water checked") {
+    // The spar with a hydrodyn declaration beside its mooring, in the build folder.
+    std::string text;
+    {
+        std::ifstream in(model_path);
+        std::stringstream s;
+        s << in.rdbuf();
+        text = s.str();
+    }
+    const std::string anchor = "load mooring lines {";
+    REQUIRE(text.find(anchor) != std::string::npos);
+    text.insert(text.find(anchor),
+                "load hydrodyn hydro { platform = platform; density = rho_w }\n");
+    const std::string path = "oc3_spar_hydrodyn.mbd";
+    std::ofstream(path) << text;
+    std::ostringstream err;
+    auto l = analysis::load(path, {}, "", false, err, {}, codegen::abi_routines());
+    REQUIRE_MESSAGE(l, err.str());
+    analysis::BlockOptions b;
+    // A SeaState file given as the HydroDyn file: the error is at its line.
+    b.hydro = std::string(YAMSC_TEST_DATA_DIR) + "/hydro/oc3_sea_state.dat";
+    try {
+        analysis::with_load_blocks(*l, b);
+        FAIL("no error");
+    } catch (const diag::UserError& e) {
+        CHECK(std::string(e.what()).find("oc3_sea_state.dat:5:1: error:") != std::string::npos);
+    }
+    // Without a depth role nor a SeaState file, the water has no depth.
+    b.hydro = std::string(YAMSC_TEST_DATA_DIR) + "/hydro/oc3_spar_strip.dat";
+    try {
+        analysis::with_load_blocks(*l, b);
+        FAIL("no error");
+    } catch (const diag::UserError& e) {
+        CHECK(std::string(e.what()).find("no water depth") != std::string::npos);
+    }
 }
