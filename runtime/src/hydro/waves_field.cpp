@@ -73,7 +73,7 @@ LinearWaveField::LinearWaveField(const WaveSettings& s)
         c.omega = m * d_omega_;
         c.k = wave_number(c.omega, water_.gravity, water_.depth);
         c.amplitude = amplitudes[static_cast<std::size_t>(m)];
-        c.e2kh = std::exp(-2 * c.k * water_.depth);
+        c.e2kh = 2 * c.k * water_.depth > 700 ? 0.0 : std::exp(-2 * c.k * water_.depth);
         c.tanh_kh = (1 - c.e2kh) / (1 + c.e2kh);
         terms_.push_back(c);
         if (c.amplitude != 0.0) components_.push_back({c.omega, c.k, c.amplitude});
@@ -106,6 +106,16 @@ double LinearWaveField::elevation(double t, double x, double y) const {
     return eta;
 }
 
+// Written with exp(-2kh) so that deep water neither overflows nor loses digits; the
+// exponentials below exp(-700) are zero, taken before the library's slow underflow.
+LinearWaveField::DepthFactors LinearWaveField::depth_factors(const Term& m, double z, double h,
+                                                             bool slope) {
+    if (slope) return {m.k, m.k / m.tanh_kh, m.k * m.tanh_kh};
+    auto small_exp = [](double x) { return x < -700 ? 0.0 : std::exp(x); };
+    const double ez = small_exp(m.k * z), ed = small_exp(-m.k * (z + 2 * h));
+    return {(ez + ed) / (1 - m.e2kh), (ez - ed) / (1 - m.e2kh), (ez + ed) / (1 + m.e2kh)};
+}
+
 // The unstretched Airy kinematics at depth z (-h <= z <= 0) as horizontal (along the
 // heading) and vertical parts; with `slope`, their z-derivatives at z = 0 instead.
 LinearWaveField::Column LinearWaveField::column(double t, double xp, double z, bool slope) const {
@@ -116,20 +126,9 @@ LinearWaveField::Column LinearWaveField::column(double t, double xp, double z, b
     const double h = water_.depth, rho_g = water_.density * water_.gravity;
     for (std::size_t i = 0; i < terms_.size(); ++i) {
         const Term& m = terms_[i];
+        const auto [ch_sh, sh_sh, ch_ch] = depth_factors(m, z, h, slope);
+        if (ch_sh == 0 && ch_ch == 0) continue; // a short wave, deep below
         const std::complex<double> a = m.amplitude * e[i] * std::polar(1.0, -m.k * xp);
-        // cosh(k(z+h))/sinh(kh), sinh(k(z+h))/sinh(kh), cosh(k(z+h))/cosh(kh), written
-        // with exp(-2kh) so that deep water neither overflows nor loses digits.
-        double ch_sh, sh_sh, ch_ch;
-        if (slope) {
-            ch_sh = m.k;
-            sh_sh = m.k / m.tanh_kh;
-            ch_ch = m.k * m.tanh_kh;
-        } else {
-            const double ez = std::exp(m.k * z), ed = std::exp(-m.k * (z + 2 * h));
-            ch_sh = (ez + ed) / (1 - m.e2kh);
-            sh_sh = (ez - ed) / (1 - m.e2kh);
-            ch_ch = (ez + ed) / (1 + m.e2kh);
-        }
         const double w = m.omega;
         c.u += w * a.real() * ch_sh;
         c.w += -w * a.imag() * sh_sh;

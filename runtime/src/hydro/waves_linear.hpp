@@ -31,6 +31,12 @@ public:
         double omega = 0, k = 0, e2kh = 0, tanh_kh = 0;
         std::complex<double> amplitude;
     };
+    /// cosh(k(z+h))/sinh(kh), sinh(k(z+h))/sinh(kh), cosh(k(z+h))/cosh(kh), or with
+    /// `slope` their z-derivatives at z = 0.
+    struct DepthFactors {
+        double ch_sh = 0, sh_sh = 0, ch_ch = 0;
+    };
+    static DepthFactors depth_factors(const Term& m, double z, double h, bool slope);
     const std::vector<Term>& terms() const { return terms_; }
     int first_index() const { return first_; }
     double cos_dir() const { return cos_dir_; }

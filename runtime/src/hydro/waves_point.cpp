@@ -1,10 +1,12 @@
 // A fixed point's flow tabulated on SeaState's time grid (t_j = j WaveDT, one period)
-// by inverse FFTs, as SeaState tabulates its grid's nodes, and interpolated linearly
-// in time as SeaState's GridInterp4D does. Wheeler stretching moves the evaluation
+// by inverse FFTs, as SeaState tabulates its grid's nodes, and interpolated in time
+// as SeaState's GridInterp does along its periodic time axis: the cubic through the
+// four nearest samples with Catmull-Rom's end slopes. Wheeler stretching moves the evaluation
 // depth with the surface, so it is not tabulated: those points evaluate exactly.
 #include "../wind/turbulence_fft.hpp"
 #include "waves_linear.hpp"
 
+#include <array>
 #include <cmath>
 
 namespace yamsc::runtime::hydro {
@@ -59,15 +61,7 @@ public:
             for (std::size_t q = 0; q < nt; ++q) {
                 const auto& m = terms[q];
                 a[q] = m.amplitude * std::polar(1.0, -m.k * xp);
-                double ch_sh, sh_sh, ch_ch;
-                if (slope) {
-                    ch_sh = m.k, sh_sh = m.k / m.tanh_kh, ch_ch = m.k * m.tanh_kh;
-                } else {
-                    const double ez = std::exp(m.k * ze), ed = std::exp(-m.k * (ze + 2 * h));
-                    ch_sh = (ez + ed) / (1 - m.e2kh);
-                    sh_sh = (ez - ed) / (1 - m.e2kh);
-                    ch_ch = (ez + ed) / (1 + m.e2kh);
-                }
+                const auto [ch_sh, sh_sh, ch_ch] = LinearWaveField::depth_factors(m, ze, h, slope);
                 u[q] = m.omega * ch_sh * a[q];
                 w[q] = i1 * m.omega * sh_sh * a[q];
                 du[q] = i1 * m.omega * u[q];
@@ -94,24 +88,22 @@ public:
     }
 
     double elevation(double t) const override {
-        std::size_t j;
-        double f;
-        locate(t, j, f);
-        return at(eta_, j, f);
+        Stencil st;
+        locate(t, st);
+        return at(eta_, st);
     }
 
     FlowAt flow(double t) const override {
         if (!wet_) return {};
-        std::size_t j;
-        double f;
-        locate(t, j, f);
-        if (stretching_ != Stretching::none && z_ > at(eta_, j, f)) return {};
-        double u = at(value_.u, j, f), w = at(value_.w, j, f), du = at(value_.du, j, f),
-               dw = at(value_.dw, j, f), p = at(value_.p, j, f);
+        Stencil st;
+        locate(t, st);
+        if (stretching_ != Stretching::none && z_ > at(eta_, st)) return {};
+        double u = at(value_.u, st), w = at(value_.w, st), du = at(value_.du, st),
+               dw = at(value_.dw, st), p = at(value_.p, st);
         if (slope_) {
-            u += z_ * at(slope_values_.u, j, f), w += z_ * at(slope_values_.w, j, f);
-            du += z_ * at(slope_values_.du, j, f), dw += z_ * at(slope_values_.dw, j, f);
-            p += z_ * at(slope_values_.p, j, f);
+            u += z_ * at(slope_values_.u, st), w += z_ * at(slope_values_.w, st);
+            du += z_ * at(slope_values_.du, st), dw += z_ * at(slope_values_.dw, st);
+            p += z_ * at(slope_values_.p, st);
         }
         FlowAt r;
         r.velocity = {u * cos_, u * sin_, w};
@@ -121,17 +113,25 @@ public:
     }
 
 private:
-    void locate(double t, std::size_t& j, double& f) const {
+    struct Stencil {
+        std::array<std::size_t, 4> j;
+        std::array<double, 4> w;
+    };
+    void locate(double t, Stencil& st) const {
         double tr = std::fmod(t, period_);
         if (tr < 0) tr += period_;
         const double s = tr / dt_;
-        const double last = static_cast<double>(eta_.size() - 2);
-        const double fl = std::min(std::floor(s), last);
-        j = static_cast<std::size_t>(fl);
-        f = s - fl;
+        const auto n = eta_.size() - 1;
+        const double fl = std::min(std::floor(s), static_cast<double>(n - 1));
+        const auto j = static_cast<std::size_t>(fl);
+        const double f = s - fl, f2 = f * f, f3 = f2 * f;
+        st.j = {(j + n - 1) % n, j, (j + 1) % n, (j + 2) % n};
+        st.w = {-0.5 * f3 + f2 - 0.5 * f, 1.5 * f3 - 2.5 * f2 + 1, -1.5 * f3 + 2 * f2 + 0.5 * f,
+                0.5 * f3 - 0.5 * f2};
     }
-    static double at(const std::vector<double>& v, std::size_t j, double f) {
-        return v[j] + f * (v[j + 1] - v[j]);
+    static double at(const std::vector<double>& v, const Stencil& st) {
+        return st.w[0] * v[st.j[0]] + st.w[1] * v[st.j[1]] + st.w[2] * v[st.j[2]] +
+               st.w[3] * v[st.j[3]];
     }
 
     double dt_, period_, z_, cos_, sin_;

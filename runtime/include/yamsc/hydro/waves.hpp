@@ -32,7 +32,8 @@ struct WaveComponent {
 };
 
 /// The flow at one fixed point, tabulated on the field's time grid at construction
-/// and interpolated linearly in time as SeaState interpolates its grid: O(1) a call.
+/// and interpolated in time as SeaState interpolates its grid (periodic cubic,
+/// Catmull-Rom): O(1) a call.
 class PointWaves {
 public:
     virtual ~PointWaves() = default;
