@@ -1,5 +1,6 @@
 #include "yamsc/load_block.hpp"
 
+#include "added_mass.hpp"
 #include "held_loads.hpp"
 
 #include <Eigen/Dense>
@@ -107,6 +108,94 @@ struct Closed {
         held->at(t, values.data());
         std::copy(values.begin(), values.begin() + nl, p.loads.begin());
         std::copy(values.begin() + nl, values.end(), p.out.begin());
+        return p;
+    }
+
+    /// Whether the block's loads depend on the accelerations (LoadBlock::added_mass).
+    bool added_mass = false;
+    /// The last added-mass matrix evaluated, for loose coupling (whose held
+    /// points do not read the motion again).
+    std::shared_ptr<Vec> last_added_mass;
+
+    /// The added-mass matrix A (nl x nl) at a point evaluated here, or with
+    /// loose coupling the last one.
+    Vec added_mass_at(double t, const double* qd, const Point& p) const {
+        if (p.r.empty() && last_added_mass && !last_added_mass->empty()) return *last_added_mass;
+        const Vec r = p.r.empty() ? Vec(at(nr), 0.0) : p.r;
+        Vec A(at(nl * nl), 0.0);
+        block->added_mass(t, states(qd), r.data(), A.data());
+        if (last_added_mass) *last_added_mass = A;
+        return A;
+    }
+
+    /// The base's state [q, q', base states] from q and q' given apart (its
+    /// states after q', ModelView's convention).
+    Vec base_state(const double* q, const double* qd) const {
+        Vec x(q, q + nq);
+        x.insert(x.end(), qd, qd + (nxb - nq));
+        return x;
+    }
+
+    /// The base's q'' at state x and inputs ue.
+    Vec base_qdd(double t, const Vec& x, const Vec& ue) const {
+        Vec xdot(at(nxb));
+        base->rhs(t, x.data(), ue.data(), xdot.data());
+        return Vec(xdot.begin() + nq, xdot.begin() + 2 * nq);
+    }
+
+    /// W = M^-1 G and G of the added-mass algebra at state x with inputs ue (the
+    /// base's q'' at ue is qdd0), from one base rhs per load.
+    detail::AddedMassTerms added_mass_terms(double t, const Vec& x, const Vec& ue,
+                                            const Vec& qdd0) const {
+        const std::vector<int>& loads = block->ports().loads;
+        std::vector<Vec> qdd_k;
+        Vec h(at(nl));
+        for (int k = 0; k < nl; ++k) {
+            Vec up = ue;
+            const std::size_t c = at(loads[at(k)]);
+            h[at(k)] = 1.0 + std::fabs(ue[c]); // exact at any step: F is affine in its loads
+            up[c] += h[at(k)];
+            qdd_k.push_back(base_qdd(t, x, up));
+        }
+        Vec M(at(nq * nq));
+        base->mass_matrix(t, x.data(), ue.data(), M.data());
+        return detail::added_mass_terms(nq, nl, M.data(), qdd0, qdd_k, h);
+    }
+
+    /// Adds the loads' acceleration part, -A s with s = G^T q'' of the coupled
+    /// solution, to p's loads (rhs and outputs, which see the loads applied).
+    void accelerate(double t, const double* q, const double* qd, const double* u, Point& p) const {
+        const Vec x = base_state(q, qd);
+        const Vec ue = effective_inputs(p, u);
+        const Vec qdd0 = base_qdd(t, x, ue);
+        const detail::AddedMassTerms terms = added_mass_terms(t, x, ue, qdd0);
+        const Vec A = added_mass_at(t, qd, p);
+        subtract_added_loads(A, detail::coupled_accelerations(terms, A.data(), qdd0), p);
+    }
+
+    /// The same, with q'' given (outputs_from_qdd): s = G^T q''.
+    void accelerate_with(double t, const double* q, const double* qd, const double* qdd,
+                         const double* u, Point& p) const {
+        for (int i = 0; i < nq; ++i)
+            if (std::isnan(qdd[i])) return; // the caller reads the motion only
+        const Vec x = base_state(q, qd);
+        const Vec ue = effective_inputs(p, u);
+        const detail::AddedMassTerms terms = added_mass_terms(t, x, ue, base_qdd(t, x, ue));
+        Vec s(at(nl), 0.0);
+        for (int k = 0; k < nl; ++k)
+            for (int r = 0; r < nq; ++r) s[at(k)] += terms.G[at(r * nl + k)] * qdd[r];
+        subtract_added_loads(added_mass_at(t, qd, p), s, p);
+    }
+
+    void subtract_added_loads(const Vec& A, const Vec& s, Point& p) const {
+        for (int k = 0; k < nl; ++k)
+            for (int j = 0; j < nl; ++j) p.loads[at(k)] -= A[at(k * nl + j)] * s[at(j)];
+    }
+
+    /// The point as rhs and outputs apply it: with the acceleration part.
+    Point evaluate_accelerated(double t, const double* q, const double* qd, const double* u) const {
+        Point p = evaluate(t, q, qd, u);
+        if (added_mass) accelerate(t, q, qd, u, p);
         return p;
     }
 
@@ -301,6 +390,13 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
     c.nl = static_cast<int>(ports.loads.size());
     const std::vector<std::string> out_names = block->output_names();
     c.nout = static_cast<int>(out_names.size());
+    c.added_mass = block->has_added_mass();
+    if (c.added_mass) {
+        if (!base_view.rhs || !base_view.mass_matrix)
+            throw std::invalid_argument("load block: an added mass needs the view's rhs and mass "
+                                        "matrix");
+        c.last_added_mass = std::make_shared<Vec>();
+    }
     if (coupling.mode == Coupling::loose) {
         if (c.nz > 0)
             throw std::invalid_argument("load block: a block with continuous states couples "
@@ -340,14 +436,26 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
 
     if (base->rhs)
         v.rhs = [c, nq, nxb](double t, const double* x, const double* u, double* xdot) {
-            const Closed::Point p = c.evaluate(t, x, x + nq, u);
+            const Closed::Point p = c.evaluate_accelerated(t, x, x + nq, u);
             c.base->rhs(t, x, c.effective_inputs(p, u).data(), xdot);
             for (int i = 0; i < c.nz; ++i) xdot[nxb + i] = p.rates[at(i)];
         };
     if (base->mass_matrix)
         v.mass_matrix = [c](double t, const double* q, const double* u, double* M) {
-            // M does not depend on the loads; u only for prescribed motion.
+            // M does not depend on the loads (u only for prescribed motion), but
+            // an added mass adds G A G^T, at rest (G depends on q only).
             c.base->mass_matrix(t, q, u, M);
+            if (!c.added_mass) return;
+            // q' = 0, then the base's and the block's states at their start.
+            Vec z(at(c.nq), 0.0);
+            z.insert(z.end(), c.base->block_initial_states.begin(),
+                     c.base->block_initial_states.end());
+            const Vec z0 = c.block->initial_states();
+            z.insert(z.end(), z0.begin(), z0.end());
+            const Closed::Point p = c.evaluate_here(t, q, z.data(), u);
+            const Vec x = c.base_state(q, z.data()), ue = c.effective_inputs(p, u);
+            const detail::AddedMassTerms terms = c.added_mass_terms(t, x, ue, c.base_qdd(t, x, ue));
+            detail::add_added_mass(terms, c.added_mass_at(t, z.data(), p).data(), M);
         };
     const bool second_order = v.nz == 0;
     if (base->forcing && second_order)
@@ -358,7 +466,7 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
     v.outputs = [c](double t, const double* q, const double* qd, const double* u, double* y) {
         // The loads from the outputs read, then every output again with the
         // loads applied: those that read q'' or a reaction load see them too.
-        const Closed::Point p = c.evaluate(t, q, qd, u);
+        const Closed::Point p = c.evaluate_accelerated(t, q, qd, u);
         c.base->outputs(t, q, qd, c.effective_inputs(p, u).data(), y);
         for (int i = 0; i < c.nout; ++i) y[c.base->ny + i] = p.out[at(i)];
     };
@@ -366,7 +474,8 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
     if (base->outputs_from_qdd)
         v.outputs_from_qdd = [c](double t, const double* q, const double* qd, const double* qdd,
                                  const double* u, double* y) {
-            const Closed::Point p = c.evaluate(t, q, qd, u);
+            Closed::Point p = c.evaluate(t, q, qd, u);
+            if (c.added_mass) c.accelerate_with(t, q, qd, qdd, u, p);
             c.base->outputs_from_qdd(t, q, qd, qdd, c.effective_inputs(p, u).data(), y);
             for (int i = 0; i < c.nout; ++i) y[c.base->ny + i] = p.out[at(i)];
         };
@@ -375,7 +484,8 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
                           double* dF_dq, double* dF_dqd,
                           double* dF_du) { c.jacobians(t, q, qd, u, dF_dq, dF_dqd, dF_du); };
     const bool exact = base->nz == 0 && base->mass_matrix && base->jacobians;
-    if (base->rhs_jacobian && (exact || base->rhs))
+    // With an added mass the integrators take their own differences of rhs.
+    if (base->rhs_jacobian && (exact || base->rhs) && !c.added_mass)
         v.rhs_jacobian = [c](double t, const double* x, const double* u, double* J) {
             c.rhs_jacobian(t, x, u, J);
         };
