@@ -61,6 +61,9 @@ case $target in
   fuzz_hydrodyn_input)
     seeds=("$root"/tests/data/hydro/oc3_spar_*.dat "$here"/seeds/hydrodyn/*)
     dict= ;;
+  fuzz_wamit)
+    seeds=("$here"/seeds/wamit/*)
+    dict= ;;
   fuzz_seastate_input)
     seeds=("$root"/tests/data/hydro/oc3_sea_state.dat "$here"/seeds/seastate/*)
     dict= ;;

@@ -157,7 +157,7 @@ private:
     // (rho g V0 and its moment about the point), in the frame turned by the yaw
     // angle, then to ground axes.
     Vector6 hydrostatics(const PlatformMotion& m) const {
-        const double rho_g_v = s_.density * s_.gravity * s_.displaced_volume;
+        const double rho_g_v = s_.water.density * s_.water.gravity * s_.displaced_volume;
         Vector6 h = Vector6::Zero();
         for (std::size_t i = 2; i < 5; ++i)
             for (std::size_t j = 2; j < 5; ++j)
@@ -176,30 +176,30 @@ private:
     }
 
     void prepare_excitation() {
-        if (s_.excitation.omega.empty() || s_.waves.empty()) return;
-        forces_.reserve(s_.waves.size());
-        for (const WaveComponent& w : s_.waves) {
-            const auto x = s_.excitation.at(w.omega, w.direction);
+        if (s_.excitation.omega.empty() || !s_.waves) return;
+        const std::vector<WaveComponent>& waves = s_.waves->components();
+        omegas_.reserve(waves.size());
+        forces_.reserve(waves.size());
+        for (const WaveComponent& w : waves) {
+            omegas_.push_back(w.omega);
+            const auto x = s_.excitation.at(w.omega, s_.waves->direction());
             std::array<std::complex<double>, 6> f;
             for (std::size_t i = 0; i < 6; ++i) f[i] = x[i] * w.amplitude;
             forces_.push_back(f);
         }
-        if (!(s_.excitation_dt > 0)) return;
-        if (!(s_.excitation_period >= s_.excitation_dt) ||
-            s_.excitation_period / s_.excitation_dt > 1e8)
+        const double dt = s_.waves->time_step(), period = s_.waves->period();
+        if (!(dt > 0)) return;
+        if (!(period >= dt) || period / dt > 1e8)
             throw std::invalid_argument("potential flow: the excitation's period must hold its "
                                         "step (at most 1e8 times)");
-        const std::size_t n =
-            static_cast<std::size_t>(std::llround(s_.excitation_period / s_.excitation_dt));
+        const std::size_t n = static_cast<std::size_t>(std::llround(period / dt));
         table_.assign(n, Vector6::Zero());
         for (std::size_t c = 0; c < forces_.size(); ++c) {
-            const std::complex<double> step = std::polar(1.0, s_.waves[c].omega * s_.excitation_dt);
+            const std::complex<double> step = std::polar(1.0, omegas_[c] * dt);
             std::complex<double> rot = 1;
             for (std::size_t k = 0; k < n; ++k) {
                 // Restart the rotation now and then: its rounding grows with k.
-                if (k % 1024 == 0)
-                    rot = std::polar(1.0,
-                                     s_.waves[c].omega * static_cast<double>(k) * s_.excitation_dt);
+                if (k % 1024 == 0) rot = std::polar(1.0, omegas_[c] * static_cast<double>(k) * dt);
                 for (int i = 0; i < 6; ++i)
                     table_[k][i] += (forces_[c][static_cast<std::size_t>(i)] * rot).real();
                 rot *= step;
@@ -212,16 +212,17 @@ private:
         if (forces_.empty()) return f;
         if (table_.empty()) {
             for (std::size_t c = 0; c < forces_.size(); ++c) {
-                const std::complex<double> rot = std::polar(1.0, s_.waves[c].omega * t);
+                const std::complex<double> rot = std::polar(1.0, omegas_[c] * t);
                 for (int i = 0; i < 6; ++i)
                     f[i] += (forces_[c][static_cast<std::size_t>(i)] * rot).real();
             }
             return f;
         }
-        const double period = s_.excitation_dt * static_cast<double>(table_.size());
+        const double dt = s_.waves->time_step();
+        const double period = dt * static_cast<double>(table_.size());
         double x = std::fmod(t, period);
         if (x < 0) x += period;
-        const double u = x / s_.excitation_dt;
+        const double u = x / dt;
         const std::size_t k = std::min(table_.size() - 1, static_cast<std::size_t>(u));
         const double s = u - static_cast<double>(k);
         return (1 - s) * table_[k] + s * table_[(k + 1) % table_.size()];
@@ -231,6 +232,7 @@ private:
     BlockPorts ports_;
     Matrix6 added_mass_;
     std::vector<Matrix6> kernel_;
+    std::vector<double> omegas_;                              // the components' frequencies
     std::vector<std::array<std::complex<double>, 6>> forces_; // X a per wave component
     std::vector<Vector6> table_;                              // the excitation on its grid
     mutable VelocityHistory history_;

@@ -7,20 +7,11 @@
 // excitation from the .3 (ExctnMod 1, ExctnDisp 0), plus the additional matrices
 // (additional_loads.hpp). Conventions: docs/hydrodynamics.md, "Potential flow".
 #include <yamsc/hydro/additional_loads.hpp>
+#include <yamsc/hydro/waves.hpp>
 
 #include <complex>
 
 namespace yamsc::runtime::hydro {
-
-/// One component of a wave field, as the field's elevation at the global origin
-/// is their sum: eta(t, 0, 0) = sum Re{amplitude exp(i omega t)}; `direction`
-/// [rad] is where the component travels toward (from x toward y). WAMIT's phase
-/// convention is the same, so the excitation is sum Re{X amplitude exp(i omega t)}.
-struct WaveComponent {
-    double omega = 0;
-    std::complex<double> amplitude;
-    double direction = 0;
-};
 
 /// The excitation per unit wave amplitude, dimensional [N/m, N m/m], at the
 /// WAMIT reference point in ground axes, tabulated as HydroDyn does: frequencies
@@ -44,12 +35,14 @@ struct PotentialFlowSetup {
     double kernel_dt = 0;               // RdtnDT; 0: no radiation memory (RdtnMod 0)
     std::vector<Mat6> radiation_kernel; // K(k kernel_dt), k = 0 ...
     ExcitationTable excitation;         // empty: no excitation (ExctnMod 0)
-    /// The wave field's components (still water: none) and, when dt > 0, the grid
-    /// on which the excitation is tabulated once and interpolated linearly in time,
-    /// periodic with `period` (SeaState's WaveDT, WaveTMax), as HydroDyn's WaveExctn.
-    std::vector<WaveComponent> waves;
-    double excitation_dt = 0, excitation_period = 0;
-    double density = 1025, gravity = 9.80665;
+    /// The waves (null: still water). The excitation is sum Re{X(w, dir) a exp(i w t)}
+    /// over the field's components (WAMIT's phase is the field's: the elevation at the
+    /// global origin is sum Re{a exp(i w t)}), tabulated once on the field's time grid
+    /// and interpolated linearly in time, periodic with its period, as HydroDyn's
+    /// WaveExctn; summed at each call when the field has no grid.
+    std::shared_ptr<const WaveField> waves;
+    Water
+        water; // its density and gravity give the buoyancy rho g V0 (the matrices are dimensional)
     PlatformMatrices additional; // HydroDyn applies them with PotMod 1
     Vec3 origin_at_rest{};
     std::vector<int> frame_outputs, loads; // the body role's mesh (18 and 6)
