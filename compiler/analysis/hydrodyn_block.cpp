@@ -2,11 +2,13 @@
 // [--sea-state SeaState.dat]`: HydroDyn's loads on the platform's mesh channels,
 // one declaration for the whole file (docs/hydrodynamics.md, "Using it"). The
 // water is the declaration's (its depth, density and gravity roles), else the
-// SeaState file's, else 1025 kg/m^3 and 9.80665 m/s^2. The file's parts are
-// the blocks of hydrodyn_parts(): each part applies to the files or not.
+// SeaState file's, else 1025 kg/m^3 and 9.80665 m/s^2; one wave field from the
+// SeaState file (still water without). The file's parts are the blocks of
+// hydrodyn_parts(): each part applies to the files or not.
 #include "analysis/hydrodyn_parts.hpp"
 #include "analysis/load_block_kinds.hpp"
 #include "analysis/platform_mesh.hpp"
+#include "analysis/sea_state_setup.hpp"
 #include "diag/errors.hpp"
 #include "model/load_kinds.hpp"
 
@@ -35,7 +37,8 @@ runtime::hydro::Water water_of(const BoundWater& bound, const seastate::Input* s
 } // namespace
 
 runtime::LoadBlocks build_hydrodyn(const model::LoadBlock& decl, const BlockContext& c) {
-    HydroContext h{platform_mesh(decl, c), {}, {}, {}, {}};
+    HydroContext h;
+    h.mesh = platform_mesh(decl, c);
     if (!h.mesh.axes_are_ground())
         throw diag::UserError("load hydrodyn " + decl.name +
                               ": the platform body's axes at rest "
@@ -52,6 +55,19 @@ runtime::LoadBlocks build_hydrodyn(const model::LoadBlock& decl, const BlockCont
     h.hydrodyn = &*hd;
     h.sea_state = sea ? &*sea : nullptr;
     h.output_prefix = model::load_kind_info(decl.kind).output_name(decl.name, "");
+    if (sea) {
+        // SeaState's waves in the declaration's water (its roles win over the file's).
+        diag::Diagnostics wave_diags;
+        runtime::hydro::WaveSettings w = wave_settings(*sea, h.water, wave_diags);
+        if (wave_diags.has_errors()) throw diag::UserError(wave_diags.render());
+        if (!wave_diags.all().empty()) std::cerr << wave_diags.render();
+        w.water = h.water;
+        try {
+            h.waves = runtime::hydro::make_wave_field(w);
+        } catch (const std::invalid_argument& e) {
+            throw diag::UserError(c.options.sea_state + ": " + e.what());
+        }
+    }
     runtime::LoadBlocks blocks;
     for (const HydroPart& part : hydrodyn_parts())
         if (part.applies(h)) blocks.push_back(part.build(h));

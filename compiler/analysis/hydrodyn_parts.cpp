@@ -1,14 +1,60 @@
 #include "analysis/hydrodyn_parts.hpp"
 
+#include "analysis/hydro_potential_setup.hpp"
+#include "analysis/hydro_strip_setup.hpp"
+#include "diag/errors.hpp"
+
+#include <yamsc/hydro/potential_flow.hpp>
+#include <yamsc/hydro/strip_theory.hpp>
+
 namespace yamsc::analysis {
 
-// A row per part as its runtime block lands: strip theory on the members
-// (hydro_strip_setup.hpp's strip_setup, strip_theory_block), potential flow for
-// PotMod 1 (hydro_potential_setup.hpp's potential_setup, potential_flow_block),
-// both sharing one wave field (sea_state_setup.hpp's wave_settings,
-// make_wave_field), and the wave elevation at SeaState's WaveElevxi, yi.
+namespace {
+
+template <class Setup> Setup required(std::optional<Setup> s, const diag::Diagnostics& diags) {
+    if (!s || diags.has_errors()) throw diag::UserError(diags.render());
+    return std::move(*s);
+}
+
+/// The members (PotMod 0, or the viscous drag of PropPot members with PotMod 1).
+std::shared_ptr<const runtime::LoadBlock> strip(const HydroContext& h) {
+    diag::Diagnostics diags;
+    runtime::hydro::StripSetup s = required(strip_setup(*h.hydrodyn, h.water, diags), diags);
+    s.waves = h.waves;
+    s.water = h.water;
+    s.origin_at_rest = h.mesh.origin_at_rest;
+    s.frame_outputs = h.mesh.frame_outputs;
+    s.loads = h.mesh.loads;
+    s.output_prefix = h.output_prefix;
+    return runtime::hydro::strip_theory_block(std::move(s));
+}
+
+/// WAMIT's coefficients for PotMod 1, with the additional matrices.
+std::shared_ptr<const runtime::LoadBlock> potential(const HydroContext& h) {
+    diag::Diagnostics diags;
+    runtime::hydro::PotentialFlowSetup s =
+        required(potential_setup(*h.hydrodyn, h.water, diags), diags);
+    s.waves = h.waves;
+    s.water = h.water;
+    s.origin_at_rest = h.mesh.origin_at_rest;
+    s.frame_outputs = h.mesh.frame_outputs;
+    s.loads = h.mesh.loads;
+    s.output_prefix = h.output_prefix + "B1";
+    return runtime::hydro::potential_flow_block(std::move(s));
+}
+
+} // namespace
+
 const std::vector<HydroPart>& hydrodyn_parts() {
-    static const std::vector<HydroPart> parts{};
+    static const std::vector<HydroPart> parts{
+        {"strip theory on the members",
+         [](const HydroContext& h) { return !h.hydrodyn->members.empty(); }, strip},
+        {"potential flow (PotMod 1)",
+         [](const HydroContext& h) {
+             return h.hydrodyn->pot_mod == hydrodyn::PotentialFlow::wamit;
+         },
+         potential},
+    };
     return parts;
 }
 
@@ -16,7 +62,7 @@ std::string hydrodyn_part_names() {
     std::string names;
     for (const HydroPart& p : hydrodyn_parts())
         names += (names.empty() ? "" : ", ") + std::string(p.name);
-    return names.empty() ? "none yet" : names;
+    return names;
 }
 
 } // namespace yamsc::analysis

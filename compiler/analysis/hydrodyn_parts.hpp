@@ -22,7 +22,9 @@ struct HydroContext {
     runtime::hydro::Water water; // depth below the still-water level
     const hydrodyn::Input* hydrodyn = nullptr;
     const seastate::Input* sea_state = nullptr; // null: still water
-    std::string output_prefix;                  // the block's outputs <prefix>...
+    /// The one wave field every part samples (null: still water in `water`).
+    std::shared_ptr<const runtime::hydro::WaveField> waves;
+    std::string output_prefix; // the block's outputs <prefix>...
 };
 
 struct HydroPart {
