@@ -98,6 +98,8 @@ bool any_blocks(const BlockOptions& b) {
 void add_block_routines(const BlockOptions& b, bool exact_jacobian, codegen::RoutineSet& routines) {
     if (!any_blocks(b)) return;
     routines.insert(codegen::RoutineId::outputs);
+    // HydroDyn's added mass is solved with the structure's (close_blocks).
+    if (!b.hydro.empty()) routines.insert(codegen::RoutineId::mass_matrix);
     if (exact_jacobian)
         routines.insert({codegen::RoutineId::mass_matrix, codegen::RoutineId::jacobians});
 }
