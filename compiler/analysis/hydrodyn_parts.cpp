@@ -6,6 +6,7 @@
 
 #include <yamsc/hydro/potential_flow.hpp>
 #include <yamsc/hydro/strip_theory.hpp>
+#include <yamsc/hydro/wave_elevation.hpp>
 
 namespace yamsc::analysis {
 
@@ -43,6 +44,14 @@ std::shared_ptr<const runtime::LoadBlock> potential(const HydroContext& h) {
     return runtime::hydro::potential_flow_block(std::move(s));
 }
 
+/// SeaState's WaveElevxi, WaveElevyi as <prefix>Wave<k>Elev.
+std::shared_ptr<const runtime::LoadBlock> elevation(const HydroContext& h) {
+    std::vector<runtime::hydro::ElevationPoint> points;
+    for (std::size_t k = 0; k < h.sea_state->wave_elev_x.size(); ++k)
+        points.push_back({h.sea_state->wave_elev_x[k], h.sea_state->wave_elev_y[k]});
+    return runtime::hydro::wave_elevation_block(h.waves, std::move(points), h.output_prefix);
+}
+
 } // namespace
 
 const std::vector<HydroPart>& hydrodyn_parts() {
@@ -54,6 +63,12 @@ const std::vector<HydroPart>& hydrodyn_parts() {
              return h.hydrodyn->pot_mod == hydrodyn::PotentialFlow::wamit;
          },
          potential},
+        {"the wave elevation (SeaState's NWaveElev points)",
+         [](const HydroContext& h) {
+             return h.sea_state && !h.sea_state->wave_elev_x.empty() &&
+                    h.sea_state->wave_elev_x.size() == h.sea_state->wave_elev_y.size();
+         },
+         elevation},
     };
     return parts;
 }

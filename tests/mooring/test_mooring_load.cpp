@@ -5,6 +5,7 @@
 #include "analysis/load_blocks.hpp"
 #include "analysis/loaded_model.hpp"
 #include "analysis/map_mooring.hpp"
+#include "analysis/sea_state_setup.hpp"
 #include "codegen/routines.hpp"
 #include "diag/errors.hpp"
 
@@ -357,4 +358,43 @@ TEST_CASE("the paper's floating 3-DOF example with HydroDyn's and MAP++'s loads"
     // whose pitch then yields to the tower's bending.
     CHECK(f[1] > 0.0335);
     CHECK(f[2] < 0.799);
+}
+
+TEST_CASE("load hydrodyn with --sea-state: Wave1Elev is the SeaState file's field at its point") {
+    std::ostringstream err;
+    auto l = analysis::load(std::string(YAMSC_SOURCE_DIR) + "/models/oc3_spar_hydrodyn.mbd", {}, "",
+                            false, err, {}, codegen::abi_routines());
+    REQUIRE_MESSAGE(l, err.str());
+    analysis::BlockOptions b = with_mooring();
+    b.hydro = std::string(YAMSC_TEST_DATA_DIR) + "/hydro/oc3_spar_strip.dat";
+    b.sea_state = std::string(YAMSC_TEST_DATA_DIR) + "/hydro/oc3_sea_state.dat";
+    const runtime::ModelView v = analysis::with_load_blocks(*l, b);
+    // The same field made apart, in the model's water (its parameters: 1025, 9.80665, 320).
+    diag::Diagnostics diags;
+    auto sea = seastate::read_seastate_input(b.sea_state, diags);
+    REQUIRE(sea);
+    runtime::hydro::Water water;
+    water.density = 1025;
+    water.gravity = 9.80665;
+    water.depth = 320;
+    runtime::hydro::WaveSettings w = analysis::wave_settings(*sea, water, diags);
+    w.water = water;
+    const auto field = runtime::hydro::make_wave_field(w);
+    const int at = [&] {
+        for (std::size_t i = 0; i < v.output_names.size(); ++i)
+            if (v.output_names[i] == "hydro_Wave1Elev") return static_cast<int>(i);
+        return -1;
+    }();
+    REQUIRE(at >= 0);
+    std::vector<double> q(6, 0.0), u(static_cast<std::size_t>(v.nu), 0.0),
+        y(static_cast<std::size_t>(v.ny));
+    double largest = 0;
+    for (double t : {0.0, 13.7, 101.25, 377.0}) {
+        v.outputs(t, q.data(), q.data(), u.data(), y.data());
+        CAPTURE(t);
+        CHECK(y[static_cast<std::size_t>(at)] ==
+              doctest::Approx(field->elevation(t, 0, 0)).epsilon(1e-12));
+        largest = std::max(largest, std::abs(y[static_cast<std::size_t>(at)]));
+    }
+    CHECK(largest > 0.1); // a sea of Hs 6 m, not still water
 }
