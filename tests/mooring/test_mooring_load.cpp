@@ -287,31 +287,44 @@ TEST_CASE("the moored OC3 spar's platform frequencies with strip theory's added 
     CHECK(dry[0] / wet[0] == doctest::Approx(std::sqrt((s.M0[0] + A[0]) / s.M0[0])).epsilon(0.01));
 }
 
+namespace {
+
+/// The model at `name` (models/) with its hydrodyn (the OC3 strip-theory file) and
+/// mooring blocks, trimmed: its frequencies [Hz] there.
+std::vector<double> frequencies_at_trim(const std::string& name) {
+    std::ostringstream err;
+    auto l = analysis::load(std::string(YAMSC_SOURCE_DIR) + "/models/" + name, {}, "", false, err,
+                            {}, codegen::abi_routines());
+    REQUIRE_MESSAGE(l, err.str());
+    analysis::BlockOptions b = with_mooring();
+    b.hydro = std::string(YAMSC_TEST_DATA_DIR) + "/hydro/oc3_spar_strip.dat";
+    const runtime::ModelView v = analysis::with_load_blocks(*l, b);
+    std::vector<double> u(static_cast<std::size_t>(v.nu), 0.0);
+    const std::vector<double> zero(static_cast<std::size_t>(v.nq), 0.0);
+    const runtime::TrimResult t =
+        runtime::trim(v, zero, zero, u, std::vector<bool>(zero.size(), false));
+    REQUIRE(t.converged);
+    std::vector<double> x(t.q);
+    x.insert(x.end(), t.qd.begin(), t.qd.end());
+    std::vector<double> f;
+    for (const runtime::Mode& m :
+         runtime::modal_analysis(runtime::state_matrix_from_view(v, x, u), v.nq))
+        f.push_back(m.freq_hz);
+    REQUIRE(f.size() == zero.size());
+    for (std::size_t i = 0; i < f.size(); ++i)
+        MESSAGE(name << " mode " << i + 1 << ": " << f[i] << " Hz");
+    return f;
+}
+
+} // namespace
+
 TEST_CASE("load hydrodyn and load mooring: the OC3 spar's frequencies from HydroDyn's strip "
           "theory") {
     // models/oc3_spar_hydrodyn.mbd: the same spar with its hydrostatics and added
     // mass from the HydroDyn file's members (Ca 0.969954) instead of the model's
     // equations: the frequencies of the test above, where the added mass was
     // integrated by hand, to the strips' discretization.
-    std::ostringstream err;
-    auto l = analysis::load(std::string(YAMSC_SOURCE_DIR) + "/models/oc3_spar_hydrodyn.mbd", {}, "",
-                            false, err, {}, codegen::abi_routines());
-    REQUIRE_MESSAGE(l, err.str());
-    analysis::BlockOptions b = with_mooring();
-    b.hydro = std::string(YAMSC_TEST_DATA_DIR) + "/hydro/oc3_spar_strip.dat";
-    const runtime::ModelView v = analysis::with_load_blocks(*l, b);
-    std::vector<double> u(static_cast<std::size_t>(v.nu), 0.0);
-    const std::vector<double> zero(6, 0.0);
-    const runtime::TrimResult t = runtime::trim(v, zero, zero, u, std::vector<bool>(6, false));
-    REQUIRE(t.converged);
-    std::vector<double> x(t.q);
-    x.insert(x.end(), t.qd.begin(), t.qd.end());
-    std::vector<double> f;
-    for (const runtime::Mode& m :
-         runtime::modal_analysis(runtime::state_matrix_from_view(v, x, u), 6))
-        f.push_back(m.freq_hz);
-    REQUIRE(f.size() == 6);
-    for (std::size_t i = 0; i < 6; ++i) MESSAGE("mode " << i + 1 << ": " << f[i] << " Hz");
+    const std::vector<double> f = frequencies_at_trim("oc3_spar_hydrodyn.mbd");
     // The model-written hydrostatics and hand-integrated added mass gave 0.0080626,
     // 0.0329401, 0.0334861 and 0.121191 Hz: HydroDyn's buoyancy is the members' own
     // volume (the same 8,029 m^3), its added mass on MDivSize strips where the
@@ -329,26 +342,7 @@ TEST_CASE("load hydrodyn and load mooring: the OC3 spar's frequencies from Hydro
 TEST_CASE("the paper's floating 3-DOF example with HydroDyn's and MAP++'s loads") {
     // models/nrel5mw_floating_3dof_loads.mbd: its floater's origin is the tower
     // base, 10 m above the water, so the files' points are placed from there.
-    std::ostringstream err;
-    auto l =
-        analysis::load(std::string(YAMSC_SOURCE_DIR) + "/models/nrel5mw_floating_3dof_loads.mbd",
-                       {}, "", false, err, {}, codegen::abi_routines());
-    REQUIRE_MESSAGE(l, err.str());
-    analysis::BlockOptions b = with_mooring();
-    b.hydro = std::string(YAMSC_TEST_DATA_DIR) + "/hydro/oc3_spar_strip.dat";
-    const runtime::ModelView v = analysis::with_load_blocks(*l, b);
-    std::vector<double> u(static_cast<std::size_t>(v.nu), 0.0);
-    const std::vector<double> zero(3, 0.0);
-    const runtime::TrimResult t = runtime::trim(v, zero, zero, u, std::vector<bool>(3, false));
-    REQUIRE(t.converged);
-    std::vector<double> x(t.q);
-    x.insert(x.end(), t.qd.begin(), t.qd.end());
-    std::vector<double> f;
-    for (const runtime::Mode& m :
-         runtime::modal_analysis(runtime::state_matrix_from_view(v, x, u), 3))
-        f.push_back(m.freq_hz);
-    REQUIRE(f.size() == 3);
-    for (std::size_t i = 0; i < 3; ++i) MESSAGE("mode " << i + 1 << ": " << f[i] << " Hz");
+    const std::vector<double> f = frequencies_at_trim("nrel5mw_floating_3dof_loads.mbd");
     // Surge: the lines and the added mass as on the six-DOF spar (0.0080625 Hz
     // there); the paper's floater is 0.4 % heavier (7.5e6 against 7,466,330 kg).
     CHECK(f[0] == doctest::Approx(0.0080625).epsilon(0.003));
