@@ -160,7 +160,7 @@ TEST_CASE("load hydrodyn: --hydro's file is read with located errors, its water 
     REQUIRE(text.find(anchor) != std::string::npos);
     text.insert(text.find(anchor),
                 "load hydrodyn hydro { platform = platform; density = rho_w }\n");
-    const std::string path = "oc3_spar_hydrodyn.mbd";
+    const std::string path = "spar_with_hydrodyn_declaration.mbd";
     std::ofstream(path) << text;
     std::ostringstream err;
     auto l = analysis::load(path, {}, "", false, err, {}, codegen::abi_routines());
