@@ -8,6 +8,7 @@
 #include "analysis/sea_state_setup.hpp"
 #include "codegen/routines.hpp"
 #include "diag/errors.hpp"
+#include "openfast/from_openfast.hpp"
 
 #include <yamsc/modal.hpp>
 #include <yamsc/mooring/mooring_system.hpp>
@@ -289,12 +290,11 @@ TEST_CASE("the moored OC3 spar's platform frequencies with strip theory's added 
 
 namespace {
 
-/// The model at `name` (models/) with its hydrodyn (the OC3 strip-theory file) and
+/// The model at `path` with its hydrodyn (the OC3 strip-theory file) and
 /// mooring blocks, trimmed: its frequencies [Hz] there.
-std::vector<double> frequencies_at_trim(const std::string& name) {
+std::vector<double> frequencies_at_path(const std::string& name) {
     std::ostringstream err;
-    auto l = analysis::load(std::string(YAMSC_SOURCE_DIR) + "/models/" + name, {}, "", false, err,
-                            {}, codegen::abi_routines());
+    auto l = analysis::load(name, {}, "", false, err, {}, codegen::abi_routines());
     REQUIRE_MESSAGE(l, err.str());
     analysis::BlockOptions b = with_mooring();
     b.hydro = std::string(YAMSC_TEST_DATA_DIR) + "/hydro/oc3_spar_strip.dat";
@@ -314,6 +314,11 @@ std::vector<double> frequencies_at_trim(const std::string& name) {
     for (std::size_t i = 0; i < f.size(); ++i)
         MESSAGE(name << " mode " << i + 1 << ": " << f[i] << " Hz");
     return f;
+}
+
+/// The same for the model `name` of models/.
+std::vector<double> frequencies_at_trim(const std::string& name) {
+    return frequencies_at_path(std::string(YAMSC_SOURCE_DIR) + "/models/" + name);
 }
 
 } // namespace
@@ -391,4 +396,56 @@ TEST_CASE("load hydrodyn with --sea-state: Wave1Elev is the SeaState file's fiel
         largest = std::max(largest, std::abs(y[static_cast<std::size_t>(at)]));
     }
     CHECK(largest > 0.1); // a sea of Hs 6 m, not still water
+}
+
+TEST_CASE("from-openfast of a floating deck declares load hydrodyn and load mooring") {
+    // The floating reference deck with HydroDyn and MAP++ switched on, their files
+    // ours, and the .fst's water (OpenFAST v4's entries), in the build folder.
+    const std::string reference =
+        std::string(YAMSC_TEST_DATA_DIR) + "/reference/floating_3dof_F2T1RNA";
+    std::string fst;
+    {
+        std::ifstream in(reference + "/Main_Spar_ED.fst");
+        std::stringstream s;
+        s << in.rdbuf();
+        fst = s.str();
+    }
+    auto replace = [&](const std::string& from, const std::string& to) {
+        const std::size_t at = fst.find(from);
+        REQUIRE(at != std::string::npos);
+        fst.replace(at, from.size(), to);
+    };
+    const std::string data = YAMSC_TEST_DATA_DIR;
+    replace("\"Spar_ED_ForED.dat\"", "\"" + reference + "/Spar_ED_ForED.dat\"");
+    replace("          0   CompHydro", "          1   CompHydro");
+    replace("          0   CompMooring", "          1   CompMooring");
+    replace("\"unused\"                                                 HydroFile",
+            "\"" + data + "/hydro/oc3_spar_strip.dat\" HydroFile");
+    replace("\"unused\"                                                 MooringFile",
+            "\"" + data + "/mooring/oc3_hywind.map\" MooringFile");
+    fst += "1025 WtrDens - water density\n320 WtrDpth - water depth\n0 MSL2SWL - offset\n";
+    std::ofstream("floating_blocks.fst") << fst;
+    driver::FromOpenFastOptions o;
+    o.deck = "floating_blocks.fst";
+    o.output = "floating_blocks.mbd";
+    std::ostringstream out, err;
+    REQUIRE_MESSAGE(openfast::from_openfast(o, out, err) == 0, err.str());
+    std::string text;
+    {
+        std::ifstream in(o.output);
+        std::stringstream s;
+        s << in.rdbuf();
+        text = s.str();
+    }
+    CHECK(text.find("load hydrodyn hydro { platform = platform; depth = WtrDpth; density = "
+                    "WtrDens; gravity = Gravity }") != std::string::npos);
+    CHECK(text.find("load mooring lines {") != std::string::npos);
+    CHECK(text.find("hydro_fx") == std::string::npos);
+    CHECK(text.find("--hydro " + data + "/hydro/oc3_spar_strip.dat") != std::string::npos);
+    // Its platform reference point is 20 m up (PtfmRefzt): the files' points are
+    // placed from there. The deck's platform is the paper's (7.5e6 kg, CM at -90 m):
+    // surge as the OC3 spar's, pitch beside the published 0.034 Hz.
+    const std::vector<double> f = frequencies_at_path(o.output);
+    CHECK(f[0] == doctest::Approx(0.0080625).epsilon(0.003));
+    CHECK(f[1] == doctest::Approx(0.034).epsilon(0.02));
 }
