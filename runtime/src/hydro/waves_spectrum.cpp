@@ -2,6 +2,7 @@
 // WavePkShpDefault, JONSWAP, VariousWaves_Init's grid, Get_1Spsd_and_WaveElevC0).
 #include "yamsc/hydro/ranlux.hpp"
 #include "yamsc/hydro/waves.hpp"
+#include "yamsc/wind/turbulence.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -12,16 +13,6 @@ namespace yamsc::runtime::hydro {
 
 namespace {
 constexpr double pi = 3.14159265358979323846;
-
-// The smallest m >= n whose prime factors are all at most 23 (NWTC's PSF(n, 9)).
-int small_factor_ceiling(int n) {
-    for (int m = std::max(n, 1);; ++m) {
-        int r = m;
-        for (int p : {2, 3, 5, 7, 11, 13, 17, 19, 23})
-            while (r % p == 0) r /= p;
-        if (r == 1) return m;
-    }
-}
 
 // SeaState's BoxMuller: U1 redrawn while zero, then U2; the modulus sqrt(-2 ln U1)
 // (or its mean sqrt(2) with constant amplitudes), the phase 2 pi U2 or the one given.
@@ -86,7 +77,8 @@ int wave_time_steps(double t_max, double dt) {
     if (t_max / dt > 1e8) throw std::invalid_argument("waves: WaveTMax / WaveDT is above 1e8");
     int n = static_cast<int>(std::ceil(t_max / dt));
     if (n % 2 == 1) ++n;
-    return 2 * small_factor_ceiling(std::max(n / 2, 1));
+    // NWTC's PSF(n, 9), the smallest product of primes up to 23, as TurbSim's.
+    return 2 * small_prime_product(std::max(n / 2, 1));
 }
 
 std::vector<std::complex<double>> sea_state_amplitudes(const WaveSettings& s, int n) {
