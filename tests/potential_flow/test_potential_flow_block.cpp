@@ -279,3 +279,67 @@ TEST_CASE("additional matrices: F0 - C q - R B R^T q' - R Bq |R^T q'| R^T q' at 
     for (int i = 0; i < 6; ++i)
         CHECK(g[i] == doctest::Approx(out[static_cast<std::size_t>(i)]).epsilon(1e-9));
 }
+
+TEST_CASE("radiation history: steps shorter than RdtnDT store the same samples; reset forgets") {
+    const double dt = 0.1;
+    std::vector<double> omega{0.0, 1.0, 2.0, 3.0};
+    std::vector<Mat6> damping(4);
+    for (std::size_t k = 0; k < 4; ++k) damping[k][0] = 1e4 * (1 + static_cast<double>(k));
+    damping[0][0] = 0;
+    PotentialFlowSetup s = bare_setup();
+    s.kernel_dt = dt;
+    s.radiation_kernel = radiation_kernel(omega, damping, dt, 3);
+    const auto coarse = potential_flow_block(s), fine = potential_flow_block(s);
+    // A surge velocity linear in time: the samples between a step's ends are exact.
+    const auto at = [](double t) {
+        return frame(Eigen::Vector3d(0.1 * t * t, 0, 0), Eigen::Matrix3d::Identity(),
+                     Eigen::Vector3d(0.2 * t + 0.05, 0, 0));
+    };
+    for (int k = 0; k < 40; ++k) {
+        const double t = k * dt, t1 = (k + 1) * dt;
+        coarse->update_discrete_states(t, nullptr, at(t).data(), t1, nullptr, at(t1).data());
+        for (int m = 0; m < 4; ++m) {
+            const double a = t + m * dt / 4, b = t + (m + 1) * dt / 4;
+            fine->update_discrete_states(a, nullptr, at(a).data(), b, nullptr, at(b).data());
+        }
+    }
+    const double f = evaluate(*coarse, 4.0, at(4.0)).out[12];
+    CHECK(f < -1e2); // a real force
+    CHECK(evaluate(*fine, 4.0, at(4.0)).out[12] == doctest::Approx(f).epsilon(1e-12));
+    fine->reset_discrete_states();
+    // Forgotten: the current velocity alone, -RdtnDT K(0) v.
+    CHECK(evaluate(*fine, 4.0, at(4.0)).out[12] ==
+          doctest::Approx(-dt * s.radiation_kernel[0][0] * (0.2 * 4.0 + 0.05)).epsilon(1e-12));
+}
+
+TEST_CASE(
+    "excitation on SeaState's regular wave: a real X gives X times the elevation at the origin") {
+    WaveSettings w;
+    w.kind = WaveKind::regular;
+    w.height = 2.0;
+    w.period = 10.0;
+    w.t_max = 600;
+    w.dt = 0.25;
+    w.phase = 0.7;
+    w.direction = 0.3;
+    const auto field = make_wave_field(w);
+    REQUIRE(field->time_step() > 0);
+    PotentialFlowSetup s = bare_setup();
+    s.excitation.omega = {0.0, 2.0};
+    s.excitation.heading = {-pi, pi};
+    for (int k = 0; k < 4; ++k)
+        for (int i = 0; i < 6; ++i) s.excitation.force.push_back(1e5 * (i + 1));
+    s.waves = field;
+    const auto block = potential_flow_block(s);
+    int checked = 0;
+    for (double t = 0; t < 30; t += 1.25) {
+        const double eta = field->elevation(t, 0, 0);
+        const auto r =
+            evaluate(*block, t, frame(Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity()));
+        for (int i = 0; i < 6; ++i)
+            CHECK(r.out[static_cast<std::size_t>(i)] ==
+                  doctest::Approx(1e5 * (i + 1) * eta).scale(1e5 * (i + 1)).epsilon(1e-9));
+        checked += std::abs(eta) > 0.5;
+    }
+    CHECK(checked > 5); // the wave is there
+}
