@@ -30,7 +30,8 @@ const std::vector<std::string> plain_columns{"id",         "model",
                                              "dt_out",     "channels",
                                              "controller", "controller_input",
                                              "coupling",   "interp_order",
-                                             "time_limit"};
+                                             "time_limit", "mooring",
+                                             "hydro",      "sea_state"};
 const std::vector<std::string> required_columns{"id", "model", "tmax", "dt"};
 const std::vector<std::string> prefixes{"set:", "ic:", "u:"};
 
@@ -176,8 +177,8 @@ Manifest read_manifest(const std::string& path) {
                                           " (columns: id, model, tmax, dt, method, rtol, atol, "
                                           "set, ic, u, wind, aero, dt_out, channels, "
                                           "controller, controller_input, coupling, "
-                                          "interp_order, time_limit, "
-                                          "set:NAME, ic:NAME, u:NAME)");
+                                          "interp_order, time_limit, mooring, hydro, "
+                                          "sea_state, set:NAME, ic:NAME, u:NAME)");
                 if (std::find(m.columns.begin(), m.columns.end(), f.text) != m.columns.end())
                     throw diag::UserError(m.where(line_no, f.col) + ": error: column '" + f.text +
                                           "' is given twice");
@@ -279,6 +280,17 @@ BatchCase case_of(const Manifest& m, const ManifestRow& row) {
                 if (!readable(c.sim.aero))
                     throw CaseError(at(f), "cannot read the rotor table '" + c.sim.aero + "'");
                 c.files.push_back(c.sim.aero);
+            }
+        } else if (column == "mooring" || column == "hydro" || column == "sea_state") {
+            // The platform's files (--mooring, --hydro, --sea-state).
+            if (!f.text.empty()) {
+                std::string& file = column == "mooring" ? c.sim.mooring
+                                    : column == "hydro" ? c.sim.hydro
+                                                        : c.sim.sea_state;
+                file = resolved(m, f.text);
+                if (!readable(file))
+                    throw CaseError(at(f), "cannot read the " + column + " file '" + file + "'");
+                c.files.push_back(file);
             }
         } else if (column == "controller" || column == "controller_input") {
             if (!f.text.empty()) {

@@ -38,5 +38,11 @@ aero::BladeElementSetup blade_element_channels(const model::LoadBlock& decl, con
                                                const runtime::ModelView& v, const BlockOptions& o);
 std::shared_ptr<const runtime::LoadBlock> build_blade_elements(const model::LoadBlock& decl,
                                                                const BlockContext& c);
+/// MAP++'s lines of --mooring on the platform (mooring_block.cpp).
+std::shared_ptr<const runtime::LoadBlock> build_mooring(const model::LoadBlock& decl,
+                                                        const BlockContext& c);
+/// HydroDyn's loads of --hydro (and --sea-state's waves) on the platform: a
+/// block per part of the file (hydrodyn_block.cpp, hydrodyn_parts.hpp).
+runtime::LoadBlocks build_hydrodyn(const model::LoadBlock& decl, const BlockContext& c);
 
 } // namespace yamsc::analysis

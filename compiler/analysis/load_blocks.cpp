@@ -16,8 +16,14 @@ using diag::UserError;
 
 namespace {
 
-using Builder = std::shared_ptr<const runtime::LoadBlock> (*)(const model::LoadBlock&,
-                                                              const BlockContext&);
+using Builder = runtime::LoadBlocks (*)(const model::LoadBlock&, const BlockContext&);
+
+/// A builder of one block as a Builder.
+template <std::shared_ptr<const runtime::LoadBlock> (*build)(const model::LoadBlock&,
+                                                             const BlockContext&)>
+runtime::LoadBlocks one(const model::LoadBlock& decl, const BlockContext& c) {
+    return {build(decl, c)};
+}
 
 /// A kind of load block: the option that supplies its data and its builder.
 struct Registration {
@@ -28,8 +34,10 @@ struct Registration {
 };
 
 const Registration registry[] = {
-    {model::LoadKind::rotor_table, "--aero", &BlockOptions::aero, build_rotor_table},
-    {model::LoadKind::blade_elements, "--aero", &BlockOptions::aero, build_blade_elements},
+    {model::LoadKind::rotor_table, "--aero", &BlockOptions::aero, one<build_rotor_table>},
+    {model::LoadKind::blade_elements, "--aero", &BlockOptions::aero, one<build_blade_elements>},
+    {model::LoadKind::mooring, "--mooring", &BlockOptions::mooring, one<build_mooring>},
+    {model::LoadKind::hydrodyn, "--hydro", &BlockOptions::hydro, build_hydrodyn},
 };
 
 bool supplied(const Registration& r, const BlockOptions& b) {
@@ -90,6 +98,8 @@ bool any_blocks(const BlockOptions& b) {
 void add_block_routines(const BlockOptions& b, bool exact_jacobian, codegen::RoutineSet& routines) {
     if (!any_blocks(b)) return;
     routines.insert(codegen::RoutineId::outputs);
+    // HydroDyn's added mass is solved with the structure's (close_blocks).
+    if (!b.hydro.empty()) routines.insert(codegen::RoutineId::mass_matrix);
     if (exact_jacobian)
         routines.insert({codegen::RoutineId::mass_matrix, codegen::RoutineId::jacobians});
 }
@@ -98,6 +108,7 @@ std::vector<driver::NamedFile> block_files(const BlockOptions& b) {
     std::vector<driver::NamedFile> files;
     for (const Registration& r : registry)
         if (supplied(r, b)) files.push_back({r.option, b.*r.file});
+    if (!b.sea_state.empty()) files.push_back({"--sea-state", b.sea_state});
     return files;
 }
 
@@ -137,7 +148,7 @@ runtime::LoadBlocks load_blocks(const Loaded& l, const runtime::ModelView& v,
                 if (decl.kind != same.kind) continue;
                 declared = true;
                 try {
-                    blocks.push_back(same.build(decl, context));
+                    for (auto& block : same.build(decl, context)) blocks.push_back(block);
                 } catch (const std::invalid_argument& e) {
                     throw UserError(std::string(same.option) + ": " + e.what());
                 } catch (const std::runtime_error& e) {

@@ -21,7 +21,10 @@ namespace yamsc::analysis {
 
 /// What the command line gives the load blocks.
 struct BlockOptions {
-    std::string aero; // --aero TABLE: the Cp/Ct/Cq table of the rotor_table blocks
+    std::string aero;        // --aero TABLE: the Cp/Ct/Cq table of the rotor_table blocks
+    std::string mooring{};   // --mooring MAP.dat: MAP++'s lines of the `mooring` blocks
+    std::string hydro{};     // --hydro HydroDyn.dat: the `hydrodyn` blocks' members and matrices
+    std::string sea_state{}; // --sea-state SeaState.dat: their waves (still water without)
     /// --wind SPEC: an InflowWind file gives the blade elements its field
     /// (yamsc/wind.hpp); any other spec, or none, V_wind along ground x.
     std::string wind{};
@@ -45,6 +48,9 @@ template <class Options> BlockOptions block_options(const Options& o) {
     BlockOptions b;
     b.aero = o.aero;
     b.wind = o.wind;
+    b.mooring = o.mooring;
+    b.hydro = o.hydro;
+    b.sea_state = o.sea_state;
     return b;
 }
 

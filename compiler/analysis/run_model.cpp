@@ -128,7 +128,8 @@ bool wind_file(const std::string& spec) {
 int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
     if (!o.at.empty() && !o.linear) throw UsageError("--at needs --linear");
     if (o.linear && any_blocks(block_options(o)))
-        throw UsageError("--linear does not take --aero (use yamsc lin --aero)");
+        throw UsageError("--linear does not take load blocks (--aero, --mooring, --hydro: use "
+                         "yamsc lin with them)");
     std::vector<NamedFile> outputs{{"-o", o.output}, {"--plot", o.plot}};
     // The controller writes its own files from the run's root (ROSCO: a log).
     if (!o.controller.empty())

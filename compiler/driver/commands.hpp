@@ -96,13 +96,15 @@ struct LinOptions {
     std::string sid;                     // --sid body=file.sid,..
     std::string external;                // --external lib.so|file.c|file.cpp
     bool json = false;
-    std::optional<Sweep> sweep; // --sweep NAME=FROM:STEP:TO: a Campbell diagram
-    std::string schedule;       // --schedule FILE: what moves with the swept value
-    std::string output;         // -o: its CSV (default: stdout)
-    std::string plot;           // --plot: its SVG
-    std::string aero;           // --aero TABLE: the quasi-steady rotor block (Cp/Ct/Cq table)
-    std::string wind;           // --wind SPEC: V_wind at the operating point (its value at t = 0)
-    Wake wake = Wake::frozen;   // --wake: blade elements' wake in the linear model
+    std::optional<Sweep> sweep;   // --sweep NAME=FROM:STEP:TO: a Campbell diagram
+    std::string schedule;         // --schedule FILE: what moves with the swept value
+    std::string output;           // -o: its CSV (default: stdout)
+    std::string plot;             // --plot: its SVG
+    std::string aero;             // --aero TABLE: the quasi-steady rotor block (Cp/Ct/Cq table)
+    std::string wind;             // --wind SPEC: V_wind at the operating point (its value at t = 0)
+    std::string mooring;          // --mooring MAP.dat: the lines of the model's `load mooring`
+    std::string hydro, sea_state; // --hydro HydroDyn.dat, --sea-state SeaState.dat
+    Wake wake = Wake::frozen;     // --wake: blade elements' wake in the linear model
 };
 
 struct TrimOptions {
@@ -114,6 +116,8 @@ struct TrimOptions {
     std::vector<std::string> adjust; // inputs trimmed so that nothing holds the spinning DOFs
     std::string aero;                // --aero TABLE, as for lin
     std::string wind;                // --wind SPEC (its value at t = 0)
+    std::string mooring;             // --mooring MAP.dat, as for lin
+    std::string hydro, sea_state;    // --hydro HydroDyn.dat, --sea-state SeaState.dat
     bool json = false;
 };
 
@@ -135,9 +139,11 @@ struct SimOptions {
     std::string vtk;                        // --vtk DIR: the scene and the CSV (empty: none)
     bool linear = false;                    // integrate the linear model about --at / linearize
     std::vector<Assignment> at;             // --at: the operating point of --linear
-    std::string aero;       // --aero TABLE: the quasi-steady rotor block (Cp/Ct/Cq table)
-    std::string wind;       // --wind SPEC: V_wind steady, step:V0:V1:t=T or a CSV (time, speed)
-    std::string controller; // --controller LIB: a DISCON library in the loop
+    std::string aero;    // --aero TABLE: the quasi-steady rotor block (Cp/Ct/Cq table)
+    std::string wind;    // --wind SPEC: V_wind steady, step:V0:V1:t=T or a CSV (time, speed)
+    std::string mooring; // --mooring MAP.dat: the lines of the model's `load mooring`
+    std::string hydro, sea_state;              // --hydro HydroDyn.dat, --sea-state SeaState.dat
+    std::string controller;                    // --controller LIB: a DISCON library in the loop
     std::string controller_input;              // --controller-input FILE: its accINFILE
     SimCoupling coupling = SimCoupling::tight; // --coupling tight|loose
     int interp_order = 2;                      // --interp-order: loose coupling's extrapolation

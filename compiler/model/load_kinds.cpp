@@ -2,6 +2,23 @@
 
 namespace yamsc::model {
 
+namespace {
+
+/// The roles of PlatformRole: the body, then the water (the mooring's seabed
+/// needs the depth; HydroDyn may take it from the SeaState file).
+std::vector<LoadRole> platform_roles(const std::string& platform, bool depth_required) {
+    using T = RoleTarget;
+    return {
+        {"platform", T::body, true, platform},
+        {"depth", T::parameter, depth_required, "the water depth below the still-water level [m]"},
+        {"density", T::parameter, false, "the water density [kg/m^3] (1025 unbound)"},
+        {"gravity", T::parameter, false,
+         "the acceleration of gravity the water weighs with [m/s^2] (9.80665 unbound)"},
+    };
+}
+
+} // namespace
+
 const std::vector<LoadKindInfo>& load_kinds() {
     using T = RoleTarget;
     static const std::vector<LoadKindInfo> kinds{
@@ -40,6 +57,16 @@ const std::vector<LoadKindInfo>& load_kinds() {
           "RtFldCt", "RtFldCq"},
          static_cast<int>(BladeElementsRole::wind),
          false},
+        {LoadKind::mooring,
+         "mooring",
+         platform_roles("the body the lines' fairleads are on (MAP++'s vessel)", true),
+         {}, // <NAME>_T_fair<n>, <NAME>_T_anch<n>: one per line of the file
+         -1},
+        {LoadKind::hydrodyn,
+         "hydrodyn",
+         platform_roles("the body HydroDyn's members and potential flow move with", false),
+         {}, // the parts' own (analysis/hydrodyn_parts.hpp)
+         -1},
     };
     return kinds;
 }

@@ -9,7 +9,7 @@
 
 namespace yamsc::model {
 
-enum class LoadKind { rotor_table, blade_elements };
+enum class LoadKind { rotor_table, blade_elements, mooring, hydrodyn };
 
 /// What a role is bound to.
 enum class RoleTarget {
@@ -48,6 +48,11 @@ enum class RotorTableRole { wind, pitch, thrust, torque, speed, hub_velocity, ra
 
 /// The roles of `load blade_elements`: AeroDyn's blade elements on the blades' nodes.
 enum class BladeElementsRole { wind, pitch, hub, blade1, blade2, blade3, tower };
+
+/// The roles of the platform kinds, `load mooring` (MAP++'s lines) and `load
+/// hydrodyn` (HydroDyn's members and potential flow): the body they load and
+/// the water they are in. Both kinds share this order.
+enum class PlatformRole { platform, depth, density, gravity };
 
 const std::vector<LoadKindInfo>& load_kinds();
 const LoadKindInfo& load_kind_info(LoadKind kind);

@@ -67,6 +67,7 @@ public:
         load_outputs();
         operation_outputs();
         rotor_block();
+        platform_blocks();
         return out_.str();
     }
 
@@ -89,6 +90,13 @@ private:
              {"PtfmSurge", "PtfmSway", "PtfmHeave", "PtfmRoll", "PtfmPitch", "PtfmYaw"})
             if (v(k) != 0) return true;
         return false;
+    }
+    /// HydroDyn (CompHydro 1) as `load hydrodyn` on the platform, instead of the
+    /// hydrodynamic inputs; MAP++ (CompMooring 1) as `load mooring` (its seabed
+    /// needs the .fst's WtrDpth).
+    bool hydro_block() const { return platform() && !d_.offshore.hydro_file.empty(); }
+    bool mooring_block() const {
+        return platform() && !d_.offshore.mooring_file.empty() && d_.offshore.water_depth;
     }
     bool flexible_tower() const { return openfast::flexible_tower(in_.dofs); }
     bool flexible_blades() const { return openfast::flexible_blades(in_.dofs); }
@@ -146,6 +154,17 @@ private:
             out_ << "# The OpenFAST run: TMax = " << mbd_number(*d_.tmax)
                  << " s, DT = " << mbd_number(*d_.dt) << " s.\n";
         if (in_.operation) operation_header(*in_.operation);
+        if (hydro_block() || mooring_block()) {
+            out_ << "# The platform's loads are load blocks (docs/hydrodynamics.md, Using it):\n"
+                 << "#   yamsc sim " << in_.output_file;
+            if (hydro_block()) {
+                out_ << " --hydro " << d_.offshore.hydro_file;
+                if (!d_.offshore.sea_state_file.empty())
+                    out_ << " --sea-state " << d_.offshore.sea_state_file;
+            }
+            if (mooring_block()) out_ << " --mooring " << d_.offshore.mooring_file;
+            out_ << "\n";
+        }
         std::string enabled, disabled;
         for (const std::string& flag : openfast::elastodyn_dof_flags()) {
             if (flag == "TeetDOF") continue;
@@ -217,6 +236,10 @@ private:
             param("PtfmYIner", v("PtfmYIner"), "platform yaw inertia about its CM [kg m^2]");
             for (const char* k : {"PtfmXYIner", "PtfmYZIner", "PtfmXZIner"})
                 if (v(k) != 0) param(k, v(k), "platform product of inertia (-integral) [kg m^2]");
+            if ((hydro_block() || mooring_block()) && d_.offshore.water_density)
+                param("WtrDens", *d_.offshore.water_density, "water density (the .fst's) [kg/m^3]");
+            if ((hydro_block() || mooring_block()) && d_.offshore.water_depth)
+                param("WtrDpth", *d_.offshore.water_depth, "water depth (the .fst's) [m]");
         }
         if (blade_bodies()) {
             param("HubMass", v("HubMass"), "hub mass [kg]");
@@ -302,7 +325,7 @@ private:
         input("thrust", "rotor thrust at the apex along the shaft [N]" + added);
         input("aero_torque", "aerodynamic torque on the rotor about the shaft [N m]" + added);
         input("gen_torque", "generator torque on the high-speed shaft [N m]");
-        if (platform())
+        if (platform() && !hydro_block())
             for (const char* c : {"x", "y", "z"}) {
                 input(std::string("hydro_f") + c, std::string("platform force along ") + c +
                                                       " (ground axes) at the reference point [N]");
@@ -525,7 +548,7 @@ private:
         }
         out_ << "torque on nacelle in " << gen << " = (GBRatio * " << tq
              << ", 0, 0)     # the generator's reaction\n";
-        if (platform()) {
+        if (platform() && !hydro_block()) {
             out_ << "force  on platform in ground = (hydro_fx, hydro_fy, hydro_fz)\n";
             out_ << "torque on platform in ground = (hydro_mx, hydro_my, hydro_mz)\n";
         }
@@ -898,6 +921,23 @@ private:
     }
 
     /// The command that runs the model in the deck's wind under its controller.
+    /// HydroDyn's and MAP++'s loads on the platform, in the .fst's water.
+    void platform_blocks() {
+        if (platform() && !d_.offshore.mooring_file.empty() && !d_.offshore.water_depth)
+            diags_.warning(diag::Kind::NotSupported, {d_.fst, 0, 0},
+                           "CompMooring = 1 without WtrDpth in the .fst: MAP++'s seabed needs "
+                           "the depth; declare `load mooring` with a depth parameter yourself");
+        if (!hydro_block() && !mooring_block()) return;
+        out_ << "\n# ---- the platform's loads: HydroDyn (--hydro, --sea-state), MAP++ "
+                "(--mooring)\n";
+        std::string water;
+        if (d_.offshore.water_depth) water += "; depth = WtrDpth";
+        if (d_.offshore.water_density) water += "; density = WtrDens";
+        water += "; gravity = Gravity";
+        if (hydro_block()) out_ << "load hydrodyn hydro { platform = platform" << water << " }\n";
+        if (mooring_block()) out_ << "load mooring lines { platform = platform" << water << " }\n";
+    }
+
     void operation_header(const Operation& op) {
         if (op.blade_elements)
             out_ << "# In wind (docs/openfast.md, \"A full deck\"): AeroDyn becomes its blade\n"

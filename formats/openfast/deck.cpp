@@ -184,6 +184,16 @@ private:
                 deck_.fst_air_density = elastodyn::parse_number(e.value);
                 deck_.fst_air_density_at = file_line(f, e.line);
                 ignore(f, e.key, e.line);
+            } else if (key == "hydrofile" || key == "seastfile" || key == "mooringfile") {
+                (key == "hydrofile"   ? deck_.offshore.hydro_file
+                 : key == "seastfile" ? deck_.offshore.sea_state_file
+                                      : deck_.offshore.mooring_file) = resolve(e.value, f);
+                ignore(f, e.key, e.line);
+            } else if (key == "wtrdens" || key == "wtrdpth" || key == "msl2swl") {
+                (key == "wtrdens"   ? deck_.offshore.water_density
+                 : key == "wtrdpth" ? deck_.offshore.water_depth
+                                    : deck_.offshore.msl2swl) = elastodyn::parse_number(e.value);
+                ignore(f, e.key, e.line);
             } else if (key == "inflowfile" || key == "aerofile" || key == "servofile") {
                 deck_.module_files[e.key] = resolve(e.value, f);
                 ignore(f, e.key, e.line);
@@ -203,7 +213,10 @@ private:
                         // (openfast/operation.cpp), which says what it converts.
                         const bool operation =
                             name == "CompInflow" || name == "CompAero" || name == "CompServo";
-                        if (e.value != "0" && !operation)
+                        // HydroDyn and MAP++ become the platform's load blocks.
+                        const bool block =
+                            (name == "CompHydro" || name == "CompMooring") && e.value == "1";
+                        if (e.value != "0" && !operation && !block)
                             diags_.warning(Kind::NotSupported, at,
                                            name + " = " + e.value + ": " + what +
                                                " are not converted; the model declares the "
@@ -212,6 +225,13 @@ private:
                 if (!module) ignore(f, e.key, e.line);
             }
         }
+        // The files of modules that are off are not the model's.
+        auto module_on = [&](const char* name) {
+            const auto it = deck_.modules.find(name);
+            return it != deck_.modules.end() && it->second.value == "1";
+        };
+        if (!module_on("CompHydro")) deck_.offshore.hydro_file = deck_.offshore.sea_state_file = "";
+        if (!module_on("CompMooring")) deck_.offshore.mooring_file.clear();
         if (ed_file.empty()) {
             diags_.error(Kind::MissingProperty, {deck_.fst, 0, 0},
                          "the .fst file has no EDFile (the ElastoDyn input file)");

@@ -53,6 +53,14 @@ struct OpenFastDeck {
     /// (compiler/openfast/operation.hpp).
     std::map<std::string, DeckEntry> modules;
     std::map<std::string, std::string> module_files;
+    /// A floating deck's loads the model declares as blocks (`load hydrodyn` with
+    /// CompHydro 1, `load mooring` with CompMooring 1, MAP++): their files,
+    /// resolved (empty when the module is off), and the `.fst`'s water (OpenFAST
+    /// v4: WtrDens, WtrDpth, MSL2SWL; nullopt in older decks).
+    struct Offshore {
+        std::string hydro_file, sea_state_file, mooring_file;
+        std::optional<double> water_density, water_depth, msl2swl;
+    } offshore;
     /// Entries read but without effect on the structural model (outputs, simulation
     /// control, glue-code settings, two-bladed rotors): (file name, "Key:line").
     std::vector<std::pair<std::string, std::string>> ignored;

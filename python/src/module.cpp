@@ -370,14 +370,21 @@ PYBIND11_MODULE(_yamsc, mod) {
         "load",
         [](const std::string& path, const std::string& sid, const Assignments& set,
            const std::vector<std::string>& routines, const std::string& external,
-           const std::string& aero) {
+           const std::string& aero, const std::string& mooring, const std::string& hydro,
+           const std::string& sea_state) {
             const auto a = assignments(set);
             py::gil_scoped_release released; // compiling can take seconds
-            return ModelHandle::from_source(path, sid, a, routines, external,
-                                            yamsc::analysis::BlockOptions{aero});
+            yamsc::analysis::BlockOptions blocks;
+            blocks.aero = aero;
+            blocks.mooring = mooring;
+            blocks.hydro = hydro;
+            blocks.sea_state = sea_state;
+            return ModelHandle::from_source(path, sid, a, routines, external, blocks);
         },
         py::arg("path"), py::arg("sid"), py::arg("set"), py::arg("routines"),
-        py::arg("external") = std::string(), py::arg("aero") = std::string());
+        py::arg("external") = std::string(), py::arg("aero") = std::string(),
+        py::arg("mooring") = std::string(), py::arg("hydro") = std::string(),
+        py::arg("sea_state") = std::string());
     mod.def(
         "load_library",
         [](const std::string& path, const Assignments& set) {

@@ -236,7 +236,8 @@ ROUTINES = ("rhs", "rhs_jacobian", "mass_matrix", "forcing", "jacobians", "outpu
 SIMULATE = ("rhs", "outputs")
 
 
-def load(path, sid=None, set=None, routines=None, external=None, aero=None):
+def load(path, sid=None, set=None, routines=None, external=None, aero=None, mooring=None,
+         hydro=None, sea_state=None):
     """Checks and compiles a model file (cached like `yamsc sim`).
 
     sid: "body=file.sid,..." or {"body": "file.sid"} (as --sid); set: {name:
@@ -246,10 +247,14 @@ def load(path, sid=None, set=None, routines=None, external=None, aero=None):
     source (as --external; one implementation per function name and process);
     aero: a Cp/Ct/Cq table for the model's `load rotor_table` block, or an
     AeroDyn file for its `load blade_elements`, closed around the model as
-    `yamsc sim --aero` closes it (its outputs follow the model's). Raises yamsc.Error with the located diagnostics when the model has errors.
+    `yamsc sim --aero` closes it (its outputs follow the model's); mooring,
+    hydro, sea_state: a MAP++ file for its `load mooring`, a HydroDyn file and
+    its SeaState file for its `load hydrodyn` (as --mooring, --hydro,
+    --sea-state). Raises yamsc.Error with the located diagnostics when the model has errors.
     """
     return Model(_yamsc.load(str(path), _sid_spec(sid), _assignments(set, "set"),
-                             list(routines or ()), str(external or ""), str(aero or "")))
+                             list(routines or ()), str(external or ""), str(aero or ""),
+                             str(mooring or ""), str(hydro or ""), str(sea_state or "")))
 
 
 def load_library(path, set=None):

@@ -60,7 +60,8 @@ Command batch_command() {
         "yamsc batch CASES.csv [-o OUTDIR] [--threads N] [--shard k/N] [--case-time-limit S] [-q]",
         R"(  CASES.csv           columns id,model,tmax,dt and optionally method,rtol,atol,set,ic,u,
                       wind,aero,dt_out,channels,controller,controller_input,coupling,
-                      interp_order,time_limit,set:NAME,ic:NAME,u:NAME (docs/batch.md)
+                      interp_order,time_limit,mooring,hydro,sea_state,set:NAME,ic:NAME,
+                      u:NAME (docs/batch.md)
   -o OUTDIR           where <id>.csv and summary.csv go (default: CASES.out)
   --threads N         cases at a time (default: one per core)
   --case-time-limit S a case still running after S seconds is stopped and failed

@@ -51,6 +51,10 @@ LinOptions parse_lin(const Args& a) {
     o.json = a.has("--json");
     o.aero = a.get("--aero");
     o.wind = a.get("--wind");
+    o.mooring = a.get("--mooring");
+    o.hydro = a.get("--hydro");
+    o.sea_state = a.get("--sea-state");
+    if (o.hydro.empty() && !o.sea_state.empty()) throw UsageError("--sea-state needs --hydro");
     if (const std::string w = a.get("--wake"); w == "quasi-steady")
         o.wake = driver::Wake::quasi_steady;
     else if (!w.empty() && w != "frozen")
@@ -72,6 +76,10 @@ TrimOptions parse_trim(const Args& a) {
     o.adjust = comma_list(a.get("--adjust"));
     o.aero = a.get("--aero");
     o.wind = a.get("--wind");
+    o.mooring = a.get("--mooring");
+    o.hydro = a.get("--hydro");
+    o.sea_state = a.get("--sea-state");
+    if (o.hydro.empty() && !o.sea_state.empty()) throw UsageError("--sea-state needs --hydro");
     o.external = a.get("--external");
     o.json = a.has("--json");
     return o;
@@ -88,6 +96,9 @@ const char* point_help =
                       model's `load rotor_table`, an AeroDyn file for `load blade_elements`
   --wind V            the wind at the point (the input a load block declares as its
                       wind; a --wind SPEC's value at t = 0)
+  --mooring MAP.dat   MAP++'s lines for the model's `load mooring` (docs/mooring.md)
+  --hydro FILE        a HydroDyn file for the model's `load hydrodyn` (docs/hydrodynamics.md)
+  --sea-state FILE    its SeaState file: the waves (still water without)
   --json              JSON on stdout
 )";
 
@@ -100,6 +111,7 @@ Command lin_command() {
                     [--trim [--hold dof,..] [--adjust input,..]]
                     [--mbc3 [--azimuths N] [--azimuth dof]]
                     [--aero Cp_Ct_Cq.txt|AeroDyn.dat [--wake frozen|quasi-steady]] [--wind V]
+                    [--mooring MAP.dat] [--hydro HydroDyn.dat [--sea-state SeaState.dat]]
                     [--sweep NAME=FROM:STEP:TO [--schedule points.csv] [-o campbell.csv]
                                                [--plot campbell.svg]]
                     [--format openfast-lin -o case.lin [--azimuths N [--azimuth dof]]]
@@ -120,9 +132,9 @@ Command lin_command() {
   --format F          table (default), or openfast-lin: OpenFAST's .lin files at -o
 Details: docs/cli.md, docs/linearization.md.
 )",
-        {{"--at", "--u", "--set", "--sid", "--sweep", "-o", "--plot", "--hold", "--azimuths",
-          "--azimuth", "--aero", "--wind", "--adjust", "--schedule", "--format", "--external",
-          "--wake"},
+        {{"--at",     "--u",        "--set",     "--sid",     "--sweep", "-o",         "--plot",
+          "--hold",   "--azimuths", "--azimuth", "--aero",    "--wind",  "--adjust",   "--schedule",
+          "--format", "--external", "--wake",    "--mooring", "--hydro", "--sea-state"},
          {"--json", "--trim", "--mbc3"}},
         parse_lin, analysis::lin);
 }
@@ -132,13 +144,15 @@ Command trim_command() {
         "trim", "the operating point at rest in the model's equations (Newton on F = 0)",
         R"(yamsc trim MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--hold dof,..]
                      [--adjust input,..] [--aero Cp_Ct_Cq.txt] [--wind V] [--json]
+                     [--mooring MAP.dat] [--hydro HydroDyn.dat [--sea-state SeaState.dat]]
                      [--sid body=file.sid,..] [--external lib.so|file.c|file.cpp])",
         std::string(point_help) +
             R"(  --hold dof,..       DOFs kept as given (besides those with a rate)
   --adjust input,..   inputs trimmed so that nothing holds the spinning DOFs (one per rate)
 Details: docs/cli.md, docs/linearization.md.
 )",
-        {{"--at", "--u", "--set", "--sid", "--hold", "--adjust", "--aero", "--wind", "--external"},
+        {{"--at", "--u", "--set", "--sid", "--hold", "--adjust", "--aero", "--wind", "--external",
+          "--mooring", "--hydro", "--sea-state"},
          {"--json"}},
         parse_trim, analysis::trim);
 }

@@ -50,6 +50,10 @@ SimOptions parse_sim(const Args& a) {
     if (!o.at.empty() && !o.linear) throw UsageError("--at needs --linear");
     o.aero = a.get("--aero");
     o.wind = a.get("--wind");
+    o.mooring = a.get("--mooring");
+    o.hydro = a.get("--hydro");
+    o.sea_state = a.get("--sea-state");
+    if (o.hydro.empty() && !o.sea_state.empty()) throw UsageError("--sea-state needs --hydro");
     o.controller = a.get("--controller");
     o.controller_input = a.get("--controller-input");
     if (o.controller.empty() && !o.controller_input.empty())
@@ -81,6 +85,7 @@ Command sim_command() {
                     [--channels all|openfast] [--compare ref.csv] [--plot out.svg]
                     [--plot-channels a,b,..] [--vtk DIR] [--linear [--at name=v,..]]
                     [--aero Cp_Ct_Cq.txt] [--wind V|step:V0:V1:t=T|wind.csv]
+                    [--mooring MAP.dat] [--hydro HydroDyn.dat [--sea-state SeaState.dat]]
                     [--controller libdiscon.so [--controller-input DISCON.IN]]
                     [--coupling tight|loose [--interp-order 0|1|2]]
                     [--sid body=file.sid,..] [--external lib.so|file.c|file.cpp])",
@@ -108,6 +113,9 @@ Command sim_command() {
                       model's `load rotor_table`, an AeroDyn file for `load blade_elements`
   --wind SPEC         the wind input a load block declares: a speed, step:V0:V1:t=T,
                       or a CSV of time and speed
+  --mooring MAP.dat   MAP++'s lines for the model's `load mooring` (docs/mooring.md)
+  --hydro FILE        a HydroDyn file for the model's `load hydrodyn` (docs/hydrodynamics.md)
+  --sea-state FILE    its SeaState file: the waves (still water without)
   --controller LIB    a DISCON controller library called at every step (RK4, ABM4)
   --controller-input F  its input file (accINFILE)
   --coupling C        how load blocks meet the structure in a step: tight (default,
@@ -121,7 +129,8 @@ Details: docs/cli.md.
           "--set",      "--sid",      "--method",       "-o",           "--rtol",
           "--atol",     "--channels", "--compare",      "--plot",       "--plot-channels",
           "--at",       "--aero",     "--wind",         "--controller", "--controller-input",
-          "--external", "--coupling", "--interp-order", "--vtk"},
+          "--external", "--coupling", "--interp-order", "--vtk",        "--mooring",
+          "--hydro",    "--sea-state"},
          {"-v", "--linear"}},
         parse_sim, analysis::sim);
 }
