@@ -1,8 +1,9 @@
 // `load mooring NAME { platform = BODY; depth = PARAM ... }` with `--mooring
-// MAP.dat`: MAP++'s quasi-static lines (yamsc/mooring/mooring_block.hpp) on the
-// platform's mesh channels, the fairleads placed from the body's origin at rest.
+// FILE`, MAP++'s or MoorDyn's (mooring_files.hpp): quasi-static lines
+// (yamsc/mooring/mooring_block.hpp) on the platform's mesh channels, the
+// fairleads placed from the body's origin at rest.
 #include "analysis/load_block_kinds.hpp"
-#include "analysis/map_mooring.hpp"
+#include "analysis/mooring_files.hpp"
 #include "analysis/platform_mesh.hpp"
 #include "diag/errors.hpp"
 #include "model/load_kinds.hpp"
@@ -23,12 +24,12 @@ std::shared_ptr<const runtime::LoadBlock> build_mooring(const model::LoadBlock& 
     if (water.gravity) env.gravity = *water.gravity;
     diag::Diagnostics diags;
     std::optional<std::vector<runtime::mooring::Line>> lines =
-        read_map_mooring(c.options.mooring, env, diags);
+        read_mooring_file(c.options.mooring, env, diags);
     if (!lines || diags.has_errors()) throw diag::UserError(diags.render());
     if (!diags.all().empty()) std::cerr << diags.render();
-    // MAP++'s Vessel nodes are in global coordinates with the platform
-    // undisplaced (the glue code maps the platform's motion onto them); the
-    // block's fairleads are from the body's origin in body axes.
+    // MAP++'s Vessel nodes and MoorDyn's Vessel points are in global
+    // coordinates with the platform undisplaced (the glue code maps the platform's motion onto
+    // them); the block's fairleads are from the body's origin in body axes.
     for (runtime::mooring::Line& line : *lines) line.fairlead = mesh.body_point(line.fairlead);
     runtime::mooring::MooringSetup s;
     s.lines = std::move(*lines);

@@ -92,8 +92,9 @@ private:
         return false;
     }
     /// HydroDyn (CompHydro 1) as `load hydrodyn` on the platform, instead of the
-    /// hydrodynamic inputs; MAP++ (CompMooring 1) as `load mooring` (its seabed
-    /// needs the .fst's WtrDpth).
+    /// hydrodynamic inputs; MAP++ or MoorDyn (CompMooring 1 or 3) as `load
+    /// mooring`, quasi-static lines either way (their seabed needs the .fst's
+    /// WtrDpth).
     bool hydro_block() const { return platform() && !d_.offshore.hydro_file.empty(); }
     bool mooring_block() const {
         return platform() && !d_.offshore.mooring_file.empty() && d_.offshore.water_depth;
@@ -925,11 +926,11 @@ private:
     void platform_blocks() {
         if (platform() && !d_.offshore.mooring_file.empty() && !d_.offshore.water_depth)
             diags_.warning(diag::Kind::NotSupported, {d_.fst, 0, 0},
-                           "CompMooring = 1 without WtrDpth in the .fst: MAP++'s seabed needs "
+                           "CompMooring without WtrDpth in the .fst: the mooring's seabed needs "
                            "the depth; declare `load mooring` with a depth parameter yourself");
         if (!hydro_block() && !mooring_block()) return;
-        out_ << "\n# ---- the platform's loads: HydroDyn (--hydro, --sea-state), MAP++ "
-                "(--mooring)\n";
+        out_ << "\n# ---- the platform's loads: HydroDyn (--hydro, --sea-state), MAP++ or "
+                "MoorDyn (--mooring)\n";
         std::string water;
         if (d_.offshore.water_depth) water += "; depth = WtrDpth";
         if (d_.offshore.water_density) water += "; density = WtrDens";

@@ -124,6 +124,12 @@ const std::vector<std::pair<std::string, std::string>>& fst_modules() {
     return modules;
 }
 
+/// CompMooring values whose lines become `load mooring`: MAP++ (1) and MoorDyn
+/// (3), whose file yamsc reads as quasi-static lines (docs/mooring.md).
+bool mooring_as_block(const std::string& comp_mooring) {
+    return comp_mooring == "1" || comp_mooring == "3";
+}
+
 std::string file_line(const diag::SourceFile& f, int line) {
     return fs::path(f.path()).filename().string() + ":" + std::to_string(line);
 }
@@ -213,9 +219,10 @@ private:
                         // (openfast/operation.cpp), which says what it converts.
                         const bool operation =
                             name == "CompInflow" || name == "CompAero" || name == "CompServo";
-                        // HydroDyn and MAP++ become the platform's load blocks.
-                        const bool block =
-                            (name == "CompHydro" || name == "CompMooring") && e.value == "1";
+                        // HydroDyn, and MAP++ or MoorDyn (as quasi-static lines),
+                        // become the platform's load blocks.
+                        const bool block = (name == "CompHydro" && e.value == "1") ||
+                                           (name == "CompMooring" && mooring_as_block(e.value));
                         if (e.value != "0" && !operation && !block)
                             diags_.warning(Kind::NotSupported, at,
                                            name + " = " + e.value + ": " + what +
@@ -231,7 +238,9 @@ private:
             return it != deck_.modules.end() && it->second.value == "1";
         };
         if (!module_on("CompHydro")) deck_.offshore.hydro_file = deck_.offshore.sea_state_file = "";
-        if (!module_on("CompMooring")) deck_.offshore.mooring_file.clear();
+        const auto mooring = deck_.modules.find("CompMooring");
+        if (mooring == deck_.modules.end() || !mooring_as_block(mooring->second.value))
+            deck_.offshore.mooring_file.clear();
         if (ed_file.empty()) {
             diags_.error(Kind::MissingProperty, {deck_.fst, 0, 0},
                          "the .fst file has no EDFile (the ElastoDyn input file)");

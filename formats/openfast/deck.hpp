@@ -54,7 +54,7 @@ struct OpenFastDeck {
     std::map<std::string, DeckEntry> modules;
     std::map<std::string, std::string> module_files;
     /// A floating deck's loads the model declares as blocks (`load hydrodyn` with
-    /// CompHydro 1, `load mooring` with CompMooring 1, MAP++): their files,
+    /// CompHydro 1, `load mooring` with CompMooring 1, MAP++, or 3, MoorDyn): their files,
     /// resolved (empty when the module is off), and the `.fst`'s water (OpenFAST
     /// v4: WtrDens, WtrDpth, MSL2SWL; nullopt in older decks).
     struct Offshore {

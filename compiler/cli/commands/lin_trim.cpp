@@ -96,7 +96,7 @@ const char* point_help =
                       model's `load rotor_table`, an AeroDyn file for `load blade_elements`
   --wind V            the wind at the point (the input a load block declares as its
                       wind; a --wind SPEC's value at t = 0)
-  --mooring MAP.dat   MAP++'s lines for the model's `load mooring` (docs/mooring.md)
+  --mooring FILE      MAP++'s or MoorDyn's lines for `load mooring` (docs/mooring.md)
   --hydro FILE        a HydroDyn file for the model's `load hydrodyn` (docs/hydrodynamics.md)
   --sea-state FILE    its SeaState file: the waves (still water without)
   --json              JSON on stdout
@@ -111,7 +111,7 @@ Command lin_command() {
                     [--trim [--hold dof,..] [--adjust input,..]]
                     [--mbc3 [--azimuths N] [--azimuth dof]]
                     [--aero Cp_Ct_Cq.txt|AeroDyn.dat [--wake frozen|quasi-steady]] [--wind V]
-                    [--mooring MAP.dat] [--hydro HydroDyn.dat [--sea-state SeaState.dat]]
+                    [--mooring FILE] [--hydro HydroDyn.dat [--sea-state SeaState.dat]]
                     [--sweep NAME=FROM:STEP:TO [--schedule points.csv] [-o campbell.csv]
                                                [--plot campbell.svg]]
                     [--format openfast-lin -o case.lin [--azimuths N [--azimuth dof]]]
@@ -144,7 +144,7 @@ Command trim_command() {
         "trim", "the operating point at rest in the model's equations (Newton on F = 0)",
         R"(yamsc trim MODEL.mbd [--at name=v,..] [--u name=v,..] [--set name=v,..] [--hold dof,..]
                      [--adjust input,..] [--aero Cp_Ct_Cq.txt] [--wind V] [--json]
-                     [--mooring MAP.dat] [--hydro HydroDyn.dat [--sea-state SeaState.dat]]
+                     [--mooring FILE] [--hydro HydroDyn.dat [--sea-state SeaState.dat]]
                      [--sid body=file.sid,..] [--external lib.so|file.c|file.cpp])",
         std::string(point_help) +
             R"(  --hold dof,..       DOFs kept as given (besides those with a rate)

@@ -85,7 +85,7 @@ Command sim_command() {
                     [--channels all|openfast] [--compare ref.csv] [--plot out.svg]
                     [--plot-channels a,b,..] [--vtk DIR] [--linear [--at name=v,..]]
                     [--aero Cp_Ct_Cq.txt] [--wind V|step:V0:V1:t=T|wind.csv]
-                    [--mooring MAP.dat] [--hydro HydroDyn.dat [--sea-state SeaState.dat]]
+                    [--mooring FILE] [--hydro HydroDyn.dat [--sea-state SeaState.dat]]
                     [--controller libdiscon.so [--controller-input DISCON.IN]]
                     [--coupling tight|loose [--interp-order 0|1|2]]
                     [--sid body=file.sid,..] [--external lib.so|file.c|file.cpp])",
@@ -113,7 +113,7 @@ Command sim_command() {
                       model's `load rotor_table`, an AeroDyn file for `load blade_elements`
   --wind SPEC         the wind input a load block declares: a speed, step:V0:V1:t=T,
                       or a CSV of time and speed
-  --mooring MAP.dat   MAP++'s lines for the model's `load mooring` (docs/mooring.md)
+  --mooring FILE      MAP++'s or MoorDyn's lines for `load mooring` (docs/mooring.md)
   --hydro FILE        a HydroDyn file for the model's `load hydrodyn` (docs/hydrodynamics.md)
   --sea-state FILE    its SeaState file: the waves (still water without)
   --controller LIB    a DISCON controller library called at every step (RK4, ABM4)
