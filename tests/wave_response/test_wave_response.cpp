@@ -1,5 +1,6 @@
 // The OC3-Hywind spar's RAO (models/oc3_spar_hydrodyn.mbd with the strip-theory HydroDyn file and
 // MAP++'s lines): peaks at the linear model's frequencies.
+#include "analysis/commands.hpp"
 #include "analysis/load_blocks.hpp"
 #include "analysis/loaded_model.hpp"
 #include "analysis/wave_response.hpp"
@@ -11,6 +12,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 using namespace yamsc;
@@ -111,4 +113,49 @@ TEST_CASE("the OC3 spar in long waves: the heave excitation is rho g A_wp per me
     const double k33 = x.linear.K0[2 * 6 + 2];
     CHECK(k33 > c33 * 1.02);
     CHECK(std::abs(x.motion[0][2]) == doctest::Approx(c33 / k33).epsilon(1e-3));
+}
+
+TEST_CASE(
+    "yamsc lin --rao: the CSV's spectra are |X|^2 S, the table's deviations their integrals") {
+    driver::LinOptions o;
+    o.model = std::string(YAMSC_SOURCE_DIR) + "/models/oc3_spar_hydrodyn.mbd";
+    o.mooring = std::string(YAMSC_TEST_DATA_DIR) + "/mooring/oc3_hywind.map";
+    o.hydro = std::string(YAMSC_TEST_DATA_DIR) + "/hydro/oc3_spar_strip.dat";
+    o.sea_state = std::string(YAMSC_TEST_DATA_DIR) + "/hydro/oc3_sea_state.dat";
+    o.trim = true;
+    o.rao = std::string(YAMSC_TEST_BINARY_DIR) + "/oc3_spar_rao.csv";
+    for (int k = 1; k <= 40; ++k) o.rao_frequencies.push_back(0.005 * k);
+    std::ostringstream out, err;
+    REQUIRE(analysis::lin(o, out, err) == 0);
+    std::ifstream in(o.rao);
+    std::string header, line;
+    std::getline(in, header);
+    CHECK(header.rfind("frequency_hz,omega_rad_s,wave_spectrum_m2s_rad,surge_abs,", 0) == 0);
+    // Columns: f, w, S, then |X| and phase per DOF (heave's |X| is column 7), then
+    // the spectra (heave's is column 17).
+    std::vector<std::vector<double>> rows;
+    while (std::getline(in, line)) {
+        std::vector<double> row;
+        std::stringstream s(line);
+        for (std::string cell; std::getline(s, cell, ',');) row.push_back(std::stod(cell));
+        REQUIRE(row.size() == 21);
+        rows.push_back(row);
+    }
+    REQUIRE(rows.size() == 40);
+    double variance = 0;
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        CHECK(rows[k][17] == doctest::Approx(rows[k][7] * rows[k][7] * rows[k][2]).epsilon(1e-7));
+        if (k > 0)
+            variance += 0.5 * (rows[k][1] - rows[k - 1][1]) * (rows[k][17] + rows[k - 1][17]);
+    }
+    // The table's heave row: name, max |X|, its frequency, standard deviation.
+    const std::string table = out.str();
+    const std::size_t at = table.find("\nheave ");
+    REQUIRE(at != std::string::npos);
+    std::stringstream heave(table.substr(at + 1));
+    std::string name;
+    double peak = 0, where = 0, deviation = 0;
+    heave >> name >> peak >> where >> deviation;
+    CHECK(deviation == doctest::Approx(std::sqrt(variance)).epsilon(1e-4));
+    CHECK(deviation > 0.01);
 }
