@@ -46,4 +46,3 @@ TEST_CASE("regular_wave is make_wave_field's regular Airy wave, exactly") {
     CHECK(wave->flow(0, {0, 0, -61}).velocity[0] == 0);
     CHECK_THROWS_AS(runtime::hydro::regular_wave(s.water, 0, 1), std::invalid_argument);
 }
-
