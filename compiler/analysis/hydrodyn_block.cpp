@@ -68,6 +68,7 @@ runtime::LoadBlocks build_hydrodyn(const model::LoadBlock& decl, const BlockCont
             throw diag::UserError(c.options.sea_state + ": " + e.what());
         }
     }
+    if (c.options.waves) h.waves = c.options.waves(h.water);
     runtime::LoadBlocks blocks;
     for (const HydroPart& part : hydrodyn_parts())
         if (part.applies(h)) blocks.push_back(part.build(h));

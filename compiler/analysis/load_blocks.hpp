@@ -10,10 +10,13 @@
 #include "driver/commands.hpp"
 #include "driver/outputs.hpp"
 
+#include <yamsc/hydro/waves.hpp>
 #include <yamsc/load_block.hpp>
 #include <yamsc/model_view.hpp>
 #include <yamsc/trim.hpp>
 
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,6 +28,10 @@ struct BlockOptions {
     std::string mooring{};   // --mooring MAP.dat: MAP++'s lines of the `mooring` blocks
     std::string hydro{};     // --hydro HydroDyn.dat: the `hydrodyn` blocks' members and matrices
     std::string sea_state{}; // --sea-state SeaState.dat: their waves (still water without)
+    /// When set, the `hydrodyn` blocks' waves instead of --sea-state's, made in the
+    /// declaration's water (null: still water): the frequency response's unit waves.
+    std::function<std::shared_ptr<const runtime::hydro::WaveField>(const runtime::hydro::Water&)>
+        waves{};
     /// --wind SPEC: an InflowWind file gives the blade elements its field
     /// (yamsc/wind.hpp); any other spec, or none, V_wind along ground x.
     std::string wind{};

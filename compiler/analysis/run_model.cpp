@@ -10,6 +10,7 @@
 #include "analysis/load_blocks.hpp"
 #include "analysis/loaded_model.hpp"
 #include "analysis/openfast_lin_model.hpp"
+#include "analysis/rao_report.hpp"
 #include "analysis/rotor_campbell.hpp"
 #include "analysis/rotor_modes.hpp"
 #include "analysis/scene_files.hpp"
@@ -199,7 +200,7 @@ int sim(const SimOptions& o, std::ostream& out, std::ostream& err) {
 
 int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     const bool lin_files = o.format == LinFormat::openfast_lin;
-    std::vector<NamedFile> outputs{{"-o", o.output}, {"--plot", o.plot}};
+    std::vector<NamedFile> outputs{{"-o", o.output}, {"--plot", o.plot}, {"--rao", o.rao}};
     if (lin_files) {
         // Every .lin file is an output: none may be an input or another output.
         outputs.clear();
@@ -210,6 +211,7 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
     std::vector<NamedFile> inputs = sid_files_of(o.sid);
     inputs.push_back({"the model", o.model});
     inputs.push_back({"--external", o.external});
+    for (const NamedFile& f : block_files(block_options(o))) inputs.push_back(f);
     check_outputs(inputs, outputs);
     // The second-order model (M, F and its Jacobians) and, for the modes, A.
     codegen::RoutineSet routines = linear_model_routines();
@@ -234,6 +236,7 @@ int lin(const LinOptions& o, std::ostream& out, std::ostream& err) {
         q = r.q;
         u = r.u;
     }
+    if (!o.rao.empty()) return rao_report(*loaded, o, q, u, out, err);
     if (lin_files) write_openfast_lin(*loaded, v, o, q, qd, u, out, o.json);
     if (o.mbc3) {
         const RotorModesRequest r = rotor_request(v, q, qd, u, o.azimuth, o.hold, o.azimuths);

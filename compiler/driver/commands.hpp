@@ -105,6 +105,8 @@ struct LinOptions {
     std::string mooring;          // --mooring MAP.dat: the lines of the model's `load mooring`
     std::string hydro, sea_state; // --hydro HydroDyn.dat, --sea-state SeaState.dat
     Wake wake = Wake::frozen;     // --wake: blade elements' wake in the linear model
+    std::string rao;              // --rao: the RAOs' CSV (with --hydro)
+    std::vector<double> rao_frequencies; // --frequencies FROM:STEP:TO [Hz] of --rao
 };
 
 struct TrimOptions {

@@ -13,6 +13,21 @@ using driver::LinFormat;
 using driver::LinOptions;
 using driver::TrimOptions;
 
+// --rao's checks and its frequencies (RAFT's default grid: 0.005 to 0.4 Hz by 0.005).
+void parse_rao(const Args& a, LinOptions& o) {
+    if (o.rao.empty()) {
+        if (a.has("--frequencies")) throw UsageError("--frequencies needs --rao");
+        return;
+    }
+    if (a.get("--hydro").empty()) throw UsageError("--rao needs --hydro");
+    if (o.sweep || o.mbc3 || a.has("--json") || o.format != LinFormat::table)
+        throw UsageError("--rao does not take --sweep, --mbc3, --json or --format");
+    const std::string f = a.has("--frequencies") ? a.get("--frequencies") : "0.005:0.005:0.4";
+    o.rao_frequencies = driver::parse_sweep("f=" + f).values;
+    if (o.rao_frequencies.empty() || o.rao_frequencies.front() <= 0)
+        throw UsageError("--frequencies must be positive, FROM:STEP:TO in Hz");
+}
+
 LinOptions parse_lin(const Args& a) {
     LinOptions o;
     o.format = choice(a, "--format", LinFormat::table,
@@ -38,8 +53,10 @@ LinOptions parse_lin(const Args& a) {
     if (a.has("--sweep")) o.sweep = driver::parse_sweep(a.get("--sweep"));
     o.output = a.get("-o");
     o.plot = a.get("--plot");
-    if (!o.sweep && !lin_files && (!o.output.empty() || !o.plot.empty()))
-        throw UsageError("lin writes files (-o, --plot) only for --sweep or --format");
+    o.rao = a.get("--rao");
+    if (!o.sweep && !lin_files && (!o.output.empty() || (!o.plot.empty() && o.rao.empty())))
+        throw UsageError("lin writes files (-o, --plot) only for --sweep, --format or --rao");
+    parse_rao(a, o);
     if (lin_files && o.output.empty()) throw UsageError("--format openfast-lin needs -o FILE.lin");
     if (lin_files && (o.sweep || !o.plot.empty()))
         throw UsageError("--format openfast-lin does not take --sweep or --plot");
@@ -114,6 +131,7 @@ Command lin_command() {
                     [--mooring FILE] [--hydro HydroDyn.dat [--sea-state SeaState.dat]]
                     [--sweep NAME=FROM:STEP:TO [--schedule points.csv] [-o campbell.csv]
                                                [--plot campbell.svg]]
+                    [--rao rao.csv [--frequencies FROM:STEP:TO] [--plot rao.svg]]
                     [--format openfast-lin -o case.lin [--azimuths N [--azimuth dof]]]
                     [--sid body=file.sid,..] [--external lib.so|file.c|file.cpp])",
         std::string(point_help) +
@@ -130,11 +148,17 @@ Command lin_command() {
   --wake W            blade elements (--aero AeroDyn.dat) linearized with a frozen
                       wake as OpenFAST does (frozen, default) or quasi-steady
   --format F          table (default), or openfast-lin: OpenFAST's .lin files at -o
-Details: docs/cli.md, docs/linearization.md.
+  --rao FILE          the response per metre of wave amplitude (RAO) of each DOF in
+                      regular waves, |X| and phase per frequency (CSV, with --hydro;
+                      heading, and with a JONSWAP --sea-state the DOFs' standard
+                      deviations, from the SeaState file; --plot: |X| as SVG)
+  --frequencies F:S:T the RAOs' wave frequencies [Hz] (0.005:0.005:0.4)
+Details: docs/cli.md, docs/linearization.md, docs/hydrodynamics.md.
 )",
-        {{"--at",     "--u",        "--set",     "--sid",     "--sweep", "-o",         "--plot",
-          "--hold",   "--azimuths", "--azimuth", "--aero",    "--wind",  "--adjust",   "--schedule",
-          "--format", "--external", "--wake",    "--mooring", "--hydro", "--sea-state"},
+        {{"--at",     "--u",         "--set",      "--sid",        "--sweep", "-o",
+          "--plot",   "--hold",      "--azimuths", "--azimuth",    "--aero",  "--wind",
+          "--adjust", "--schedule",  "--format",   "--external",   "--wake",  "--mooring",
+          "--hydro",  "--sea-state", "--rao",      "--frequencies"},
          {"--json", "--trim", "--mbc3"}},
         parse_lin, analysis::lin);
 }
