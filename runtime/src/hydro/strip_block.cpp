@@ -39,8 +39,8 @@ public:
         ports_.outputs_read = setup_.frame_outputs;
         ports_.loads = setup_.loads;
         collect_added_mass();
-        tabulate_fixed_points();
         fix_strips();
+        tabulate_fixed_points();
     }
 
     const BlockPorts& ports() const override { return ports_; }
@@ -112,19 +112,10 @@ private:
         BodyFrame rest;
         rest.r = Vector3d::Zero();
         rest.R = Matrix3d::Identity();
-        std::vector<double> z;
-        for (const strip::Member& m : members_) {
-            const int nodes = m.elements + 1;
-            z.resize(static_cast<std::size_t>(nodes));
-            for (int n = 0; n < nodes; ++n)
-                z[static_cast<std::size_t>(n)] = kinematics_point(rest, m.node(n)).z();
-            for (int n = 0; n < nodes; ++n) {
-                const strip::StripSpan span = strip::strip_span(z, n, m.element);
-                const Vector3d p = kinematics_point(rest, m.node(n) + span.offset * m.axis);
-                fixed_strips_.push_back(span.length > 0 && p.z() <= 0
-                                            ? setup_.waves->at({p.x(), p.y(), p.z()})
-                                            : nullptr);
-            }
+        for (const NodeStrip& strip : fixed_nodes_) {
+            const Vector3d p = kinematics_point(rest, strip.body);
+            fixed_strips_.push_back(
+                strip.length > 0 && p.z() <= 0 ? setup_.waves->at({p.x(), p.y(), p.z()}) : nullptr);
         }
         for (const strip::Joint& j : joints_) {
             const Vector3d p = kinematics_point(rest, j.position);
@@ -147,7 +138,7 @@ private:
     // member's values at the node.
     struct NodeStrip {
         double length = 0;
-        Vector3d body; // the strip's point, body axes
+        Vector3d body = Vector3d::Zero(); // the strip's point, body axes
         double radius = 0;
         StripCoefficients c;
     };
