@@ -5,8 +5,10 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <utility>
 
@@ -81,9 +83,38 @@ struct Closed {
         return p;
     }
 
-    /// The block evaluated at this point.
+    /// The last evaluation: the added mass of a block closed outside this one
+    /// asks for its base's q'' at the same motion with other loads, and those
+    /// do not change what this block reads (its states, time and reads equal).
+    struct Memo {
+        std::mutex mutex;
+        bool valid = false;
+        double t = 0;
+        Vec z;
+        Point p;
+    };
+    std::shared_ptr<Memo> memo;
+
+    /// The block evaluated at this point (the last evaluation again when it was
+    /// at the same time, states and reads: a block's loads are a function of them,
+    /// unless it has discrete states, which are never memoised).
     Point evaluate_here(double t, const double* q, const double* qd, const double* u) const {
-        return evaluate_reading(t, qd, reads(t, q, qd, u));
+        Vec r = reads(t, q, qd, u);
+        if (!memo) return evaluate_reading(t, qd, std::move(r));
+        const double* z = states(qd);
+        {
+            const std::lock_guard<std::mutex> lock(memo->mutex);
+            if (memo->valid && memo->t == t && memo->p.r == r &&
+                std::equal(memo->z.begin(), memo->z.end(), z))
+                return memo->p;
+        }
+        Point p = evaluate_reading(t, qd, std::move(r));
+        const std::lock_guard<std::mutex> lock(memo->mutex);
+        memo->valid = true;
+        memo->t = t;
+        memo->z.assign(z, z + nz);
+        memo->p = p;
+        return p;
     }
 
     void hold(double t, const Point& p) const {
@@ -197,6 +228,27 @@ struct Closed {
         Point p = evaluate(t, q, qd, u);
         if (added_mass) accelerate(t, q, qd, u, p);
         return p;
+    }
+
+    /// Whether an outputs_from_qdd call asks for the outputs that read the motion
+    /// alone (q'' unknown, read_outputs' call): then the block need not be
+    /// evaluated (held loads keep their history's order: evaluated as before).
+    bool motion_only(const double* qdd) const {
+        if (held) return false;
+        for (int i = 0; i < nq; ++i)
+            if (!std::isnan(qdd[i])) return false;
+        return true;
+    }
+
+    /// The outputs that read the motion alone: the base's with the block's loads
+    /// unknown (NaN), the block's own NaN. An output that reads the loads, q''
+    /// or the block comes out NaN, and read_outputs then asks for outputs.
+    void motion_outputs(double t, const double* q, const double* qd, const double* qdd,
+                        const double* u, double* y) const {
+        Vec ue(u, u + base->nu);
+        for (int k : block->ports().loads) ue[at(k)] = std::numeric_limits<double>::quiet_NaN();
+        base->outputs_from_qdd(t, q, qd, qdd, ue.data(), y);
+        for (int i = 0; i < nout; ++i) y[base->ny + i] = std::numeric_limits<double>::quiet_NaN();
     }
 
     Vec effective_inputs(const Point& p, const double* u) const {
@@ -397,6 +449,7 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
                                         "matrix");
         c.last_added_mass = std::make_shared<Vec>();
     }
+    if (!block->has_discrete_states()) c.memo = std::make_shared<Closed::Memo>();
     if (coupling.mode == Coupling::loose) {
         if (c.nz > 0)
             throw std::invalid_argument("load block: a block with continuous states couples "
@@ -434,7 +487,12 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
     v.block_initial_states.insert(v.block_initial_states.end(), z0.begin(), z0.end());
     const int nq = v.nq, nxb = c.nxb;
 
-    if (base->rhs)
+    // A block without loads or states (outputs only, the wave elevation) changes
+    // neither rhs nor forcing: evaluated for the outputs alone.
+    const bool outputs_only = c.nl == 0 && c.nz == 0 && !c.held;
+    if (base->rhs && outputs_only)
+        v.rhs = base->rhs;
+    else if (base->rhs)
         v.rhs = [c, nq, nxb](double t, const double* x, const double* u, double* xdot) {
             const Closed::Point p = c.evaluate_accelerated(t, x, x + nq, u);
             c.base->rhs(t, x, c.effective_inputs(p, u).data(), xdot);
@@ -458,7 +516,9 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
             detail::add_added_mass(terms, c.added_mass_at(t, z.data(), p).data(), M);
         };
     const bool second_order = v.nz == 0;
-    if (base->forcing && second_order)
+    if (base->forcing && second_order && outputs_only)
+        v.forcing = base->forcing;
+    else if (base->forcing && second_order)
         v.forcing = [c](double t, const double* q, const double* qd, const double* u, double* F) {
             const Closed::Point p = c.evaluate(t, q, qd, u);
             c.base->forcing(t, q, qd, c.effective_inputs(p, u).data(), F);
@@ -474,6 +534,10 @@ ModelView close_one(const ModelView& base_view, const std::shared_ptr<const Load
     if (base->outputs_from_qdd)
         v.outputs_from_qdd = [c](double t, const double* q, const double* qd, const double* qdd,
                                  const double* u, double* y) {
+            if (c.motion_only(qdd)) {
+                c.motion_outputs(t, q, qd, qdd, u, y);
+                return;
+            }
             Closed::Point p = c.evaluate(t, q, qd, u);
             if (c.added_mass) c.accelerate_with(t, q, qd, qdd, u, p);
             c.base->outputs_from_qdd(t, q, qd, qdd, c.effective_inputs(p, u).data(), y);

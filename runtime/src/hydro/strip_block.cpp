@@ -39,6 +39,7 @@ public:
         ports_.outputs_read = setup_.frame_outputs;
         ports_.loads = setup_.loads;
         collect_added_mass();
+        fix_strips();
         tabulate_fixed_points();
     }
 
@@ -111,19 +112,10 @@ private:
         BodyFrame rest;
         rest.r = Vector3d::Zero();
         rest.R = Matrix3d::Identity();
-        std::vector<double> z;
-        for (const strip::Member& m : members_) {
-            const int nodes = m.elements + 1;
-            z.resize(static_cast<std::size_t>(nodes));
-            for (int n = 0; n < nodes; ++n)
-                z[static_cast<std::size_t>(n)] = kinematics_point(rest, m.node(n)).z();
-            for (int n = 0; n < nodes; ++n) {
-                const strip::StripSpan span = strip::strip_span(z, n, m.element);
-                const Vector3d p = kinematics_point(rest, m.node(n) + span.offset * m.axis);
-                fixed_strips_.push_back(span.length > 0 && p.z() <= 0
-                                            ? setup_.waves->at({p.x(), p.y(), p.z()})
-                                            : nullptr);
-            }
+        for (const NodeStrip& strip : fixed_nodes_) {
+            const Vector3d p = kinematics_point(rest, strip.body);
+            fixed_strips_.push_back(
+                strip.length > 0 && p.z() <= 0 ? setup_.waves->at({p.x(), p.y(), p.z()}) : nullptr);
         }
         for (const strip::Joint& j : joints_) {
             const Vector3d p = kinematics_point(rest, j.position);
@@ -142,26 +134,75 @@ private:
         return p ? p->flow(t) : FlowAt{};
     }
 
-    // Drag and wave inertia on each node's strip (HydroDyn's distributed loads).
-    template <class Apply> void members_flow(double t, const BodyFrame& frame, Apply& apply) const {
-        const double rho = water_.density;
+    // A node's strip: its span (from the kinematics points' depths) and the
+    // member's values at the node.
+    struct NodeStrip {
+        double length = 0;
+        Vector3d body = Vector3d::Zero(); // the strip's point, body axes
+        double radius = 0;
+        StripCoefficients c;
+    };
+
+    static void member_strips(const strip::Member& m, const std::vector<double>& z,
+                              std::vector<NodeStrip>& out) {
+        const int nodes = m.elements + 1;
+        out.resize(static_cast<std::size_t>(nodes));
+        for (int n = 0; n < nodes; ++n) {
+            const strip::StripSpan span = strip::strip_span(z, n, m.element);
+            NodeStrip& s = out[static_cast<std::size_t>(n)];
+            s.length = span.length;
+            if (span.length <= 0) continue;
+            s.body = m.node(n) + span.offset * m.axis;
+            s.radius = m.radius(n);
+            s.c = m.coefficients(n);
+        }
+    }
+
+    // With the kinematics at the undisplaced positions (WaveDisp 0) the strips
+    // never change: made once, all members' nodes in a row.
+    void fix_strips() {
+        if (setup_.kinematics_displaced) return;
+        BodyFrame rest;
+        rest.r = Vector3d::Zero();
+        rest.R = Matrix3d::Identity();
         std::vector<double> z;
-        std::size_t fixed = 0;
+        std::vector<NodeStrip> one;
         for (const strip::Member& m : members_) {
             const int nodes = m.elements + 1;
             z.resize(static_cast<std::size_t>(nodes));
             for (int n = 0; n < nodes; ++n)
-                z[static_cast<std::size_t>(n)] = kinematics_point(frame, m.node(n)).z();
+                z[static_cast<std::size_t>(n)] = kinematics_point(rest, m.node(n)).z();
+            member_strips(m, z, one);
+            fixed_nodes_.insert(fixed_nodes_.end(), one.begin(), one.end());
+        }
+    }
+
+    // Drag and wave inertia on each node's strip (HydroDyn's distributed loads).
+    template <class Apply> void members_flow(double t, const BodyFrame& frame, Apply& apply) const {
+        const double rho = water_.density;
+        std::vector<double> z;
+        std::vector<NodeStrip> moving;
+        std::size_t fixed = 0;
+        for (const strip::Member& m : members_) {
+            const int nodes = m.elements + 1;
             const std::size_t first = fixed;
             fixed += static_cast<std::size_t>(nodes);
+            const NodeStrip* strips = fixed_nodes_.empty() ? nullptr : &fixed_nodes_[first];
+            if (!strips) {
+                z.resize(static_cast<std::size_t>(nodes));
+                for (int n = 0; n < nodes; ++n)
+                    z[static_cast<std::size_t>(n)] = kinematics_point(frame, m.node(n)).z();
+                member_strips(m, z, moving);
+                strips = moving.data();
+            }
             const Vector3d k = frame.R * m.axis;
             const Matrix3d kkt = k * k.transpose();
             const Matrix3d ak = Matrix3d::Identity() - kkt;
             const double taper = m.taper();
             for (int n = 0; n < nodes; ++n) {
-                const strip::StripSpan span = strip::strip_span(z, n, m.element);
-                if (span.length <= 0) continue;
-                const Vector3d body = m.node(n) + span.offset * m.axis;
+                const NodeStrip& strip = strips[n];
+                if (strip.length <= 0) continue;
+                const Vector3d& body = strip.body;
                 const Vector3d at = frame.r + frame.R * body;
                 const FlowAt water =
                     fixed_strips_.empty()
@@ -170,8 +211,8 @@ private:
                 const Vector3d structure = frame.v + frame.w.cross(at - frame.r);
                 const Vector3d vrel =
                     Vector3d(water.velocity[0], water.velocity[1], water.velocity[2]) - structure;
-                const double radius = m.radius(n);
-                const StripCoefficients c = m.coefficients(n);
+                const double radius = strip.radius;
+                const StripCoefficients& c = strip.c;
                 const Vector3d normal = ak * vrel;
                 Vector3d f = c.cd * rho * radius * normal.norm() * normal +
                              0.5 * c.ax_cd * rho * pi * radius * std::abs(taper) *
@@ -184,7 +225,7 @@ private:
                          2 * c.ax_ca * rho * area * std::abs(taper) * (kkt * a) +
                          2 * water.dynamic_pressure * c.ax_cp * pi * radius * taper * k;
                 }
-                apply(at, span.length * f);
+                apply(at, strip.length * f);
             }
         }
     }
@@ -290,6 +331,7 @@ private:
     // WaveDisp 0: the tabulated flow at each member node's strip (members in
     // order, null where dry) and at each joint.
     std::vector<std::shared_ptr<const PointWaves>> fixed_strips_, fixed_joints_;
+    std::vector<NodeStrip> fixed_nodes_; // WaveDisp 0: every member's strips, made once
     std::array<double, 36> added_mass_{};
 };
 

@@ -3,6 +3,7 @@
 // grid), with SeaState's stretching rules above and below the still-water level.
 #include "waves_linear.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
@@ -49,8 +50,16 @@ std::shared_ptr<const PointWaves> WaveField::at(const Vec3& p) const {
     return std::make_shared<EvaluatedPoint>(std::move(self), p);
 }
 
+namespace {
+std::uint64_t next_field_id() {
+    static std::atomic<std::uint64_t> next{1};
+    return next++;
+}
+} // namespace
+
 LinearWaveField::LinearWaveField(const WaveSettings& s)
-    : water_(s.water), direction_(s.direction), stretching_(s.stretching), dt_(s.dt) {
+    : water_(s.water), direction_(s.direction), stretching_(s.stretching), dt_(s.dt),
+      id_(next_field_id()) {
     if (!(water_.depth > 0)) throw std::invalid_argument("waves: the water depth must be > 0");
     if (!(water_.gravity > 0)) throw std::invalid_argument("waves: gravity must be > 0");
     n_ = wave_time_steps(s.t_max, s.dt);
@@ -100,9 +109,23 @@ double LinearWaveField::elevation(double t, double x, double y) const {
     thread_local std::vector<std::complex<double>> e;
     time_phasors(t, e);
     const double xp = x * cos_dir_ + y * sin_dir_;
+    // The space phasors of the last point asked for: an elevation output asks at
+    // one point every time (one sine and cosine per component saved).
+    thread_local struct {
+        std::uint64_t field = 0;
+        double xp = 0;
+        std::vector<std::complex<double>> phasors;
+    } space;
+    if (space.field != id_ || space.xp != xp || space.phasors.size() != terms_.size()) {
+        space.phasors.resize(terms_.size());
+        for (std::size_t i = 0; i < terms_.size(); ++i)
+            space.phasors[i] = std::polar(1.0, -terms_[i].k * xp);
+        space.field = id_;
+        space.xp = xp;
+    }
     double eta = 0;
     for (std::size_t i = 0; i < terms_.size(); ++i)
-        eta += (terms_[i].amplitude * e[i] * std::polar(1.0, -terms_[i].k * xp)).real();
+        eta += (terms_[i].amplitude * e[i] * space.phasors[i]).real();
     return eta;
 }
 

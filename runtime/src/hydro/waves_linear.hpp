@@ -3,6 +3,8 @@
 // (waves_field.cpp) and the points tabulated on the time grid (waves_point.cpp).
 #include "yamsc/hydro/waves.hpp"
 
+#include <cstdint>
+
 namespace yamsc::runtime::hydro {
 
 class LinearWaveField final : public WaveField {
@@ -51,6 +53,7 @@ private:
     int n_ = 0;
     int first_ = 0;           // grid index m of terms_[0]
     std::vector<Term> terms_; // m = first_, first_ + 1, ... (zeros inside the span kept)
+    std::uint64_t id_;        // this field among all made (elevation's cache of phasors)
     std::vector<WaveComponent> components_;
 };
 

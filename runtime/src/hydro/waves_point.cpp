@@ -85,6 +85,8 @@ public:
             two_series(fft, field.first_index(), du, dw, slope_values_.du, slope_values_.dw);
             two_series(fft, field.first_index(), pr, pr, slope_values_.p, unused);
         }
+        pack(value_, rows_);
+        if (slope_) pack(slope_values_, slope_rows_);
     }
 
     double elevation(double t) const override {
@@ -98,13 +100,12 @@ public:
         Stencil st;
         locate(t, st);
         if (stretching_ != Stretching::none && z_ > at(eta_, st)) return {};
-        double u = at(value_.u, st), w = at(value_.w, st), du = at(value_.du, st),
-               dw = at(value_.dw, st), p = at(value_.p, st);
+        std::array<double, fields> v = at_row(rows_, st);
         if (slope_) {
-            u += z_ * at(slope_values_.u, st), w += z_ * at(slope_values_.w, st);
-            du += z_ * at(slope_values_.du, st), dw += z_ * at(slope_values_.dw, st);
-            p += z_ * at(slope_values_.p, st);
+            const std::array<double, fields> d = at_row(slope_rows_, st);
+            for (std::size_t c = 0; c < fields; ++c) v[c] += z_ * d[c];
         }
+        const double u = v[0], w = v[1], du = v[2], dw = v[3], p = v[4];
         FlowAt r;
         r.velocity = {u * cos_, u * sin_, w};
         r.acceleration = {du * cos_, du * sin_, dw};
@@ -134,11 +135,32 @@ private:
                st.w[3] * v[st.j[3]];
     }
 
+    // u, w, du, dw, p of one time sample side by side: a flow reads four
+    // samples, four cache lines instead of twenty.
+    static constexpr std::size_t fields = 5;
+    static void pack(Series& s, std::vector<double>& rows) {
+        rows.resize(fields * s.u.size());
+        for (std::size_t j = 0; j < s.u.size(); ++j) {
+            double* r = &rows[fields * j];
+            r[0] = s.u[j], r[1] = s.w[j], r[2] = s.du[j], r[3] = s.dw[j], r[4] = s.p[j];
+        }
+        s = Series{};
+    }
+    static std::array<double, fields> at_row(const std::vector<double>& rows, const Stencil& st) {
+        std::array<double, fields> v;
+        const double* r[4];
+        for (std::size_t k = 0; k < 4; ++k) r[k] = &rows[fields * st.j[k]];
+        for (std::size_t c = 0; c < fields; ++c)
+            v[c] = st.w[0] * r[0][c] + st.w[1] * r[1][c] + st.w[2] * r[2][c] + st.w[3] * r[3][c];
+        return v;
+    }
+
     double dt_, period_, z_, cos_, sin_;
     Stretching stretching_;
     bool wet_ = false, slope_ = false;
     std::vector<double> eta_;
-    Series value_, slope_values_;
+    Series value_, slope_values_; // while tabulating; then packed in rows_, slope_rows_
+    std::vector<double> rows_, slope_rows_;
 };
 
 } // namespace
