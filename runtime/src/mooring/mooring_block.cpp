@@ -1,7 +1,6 @@
 #include <yamsc/mooring/mooring_block.hpp>
 
 #include <cmath>
-#include <mutex>
 #include <stdexcept>
 
 namespace yamsc::runtime::mooring {
@@ -47,7 +46,7 @@ public:
     void evaluate(double, const double*, const double* r, double* loads, double*,
                   double* out) const override {
         const Pose pose = pose_of(r);
-        const MooringLoads m = warm_loads(pose);
+        const MooringLoads m = mooring_loads(setup_.lines, pose);
         to_body_axes(pose, m, loads);
         const std::size_t n = setup_.lines.size();
         for (std::size_t k = 0; k < n; ++k) {
@@ -128,30 +127,8 @@ private:
         }
     }
 
-    /// The lines at this pose, Newton started from the last evaluation's
-    /// tensions (the integrator's stages move the fairleads by millimetres: two
-    /// or three iterations instead of a cold start's). Converged to the same
-    /// tolerance, so the loads differ only in rounding; a start that does not
-    /// converge falls back to MAP++'s cold start.
-    MooringLoads warm_loads(const Pose& pose) const {
-        std::unique_lock<std::mutex> lock(last_mutex_);
-        const MooringLoads previous = last_;
-        lock.unlock();
-        MooringLoads m;
-        try {
-            m = mooring_loads(setup_.lines, pose, previous.lines.empty() ? nullptr : &previous);
-        } catch (const std::runtime_error&) {
-            m = mooring_loads(setup_.lines, pose);
-        }
-        lock.lock();
-        last_ = m;
-        return m;
-    }
-
     MooringSetup setup_;
     BlockPorts ports_;
-    mutable std::mutex last_mutex_;
-    mutable MooringLoads last_;
 };
 
 } // namespace
