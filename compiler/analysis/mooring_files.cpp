@@ -1,10 +1,11 @@
 #include "analysis/mooring_files.hpp"
 
+#include "text/ascii.hpp"
+
 #include "analysis/moordyn_mooring.hpp"
 #include "diag/read_text.hpp"
 
 #include <array>
-#include <cctype>
 #include <string>
 
 namespace yamsc::analysis {
@@ -16,12 +17,6 @@ const std::array<MooringFormatInfo, 2> formats{{
     {MooringFormat::moordyn, "MoorDyn", "LINE TYPES", &read_moordyn_mooring},
 }};
 
-std::string upper(std::string_view s) {
-    std::string u(s);
-    for (char& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return u;
-}
-
 } // namespace
 
 std::optional<MooringFormat> mooring_format(std::string_view text) {
@@ -32,7 +27,7 @@ std::optional<MooringFormat> mooring_format(std::string_view text) {
         if (end == std::string_view::npos) end = text.size();
         const std::string_view line = text.substr(start, end - start);
         if (line.find("---") != std::string_view::npos) {
-            const std::string u = upper(line);
+            const std::string u = text::ascii_upper(line);
             for (const MooringFormatInfo& f : formats)
                 if (u.find(f.marker) != std::string::npos) return f.format;
         }

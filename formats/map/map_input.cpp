@@ -1,9 +1,10 @@
 #include "map/map_input.hpp"
 
+#include "text/ascii.hpp"
+
 #include "elastodyn/file.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <string_view>
 
@@ -34,12 +35,6 @@ std::vector<Word> split(std::string_view line) {
             words.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
     }
     return words;
-}
-
-std::string upper(std::string_view s) {
-    std::string u(s);
-    for (char& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return u;
 }
 
 enum Section { dictionary, nodes, lines, options, sections };
@@ -159,7 +154,7 @@ private:
             error(Kind::InvalidValue, at(r, 1),
                   "a line type's diameter, mass density and EA must be positive");
         for (const LineType& other : in.line_types)
-            if (upper(other.label) == upper(t.label))
+            if (text::ascii_upper(other.label) == text::ascii_upper(t.label))
                 error(Kind::DuplicateName, t.at, "line type '" + t.label + "' is defined twice");
         in.line_types.push_back(t);
     }
@@ -168,7 +163,7 @@ private:
                                         bool depth_allowed) {
         std::string_view text = r.words[word].text;
         NodeValue v;
-        if (upper(text) == "DEPTH") {
+        if (text::ascii_upper(text) == "DEPTH") {
             if (!depth_allowed) {
                 error(
                     Kind::InvalidValue, at(r, word),
@@ -203,7 +198,7 @@ private:
         const auto number = count(r, 0, "Node");
         if (!number) return;
         n.number = *number;
-        const std::string type = upper(r.words[1].text);
+        const std::string type = text::ascii_upper(r.words[1].text);
         if (type == "FIX" || type == "FIXED")
             n.kind = NodeKind::fix;
         else if (type == "VESSEL")
@@ -268,7 +263,7 @@ private:
             "LM_MODEL",      "POWELL",     "PG_COOKED",     "KRYLOV_ACCELERATOR", "REPEAT",
             "REF_POSITION"};
         SolverOption o;
-        o.name = upper(r.words[0].text);
+        o.name = text::ascii_upper(r.words[0].text);
         o.at = at(r, 0);
         for (std::size_t k = 1; k < r.words.size(); ++k) o.values.emplace_back(r.words[k].text);
         if (std::find(known.begin(), known.end(), o.name) == known.end()) {
@@ -294,8 +289,9 @@ private:
     void check_references(const MapInput& in) {
         for (const LineRow& l : in.lines) {
             const bool typed =
-                std::any_of(in.line_types.begin(), in.line_types.end(),
-                            [&](const LineType& t) { return upper(t.label) == upper(l.type); });
+                std::any_of(in.line_types.begin(), in.line_types.end(), [&](const LineType& t) {
+                    return text::ascii_upper(t.label) == text::ascii_upper(l.type);
+                });
             if (!typed) {
                 std::vector<std::string> labels;
                 for (const LineType& t : in.line_types) labels.push_back(t.label);

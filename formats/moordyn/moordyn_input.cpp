@@ -1,5 +1,7 @@
 #include "moordyn/moordyn_input.hpp"
 
+#include "text/ascii.hpp"
+
 #include "elastodyn/file.hpp"
 
 #include <algorithm>
@@ -39,12 +41,6 @@ std::vector<Word> split(std::string_view line) {
             words.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
     }
     return words;
-}
-
-std::string upper(std::string_view s) {
-    std::string u(s);
-    for (char& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return u;
 }
 
 bool contains(const std::string& text, const char* what) {
@@ -102,7 +98,7 @@ struct Decomposed {
 };
 
 Decomposed decompose(std::string_view word) {
-    const std::string u = upper(word);
+    const std::string u = text::ascii_upper(word);
     Decomposed d;
     std::size_t i = 0;
     while (i < u.size() && !std::isdigit(static_cast<unsigned char>(u[i]))) ++i;
@@ -150,7 +146,7 @@ public:
             Row r{line, text, split(text)};
             // ProcessComFile drops blank lines and comments.
             if (r.words.empty() || text[0] == '!' || text[0] == '#' || text[0] == '%') continue;
-            const std::string u = upper(text);
+            const std::string u = text::ascii_upper(text);
             if (contains(u, "---")) {
                 check_count();
                 section = section_of(u);
@@ -163,8 +159,9 @@ public:
                 continue;
             }
             if (to_skip == 2 && is_table(section) && r.words.size() >= 2 &&
-                (upper(r.words[1].text) == "NTYPES" || upper(r.words[1].text) == "NCONNECTS" ||
-                 upper(r.words[1].text) == "NLINES")) {
+                (text::ascii_upper(r.words[1].text) == "NTYPES" ||
+                 text::ascii_upper(r.words[1].text) == "NCONNECTS" ||
+                 text::ascii_upper(r.words[1].text) == "NLINES")) {
                 // MoorDyn v1: the table's length before its column names.
                 in_.layout = 1;
                 const auto count = whole(r.words[0].text, at(r, 0), std::string(r.words[1].text));
@@ -180,7 +177,7 @@ public:
             if (section == Section::outputs && contains(u, "END")) section = Section::none;
             // v1 ends its options with END too.
             if (section == Section::options && in_.layout == 1 && r.words.size() == 1 &&
-                upper(r.words[0].text) == "END")
+                text::ascii_upper(r.words[0].text) == "END")
                 section = Section::none;
             if (!row(section, r)) return std::nullopt;
         }
@@ -429,7 +426,7 @@ private:
         const auto kind = attachment(r, &p.attached_to);
         if (!kind) return;
         p.attachment = *kind;
-        const std::string z = upper(r.words[4].text);
+        const std::string z = text::ascii_upper(r.words[4].text);
         if (contains(z, "SEABED") || contains(z, "GROUND") || contains(z, "FLOOR")) {
             p.on_seabed = true;
         }
@@ -519,7 +516,7 @@ private:
         }
         Option o;
         o.value = std::string(r.words[0].text);
-        o.name = upper(r.words[1].text);
+        o.name = text::ascii_upper(r.words[1].text);
         o.at = at(r, 1);
         if (std::find(known_options.begin(), known_options.end(), o.name) == known_options.end()) {
             diags_.warning(Kind::UnknownProperty, o.at,

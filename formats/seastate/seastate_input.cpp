@@ -1,10 +1,11 @@
 #include "seastate/seastate_input.hpp"
 
+#include "text/ascii.hpp"
+
 #include "diag/read_text.hpp"
 #include "elastodyn/file.hpp"
 #include "hydrodyn/entries.hpp"
 
-#include <cctype>
 #include <cmath>
 
 namespace yamsc::seastate {
@@ -18,11 +19,6 @@ diag::Location Input::location(const std::string& key) const {
 }
 
 namespace {
-
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
 
 class Reader {
 public:
@@ -95,7 +91,7 @@ private:
 
     /// 0 to 7, or "1P#": regular waves whose phase is # degrees.
     void wave_mod(const Entry& e) {
-        const std::string v = upper(e.value());
+        const std::string v = text::ascii_upper(e.value());
         if (v.size() > 2 && v.compare(0, 2, "1P") == 0) {
             auto phase = elastodyn::parse_number(v.substr(2));
             if (!phase) {
@@ -135,7 +131,7 @@ private:
 
     /// A number (the intrinsic generator's second seed) or RANLUX.
     void seed2(const Entry& e) {
-        const std::string v = upper(e.value());
+        const std::string v = text::ascii_upper(e.value());
         if (!v.empty() && (v[0] == 'T' || v[0] == 'F')) {
             d_.error(Kind::InvalidValue, e.at(),
                      "'WaveSeed(2)': invalid generator '" + e.value() + "'");
