@@ -17,6 +17,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <map>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -48,6 +49,35 @@ Points points_of(const TurbulenceSpec& s, const TurbulenceLayout& l) {
         p.z.push_back(s.hub_height);
     }
     return p;
+}
+
+/// The distinct distances between the points, and which one each pair has.
+struct Separations {
+    std::vector<double> distance;
+    std::vector<std::size_t> pair_index; // row-major, np x np
+    std::size_t np = 0;
+    double closest = std::numeric_limits<double>::infinity(); // of two distinct points
+    std::size_t index(int i, int j) const {
+        return pair_index[static_cast<std::size_t>(i) * np + static_cast<std::size_t>(j)];
+    }
+};
+
+Separations separations_of(const Points& pts) {
+    Separations s;
+    s.np = pts.y.size();
+    const int np = static_cast<int>(s.np);
+    std::map<double, std::size_t> seen;
+    s.pair_index.resize(s.np * s.np);
+    for (int i = 0; i < np; ++i)
+        for (int j = 0; j < np; ++j) {
+            const double r = std::hypot(pts.y[i] - pts.y[j], pts.z[i] - pts.z[j]);
+            if (i != j) s.closest = std::min(s.closest, r);
+            const auto [at, added] = seen.emplace(r, s.distance.size());
+            if (added) s.distance.push_back(r);
+            s.pair_index[static_cast<std::size_t>(i) * s.np + static_cast<std::size_t>(j)] =
+                at->second;
+        }
+    return s;
 }
 
 double sigma_of(const double* x, int n) {
@@ -82,13 +112,10 @@ TurbulenceField generate_turbulence(const TurbulenceSpec& s,
     const double two_pi = 2 * std::acos(-1.0);
     auto phase = [&] { return two_pi * static_cast<double>(rng() >> 11) * 0x1.0p-53; };
 
-    Eigen::MatrixXd distance(np, np);
-    double closest = std::numeric_limits<double>::infinity(); // of two distinct points
-    for (int i = 0; i < np; ++i)
-        for (int j = 0; j < np; ++j) {
-            distance(i, j) = std::hypot(pts.y[i] - pts.y[j], pts.z[i] - pts.z[j]);
-            if (i != j) closest = std::min(closest, distance(i, j));
-        }
+    // A regular grid has few distinct separations (one per grid offset), so the
+    // coherence is computed once per separation and frequency, not once per pair.
+    const Separations separations = separations_of(pts);
+    const double closest = separations.closest;
     // Above some frequency every pair's coherence is below 1e-16 / np: the
     // coherence matrix is the identity to rounding, and so is its Cholesky factor
     // (each coefficient changes by less than 1e-16 of its size). Its LLT, the
@@ -104,6 +131,7 @@ TurbulenceField generate_turbulence(const TurbulenceSpec& s,
     std::vector<std::complex<double>> rotation(static_cast<std::size_t>(np));
     const Fft fft(n);
     Eigen::MatrixXd coherence(np, np);
+    std::vector<double> coherence_of(separations.distance.size());
     const double work_total = 3.0 * nf;
     double last_report = -1;
 
@@ -117,9 +145,11 @@ TurbulenceField generate_turbulence(const TurbulenceSpec& s,
             if (k == nf)
                 continue; // the Nyquist term is set to zero (its phases drawn all the same)
             if (c == 0 && !uncorrelated(f)) {
+                for (std::size_t d = 0; d < separations.distance.size(); ++d)
+                    coherence_of[d] = iec_coherence(iec, f, separations.distance[d]);
                 for (int j = 0; j < np; ++j)
                     for (int i = j; i < np; ++i)
-                        coherence(i, j) = iec_coherence(iec, f, distance(i, j));
+                        coherence(i, j) = coherence_of[separations.index(i, j)];
                 const Eigen::LLT<Eigen::MatrixXd, Eigen::Lower> llt(coherence);
                 if (llt.info() != Eigen::Success)
                     throw std::runtime_error("turbulence: the u coherence matrix at " +
@@ -143,17 +173,25 @@ TurbulenceField generate_turbulence(const TurbulenceSpec& s,
                 last_report = done;
             }
         }
-        for (int i = 0; i < np; ++i) {
+        // Two points per transform: each spectrum is Hermitian, so its series is
+        // real, and the series of X + iY are x + iy.
+        for (int i = 0; i < np; i += 2) {
+            const bool pair = i + 1 < np;
             const std::complex<double>* x = coefficients.data() + static_cast<std::size_t>(i) * un;
+            const std::complex<double>* y = pair ? x + un : nullptr;
+            const std::complex<double> unit(0, 1);
             spectrum[0] = 0;
             for (int k = 1; k < nf; ++k) {
-                spectrum[static_cast<std::size_t>(k)] = x[k];
-                spectrum[un - static_cast<std::size_t>(k)] = std::conj(x[k]);
+                const std::complex<double> yk = pair ? y[k] : std::complex<double>();
+                spectrum[static_cast<std::size_t>(k)] = x[k] + unit * yk;
+                spectrum[un - static_cast<std::size_t>(k)] = std::conj(x[k]) + unit * std::conj(yk);
             }
             spectrum[static_cast<std::size_t>(nf)] = 0;
             fft.inverse(spectrum.data(), time.data());
             double* out = series.data() + (static_cast<std::size_t>(c) * np + i) * un;
             for (std::size_t it = 0; it < un; ++it) out[it] = time[it].real();
+            if (pair)
+                for (std::size_t it = 0; it < un; ++it) out[un + it] = time[it].imag();
         }
     }
 
