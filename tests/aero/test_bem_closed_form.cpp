@@ -235,3 +235,34 @@ TEST_CASE("bem: every element gets a root or the wake-free angle") {
     }
     CHECK(roots > 1900);
 }
+
+TEST_CASE("bem: the warm bracket finds AeroDyn's root to Brent's tolerance") {
+    // Slowly changing inflow and pitch, as from step to step: each solve starts
+    // from the last warm root; AeroDyn's full search from the same guess.
+    const Airfoil af = stalling_plate();
+    std::mt19937 gen(31);
+    std::normal_distribution<double> n(0, 1);
+    const BemOptions o;
+    for (const double z : {10.0, 35.0, 60.0}) {
+        ElementInput in = element(af);
+        in.z = in.r = z;
+        in.vy = 1.2 * z;
+        BracketMemory memory;
+        int known = 0;
+        for (int i = 0; i < 400; ++i) {
+            in.vx = std::clamp(in.vx + 0.05 * n(gen), 3.0, 25.0);
+            in.vy = std::clamp(in.vy + 0.05 * n(gen), 5.0, 80.0);
+            in.theta = std::clamp(in.theta + 0.002 * n(gen), -0.1, 0.4);
+            const ElementSolution full = solve_inductions(in, o);
+            const ElementSolution warm = solve_inductions(in, o, memory);
+            REQUIRE(warm.valid == full.valid);
+            CHECK(std::abs(warm.phi_bem - full.phi_bem) <= 4 * o.angle_tolerance);
+            CHECK(warm.a_bem == doctest::Approx(full.a_bem).epsilon(1e-4));
+            if (memory.ends_known) ++known;
+            in.phi_guess = warm.phi_bem;
+            in.guess_valid = warm.valid;
+        }
+        // The memory holds the momentum region's end signs nearly throughout.
+        CHECK(known > 390);
+    }
+}

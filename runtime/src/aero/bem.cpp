@@ -65,12 +65,19 @@ double inflow_angle(double vx, double vy, double a, double ap) {
 
 // Brent's method on [lo, hi] with f(lo), f(hi) of opposite signs: stops when the
 // bracket is below opt.angle_tolerance or |f| below opt.tolerance (AeroDyn's sub_brent).
-// `at_b`: the residual at the returned root, when the search evaluated it there.
+// `at_b`: the residual at the returned root, when the search evaluated it there;
+// `slope`: df/dphi by the last two points (a warm bracket's next step).
 struct BrentResult {
     double x;
     bool valid;
     const Residual* at_b;
+    double slope;
 };
+
+double secant_slope(double x0, double f0, double x1, double f1) {
+    return x1 != x0 ? (f1 - f0) / (x1 - x0) : 0.0;
+}
+
 BrentResult brent(const ElementTerms& el, double lo, double hi, double flo, double fhi,
                   bool hi_valid, Residual& rb) {
     const BemOptions& opt = el.opt;
@@ -98,7 +105,8 @@ BrentResult brent(const ElementTerms& el, double lo, double hi, double flo, doub
         }
         const double tol = 2.0 * eps * std::abs(b) + x_tolerance;
         const double m = 0.5 * (c - b);
-        if (std::abs(m) <= tol || fb == 0.0) return {b, valid, b_known ? &rb : nullptr};
+        if (std::abs(m) <= tol || fb == 0.0)
+            return {b, valid, b_known ? &rb : nullptr, secant_slope(b, fb, c, fc)};
         if (std::abs(e) >= tol && std::abs(fa) > std::abs(fb)) {
             double s = fb / fa, p, q;
             if (a != c) {
@@ -133,9 +141,9 @@ BrentResult brent(const ElementTerms& el, double lo, double hi, double flo, doub
         b_known = true;
         fb = rb.f;
         valid = rb.valid;
-        if (std::abs(fb) < opt.tolerance) return {b, valid, &rb};
+        if (std::abs(fb) < opt.tolerance) return {b, valid, &rb, secant_slope(a, fa, b, fb)};
     }
-    return {b, valid, b_known ? &rb : nullptr};
+    return {b, valid, b_known ? &rb : nullptr, secant_slope(a, fa, b, fb)};
 }
 
 // The root and, when the search evaluated it there, the residual at it (the
@@ -146,9 +154,68 @@ struct SolvedPhi {
     const Residual* residual = nullptr;
 };
 
+// The momentum region's ends for inflow along vx's sign: the one near phi = 0
+// and the one near +-pi/2.
+struct Region {
+    double near, far;
+};
+Region momentum_region(double vx) {
+    const double s = vx > 0 ? 1.0 : -1.0;
+    return {s * phi_margin, s * (pi / 2 - phi_margin)};
+}
+
+bool strictly_between(double x, double a, double b) {
+    return (a < x && x < b) || (b < x && x < a);
+}
+
+void remember_slope(BracketMemory& memory, double slope) {
+    if (std::isfinite(slope) && slope != 0.0) memory.slope = slope;
+}
+
+// The warm bracket: AeroDyn's search would find the momentum region's ends of
+// opposite signs (the memory's) and narrow its bracket to the side of the guess
+// where the near end's sign differs from f(guess)'s or not. The root is sought
+// on that side only, between the guess and a point a guessed step away (then
+// four times as far): a sign change there is a root in the bracket AeroDyn's
+// Brent would search. Brent solves in it, called as AeroDyn calls it (the
+// guess the upper end when the root lies towards the near end). Returns false
+// when it finds no valid root: the full search then decides.
+bool warm_bracket(const ElementTerms& el, double guess, double f_guess, BracketMemory& memory,
+                  Residual (&scratch)[4], SolvedPhi& out) {
+    if (!memory.ends_known || memory.slope == 0.0) return false;
+    const Region region = momentum_region(el.in.vx);
+    if (!strictly_between(guess, region.near, region.far)) return false;
+    const bool towards_near = (f_guess >= 0) != memory.near_end_nonnegative;
+    const double end = towards_near ? region.near : region.far;
+    const double room = std::abs(end - guess), direction = end > guess ? 1.0 : -1.0;
+    const double step = 1.5 * std::abs(f_guess / memory.slope) + el.opt.angle_tolerance;
+    double inner = guess, f_inner = f_guess;
+    bool inner_valid = true;
+    for (const double factor : {1.0, 4.0}) {
+        if (factor * step >= room) return false;
+        const double probe = guess + direction * factor * step;
+        const Residual& r = scratch[1] = bem_residual(el, probe);
+        if ((r.f >= 0) == (f_guess >= 0)) {
+            inner = probe;
+            f_inner = r.f;
+            inner_valid = r.valid;
+            continue;
+        }
+        const BrentResult root =
+            towards_near ? brent(el, probe, inner, r.f, f_inner, inner_valid, scratch[3])
+                         : brent(el, inner, probe, f_inner, r.f, r.valid, scratch[3]);
+        if (!root.valid) return false;
+        remember_slope(memory, root.slope);
+        out = {root.x, true, root.at_b};
+        return true;
+    }
+    return false;
+}
+
 // AeroDyn's BEMT_UnCoupledSolve: the guess if it is still a root, else the
-// three regions in AeroDyn's order, the first bracketed valid root.
-SolvedPhi solve_phi(const ElementTerms& el, Residual (&scratch)[4]) {
+// three regions in AeroDyn's order, the first bracketed valid root. With a
+// memory, the warm bracket before the regions.
+SolvedPhi solve_phi(const ElementTerms& el, Residual (&scratch)[4], BracketMemory* memory) {
     const ElementInput& in = el.in;
     const BemOptions& opt = el.opt;
     if (velocity_is_zero(in.vx)) return {0.0, true};
@@ -162,15 +229,20 @@ SolvedPhi solve_phi(const ElementTerms& el, Residual (&scratch)[4]) {
         if (std::abs(r.f) < opt.tolerance && r.valid) return {guess, true, &r};
         guess_is_valid = r.valid;
         f_guess = r.f;
+        SolvedPhi warm;
+        if (memory && guess_is_valid && warm_bracket(el, guess, f_guess, *memory, scratch, warm))
+            return warm;
     }
+    if (memory) memory->ends_known = false; // until region 0's Brent finds a valid root
 
     // Regions: the momentum region first, then the two others in the order the
     // previous phi suggests.
     double lower[3], upper[3];
     const bool near_zero = guess < pi / 4 && guess > -pi / 4;
     const double s = in.vx > 0 ? 1.0 : -1.0;
-    lower[0] = s * phi_margin;
-    upper[0] = s * (pi / 2 - phi_margin);
+    const Region momentum = momentum_region(in.vx);
+    lower[0] = momentum.near;
+    upper[0] = momentum.far;
     const int second = near_zero ? 1 : 2, third = near_zero ? 2 : 1;
     lower[second] = -s * pi / 4;
     upper[second] = -s * phi_margin;
@@ -193,6 +265,7 @@ SolvedPhi solve_phi(const ElementTerms& el, Residual (&scratch)[4]) {
             return {hi, true, &r2};
         }
         if ((f1 >= 0) == (f2 >= 0)) continue; // no sign change in this region
+        const bool near_nonnegative = f1 >= 0;
         if (guess_is_valid && ((lo < guess && guess < hi) || (hi < guess && guess < lo))) {
             // Narrow the bracket with the previous solution.
             if ((f1 >= 0) != (f_guess >= 0)) {
@@ -205,7 +278,14 @@ SolvedPhi solve_phi(const ElementTerms& el, Residual (&scratch)[4]) {
             }
         }
         const BrentResult root = brent(el, lo, hi, f1, f2, hi_valid, scratch[3]);
-        if (root.valid) return {root.x, true, root.at_b};
+        if (root.valid) {
+            if (memory && i == 0) {
+                memory->ends_known = true;
+                memory->near_end_nonnegative = near_nonnegative;
+                remember_slope(*memory, root.slope);
+            }
+            return {root.x, true, root.at_b};
+        }
         guess_is_valid = false; // AeroDyn carries Brent's last validity on
     }
     return {inflow_angle(in.vx, in.vy, 0.0, 0.0), false};
@@ -337,11 +417,13 @@ Residual bem_residual(const ElementTerms& e, double phi) {
     return r;
 }
 
-ElementSolution solve_inductions(const ElementInput& in, const BemOptions& opt) {
+namespace {
+
+ElementSolution inductions(const ElementInput& in, const BemOptions& opt, BracketMemory* memory) {
     ElementSolution s;
     Residual scratch[4];
     const ElementTerms terms(in, opt);
-    const SolvedPhi solved = solve_phi(terms, scratch);
+    const SolvedPhi solved = solve_phi(terms, scratch, memory);
     s.phi_bem = solved.phi;
     s.valid = solved.valid;
 
@@ -357,6 +439,17 @@ ElementSolution solve_inductions(const ElementInput& in, const BemOptions& opt) 
     s.a_bem = a;
     s.ap_bem = ap;
     return s;
+}
+
+} // namespace
+
+ElementSolution solve_inductions(const ElementInput& in, const BemOptions& opt) {
+    return inductions(in, opt, nullptr);
+}
+
+ElementSolution solve_inductions(const ElementInput& in, const BemOptions& opt,
+                                 BracketMemory& memory) {
+    return inductions(in, opt, &memory);
 }
 
 void finish_element(const ElementInput& in, const BemOptions& opt, double rho, ElementSolution& s) {

@@ -50,16 +50,23 @@ BemRotor::BemRotor(const RotorInput& input, double hub_radius)
             polars_.back().emplace(a.tables.front());
     }
     result_.blades.resize(input.blades.size());
-    for (std::size_t k = 0; k < input.blades.size(); ++k)
+    brackets_.resize(input.blades.size());
+    for (std::size_t k = 0; k < input.blades.size(); ++k) {
         result_.blades[k].resize(input.blades[k].size());
+        brackets_[k].resize(input.blades[k].size());
+    }
 }
 
 const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind, bool warm_start,
                                       bool loads) {
     const bool cached = warm_start && solved_ && frozen_.empty();
-    if (cached && cache_.recall(motion, wind, result_)) {
-        if (loads && !result_.loads) finish(motion);
-        return result_;
+    if (cached) {
+        const int kept = cache_.recall(motion, wind);
+        if (kept != RotorCache::no_entry) {
+            view_ = kept;
+            if (loads && !result().loads) finish(motion);
+            return result();
+        }
     }
     if (!cached) cache_.clear();
     set_inputs(motion, wind, warm_start);
@@ -67,19 +74,35 @@ const RotorResult& BemRotor::evaluate(const RotorMotion& motion, const Vec& wind
         for (std::size_t j = 0; j < result_.blades[k].size(); ++j) {
             NodeResult& n = result_.blades[k][j];
             if (frozen_.empty())
-                n.bem = solve_inductions(n.input, options_);
+                n.bem = warm_bracket_ ? solve_inductions(n.input, options_, brackets_[k][j])
+                                      : solve_inductions(n.input, options_);
             else
                 frozen_element(n, frozen_[k][j]);
         }
     result_.loads = !frozen_.empty(); // a frozen wake's nodes have their loads
     if (loads || result_.loads) finish(motion);
-    if (cached) cache_.keep(result_);
+    if (cached) mirror_ = cache_.keep(result_);
     solved_ = true;
     return result_;
 }
 
+void BemRotor::materialize() {
+    if (view_ == RotorCache::no_entry) return;
+    if (mirror_ != view_) {
+        result_ = cache_.entry(view_);
+        mirror_ = view_;
+    }
+    view_ = RotorCache::no_entry;
+}
+
+RotorResult& BemRotor::mutable_result() {
+    materialize();
+    mirror_ = RotorCache::no_entry;
+    return result_;
+}
+
 void BemRotor::finish(const RotorMotion& motion) {
-    if (!result_.loads)
+    if (!mutable_result().loads)
         for (auto& nodes : result_.blades)
             for (NodeResult& n : nodes)
                 finish_element(n.input, options_, input_.air_density, n.bem);
@@ -92,6 +115,7 @@ const RotorResult& BemRotor::element_inputs(const RotorMotion& motion, const Vec
 }
 
 void BemRotor::set_inputs(const RotorMotion& motion, const Vec& wind, bool warm_start) {
+    mutable_result(); // the guesses are the current result's roots
     const std::size_t nb = std::min(motion.blades.size(), input_.blades.size());
     if (nb == 0) throw std::invalid_argument("blade elements: no blade in motion");
     const Vec x_disk = motion.hub_axes.col(0);
@@ -190,6 +214,7 @@ const RotorResult& BemRotor::integrate(const RotorMotion& motion) {
     const double omega = motion.hub_angular_velocity.dot(x_disk);
     const double rho = input_.air_density;
     Vec force = Vec::Zero(), moment = Vec::Zero();
+    RotorResult& r = mutable_result();
     const std::size_t nb = std::min(motion.blades.size(), result_.blades.size());
     for (std::size_t k = 0; k < nb; ++k) {
         const auto& nodes = result_.blades[k];
@@ -207,7 +232,6 @@ const RotorResult& BemRotor::integrate(const RotorMotion& motion) {
                       (q.position - motion.hub_position).cross(lq) + len / 2.0 * (mp + mq);
         }
     }
-    RotorResult& r = result_;
     r.loads = true;
     const double v_dot_x = r.v_avg_xh, r_max = r.r_max;
     r.fxh = force.dot(x_disk);
@@ -226,9 +250,10 @@ const RotorResult& BemRotor::integrate(const RotorMotion& motion) {
 
 void BemRotor::freeze_wake() {
     if (!solved_) throw std::logic_error("blade elements: a frozen wake needs an evaluation first");
-    frozen_.assign(result_.blades.size(), {});
-    for (std::size_t k = 0; k < result_.blades.size(); ++k)
-        for (const NodeResult& n : result_.blades[k])
+    const RotorResult& current = result();
+    frozen_.assign(current.blades.size(), {});
+    for (std::size_t k = 0; k < current.blades.size(); ++k)
+        for (const NodeResult& n : current.blades[k])
             frozen_[k].push_back({n.bem.a * n.vx, n.bem.ap * n.vy});
 }
 

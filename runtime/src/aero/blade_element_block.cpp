@@ -249,6 +249,7 @@ private:
             // The hub radius: blade 1's root from the apex (ElastoDyn's HubRad).
             const double hub_radius = (frames_[0].r - motion_.hub_position).norm();
             rotor_.emplace(s_.rotor, hub_radius);
+            rotor_->use_warm_bracket();
         }
         // InflowWind's wind at each node's deflected position, then the tower's
         // disturbance on top (AeroDyn's InflowOnBlade, DisturbedInflow).

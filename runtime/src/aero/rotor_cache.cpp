@@ -30,8 +30,21 @@ bool same(const std::vector<double>& a, const std::vector<double>& b) {
 
 } // namespace
 
-bool RotorCache::recall(const RotorMotion& motion, const Eigen::Vector3d& wind,
-                        RotorResult& result) {
+namespace {
+
+// Entries: 2 per slot, its quasi-steady result and its applied one.
+int entry_of(std::size_t slot, bool applied) {
+    return static_cast<int>(2 * slot) + (applied ? 1 : 0);
+}
+
+} // namespace
+
+const RotorResult& RotorCache::entry(int id) const {
+    const Slot& s = slots_[static_cast<std::size_t>(id / 2)];
+    return id % 2 ? s.applied.front() : s.quasi_steady.front();
+}
+
+int RotorCache::recall(const RotorMotion& motion, const Eigen::Vector3d& wind) {
     key_.resize(key_size(motion)); // its storage is reused
     double* k = key_.data();
     k = put(k, wind);
@@ -53,14 +66,13 @@ bool RotorCache::recall(const RotorMotion& motion, const Eigen::Vector3d& wind,
         if (!s.solved || !same(s.key, key_)) continue;
         s.used = clock_;
         current_ = i;
-        result = s.quasi_steady.front();
-        return true;
+        return entry_of(static_cast<std::size_t>(i), false);
     }
     current_ = -1;
-    return false;
+    return no_entry;
 }
 
-void RotorCache::keep(const RotorResult& result) {
+int RotorCache::keep(const RotorResult& result) {
     std::size_t oldest = 0;
     for (std::size_t i = 1; i < slots_.size(); ++i)
         if (slots_[i].used < slots_[oldest].used) oldest = i;
@@ -72,26 +84,26 @@ void RotorCache::keep(const RotorResult& result) {
     s.has_applied = false;
     s.used = clock_;
     current_ = static_cast<int>(oldest);
+    return entry_of(oldest, false);
 }
 
-bool RotorCache::recall_applied(std::uint64_t generation, const std::vector<double>& omega,
-                                RotorResult& result) const {
-    if (current_ < 0) return false;
+int RotorCache::recall_applied(std::uint64_t generation, const std::vector<double>& omega) const {
+    if (current_ < 0) return no_entry;
     const Slot& s = slots_[static_cast<std::size_t>(current_)];
-    if (!s.has_applied || s.generation != generation || !same(s.omega, omega)) return false;
-    result = s.applied.front();
-    return true;
+    if (!s.has_applied || s.generation != generation || !same(s.omega, omega)) return no_entry;
+    return entry_of(static_cast<std::size_t>(current_), true);
 }
 
-void RotorCache::keep_applied(std::uint64_t generation, const std::vector<double>& omega,
-                              const RotorResult& result) {
-    if (current_ < 0) return;
+int RotorCache::keep_applied(std::uint64_t generation, const std::vector<double>& omega,
+                             const RotorResult& result) {
+    if (current_ < 0) return no_entry;
     Slot& s = slots_[static_cast<std::size_t>(current_)];
     s.generation = generation;
     s.omega = omega;
     s.applied.resize(1);
     s.applied.front() = result;
     s.has_applied = true;
+    return entry_of(static_cast<std::size_t>(current_), true);
 }
 
 void RotorCache::clear() {

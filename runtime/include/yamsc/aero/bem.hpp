@@ -108,6 +108,26 @@ ElementSolution solve_element(const ElementInput& in, const BemOptions& opt, dou
 // finish_element: the skew correction, the low-TSR blend, the inflow angle,
 // coefficients and loads (what DBEMT's filtered inductions replace).
 ElementSolution solve_inductions(const ElementInput& in, const BemOptions& opt);
+
+// What one element's last solves leave for the next one's warm bracket: the
+// signs of the residual at the momentum region's ends, from the last search
+// that evaluated them and found its root inside that region by Brent, and the
+// residual's slope near the last root (the step to the next root is guessed
+// from it).
+struct BracketMemory {
+    bool ends_known = false;
+    bool near_end_nonnegative = false; // f at the region's end near phi = 0 is >= 0
+    double slope = 0;                  // df/dphi by the last root's final bracket
+};
+// solve_inductions with a warm bracket (docs/aerodynamics.md): after AeroDyn's
+// test of the previous root, the root is first bracketed between it and one
+// point on the side AeroDyn's search would narrow to, the memory's end signs
+// standing in for the region's ends; Brent then solves in that bracket. When it
+// holds no sign change or its root is not valid, AeroDyn's full search runs and
+// refreshes the memory. The root agrees with the full search's to Brent's
+// tolerances (opt.tolerance, opt.angle_tolerance), not bit for bit.
+ElementSolution solve_inductions(const ElementInput& in, const BemOptions& opt,
+                                 BracketMemory& memory);
 void finish_element(const ElementInput& in, const BemOptions& opt, double rho, ElementSolution& s);
 
 // The element at given inductions a, a' (after every correction): its inflow

@@ -72,7 +72,9 @@ public:
     /// with loads at a point kept without them completes them.
     const RotorResult& evaluate(const RotorMotion& motion, const Eigen::Vector3d& wind,
                                 bool warm_start, bool loads = true);
-    const RotorResult& result() const { return result_; }
+    const RotorResult& result() const {
+        return view_ == RotorCache::no_entry ? result_ : cache_.entry(view_);
+    }
     /// The nodes' element inputs at `motion` (their frames, relative winds, radii,
     /// the disk's average wind, skew and TSR) without solving the BEM: the nodes'
     /// solutions and the rotor's integrals stay those of the last evaluate, and
@@ -95,7 +97,7 @@ public:
     /// The nodes' loads and the integrals of an evaluate without loads.
     void complete_loads(const RotorMotion& motion) { finish(motion); }
     /// The nodes' results, for such a replacement.
-    std::vector<std::vector<NodeResult>>& nodes() { return result_.blades; }
+    std::vector<std::vector<NodeResult>>& nodes() { return mutable_result().blades; }
     /// A caller replacing the nodes keeps its result with the solution just
     /// evaluated (rotor_cache.hpp: `generation` and `omega` are what that result
     /// depends on besides the solution) and recalls it instead of replacing
@@ -103,11 +105,20 @@ public:
     /// returns the kept solution (its roots within the solver's tolerance of a
     /// new solve's).
     bool recall_applied(std::uint64_t generation, const std::vector<double>& omega) {
-        return cache_.recall_applied(generation, omega, result_);
+        const int kept = cache_.recall_applied(generation, omega);
+        if (kept != RotorCache::no_entry) view_ = kept;
+        return kept != RotorCache::no_entry;
     }
     void keep_applied(std::uint64_t generation, const std::vector<double>& omega) {
-        cache_.keep_applied(generation, omega, result_);
+        materialize();
+        const int kept = cache_.keep_applied(generation, omega, result_);
+        if (kept != RotorCache::no_entry) mirror_ = kept;
     }
+
+    /// Each later warm-started evaluate solves its nodes with a warm bracket
+    /// (bem.hpp: solve_inductions with a BracketMemory): the roots agree with
+    /// AeroDyn's search to the solver's tolerances. Time stepping asks for it.
+    void use_warm_bracket() { warm_bracket_ = true; }
 
     /// A node's orientation relative to its blade's root, from the blade file:
     /// curve angle about y, then the twist about -z (AeroDyn's EulerConstruct(0, crv, -twist)).
@@ -126,6 +137,16 @@ private:
     };
     std::vector<std::vector<Induced>> frozen_; // [blade][node]; empty: the BEM is solved
     RotorCache cache_;
+    // result() is the cache's entry view_ (a recall's, read in place) or, with
+    // no_entry, result_. mirror_: the entry result_ equals bit for bit (a keep's
+    // source, or the entry last copied into it), so that a recall of it copies
+    // nothing; no_entry once result_ changes.
+    int view_ = RotorCache::no_entry;
+    int mirror_ = RotorCache::no_entry;
+    void materialize();            // result_ holds result()'s numbers
+    RotorResult& mutable_result(); // result_, to be changed
+    bool warm_bracket_ = false;
+    std::vector<std::vector<BracketMemory>> brackets_; // [blade][node]
     void set_inputs(const RotorMotion& motion, const Eigen::Vector3d& wind, bool warm_start);
     void finish(const RotorMotion& motion); // the loads (finish_element) and integrals
     void frozen_element(NodeResult& n, const Induced& induced) const;

@@ -7,7 +7,9 @@
 // (compared bit for bit) and, once the unsteady parts (element_dynamics.hpp)
 // have replaced its nodes, with that result too, the state generation and the
 // node angular velocities it used. A hit returns the stored numbers; anything
-// else solves.
+// else solves. The kept results stay where they are: a recall names the kept
+// entry (entry()), for the rotor to read in place or to copy when it changes
+// its result.
 #include <Eigen/Core>
 
 #include <array>
@@ -21,19 +23,24 @@ struct RotorResult; // complete before a RotorCache is made (bem_rotor.hpp)
 
 class RotorCache {
 public:
-    /// The quasi-steady solution at (motion, wind), if kept: copied into `result`.
-    bool recall(const RotorMotion& motion, const Eigen::Vector3d& wind, RotorResult& result);
+    /// The entry of the quasi-steady solution at (motion, wind), if kept, else
+    /// no_entry. An entry's result stays until a keep into it.
+    int recall(const RotorMotion& motion, const Eigen::Vector3d& wind);
     /// `result`, just solved at the (motion, wind) of the last recall that
-    /// missed, into the least recently used slot.
-    void keep(const RotorResult& result);
+    /// missed, into the least recently used slot; returns its entry.
+    int keep(const RotorResult& result);
 
     /// The current solution (the last recalled or kept) with the unsteady parts
     /// of state `generation` applied at the node angular velocities `omega`
-    /// (flattened), if kept: copied into `result`.
-    bool recall_applied(std::uint64_t generation, const std::vector<double>& omega,
-                        RotorResult& result) const;
-    void keep_applied(std::uint64_t generation, const std::vector<double>& omega,
-                      const RotorResult& result);
+    /// (flattened): its entry if kept, else no_entry.
+    int recall_applied(std::uint64_t generation, const std::vector<double>& omega) const;
+    /// Returns the entry kept, or no_entry when nothing is current.
+    int keep_applied(std::uint64_t generation, const std::vector<double>& omega,
+                     const RotorResult& result);
+
+    static constexpr int no_entry = -1;
+    /// The result an entry of recall, keep, recall_applied or keep_applied holds.
+    const RotorResult& entry(int id) const;
 
     /// Nothing is current and nothing kept (a frozen wake, new options).
     void clear();
