@@ -338,16 +338,21 @@ UnsteadyOutput evaluate(const UnsteadyAirfoil& af, const UnsteadySettings& s, do
 
 namespace {
 
-// The chain of (u, dt) from the state x: the memo's, else computed. The memo is
-// emptied, as the state is about to change.
-Chain chain_for_step(const UnsteadyAirfoil& af, const UnsteadySettings& s, double chord, double dt,
-                     const UnsteadyInput& u, const MinnemaPierceState& x, MinnemaPierceMemo& memo) {
-    const Chain* kept = nullptr;
+// The chain of (u, dt) from the state x: the memo's (no copy), else computed into
+// `own`.
+const Chain& chain_for_step(const UnsteadyAirfoil& af, const UnsteadySettings& s, double chord,
+                            double dt, const UnsteadyInput& u, const MinnemaPierceState& x,
+                            const MinnemaPierceMemo& memo, Chain& own) {
     for (const auto& e : memo.entries)
-        if (same_input(e, u, dt)) kept = &e.chain;
-    const Chain kc = kept ? *kept : kelvin_chain(af, s, chord, dt, u, x);
-    memo = MinnemaPierceMemo{};
-    return kc;
+        if (same_input(e, u, dt)) return e.chain;
+    own = kelvin_chain(af, s, chord, dt, u, x);
+    return own;
+}
+
+// The memo emptied, as the state has changed.
+void forget(MinnemaPierceMemo& memo) {
+    for (auto& e : memo.entries) e.valid = false;
+    memo.next = 0;
 }
 
 } // namespace
@@ -356,9 +361,11 @@ UnsteadyOutput step(const UnsteadyAirfoil& af, const UnsteadySettings& s, double
                     const UnsteadyInput& in, MinnemaPierceState& x, MinnemaPierceMemo& memo) {
     require_model(s);
     const UnsteadyInput u = fixed(in);
-    const Chain kc = chain_for_step(af, s, chord, dt, u, x, memo);
+    Chain own;
+    const Chain& kc = chain_for_step(af, s, chord, dt, u, x, memo, own);
     const UnsteadyOutput y = outputs(af, s, chord, u, x, x.first_pass ? nullptr : &kc);
     update(af.constants(), kc, x);
+    forget(memo);
     return y;
 }
 
@@ -366,7 +373,9 @@ void advance(const UnsteadyAirfoil& af, const UnsteadySettings& s, double chord,
              const UnsteadyInput& in, MinnemaPierceState& x, MinnemaPierceMemo& memo) {
     require_model(s);
     const UnsteadyInput u = fixed(in);
-    update(af.constants(), chain_for_step(af, s, chord, dt, u, x, memo), x);
+    Chain own;
+    update(af.constants(), chain_for_step(af, s, chord, dt, u, x, memo, own), x);
+    forget(memo);
 }
 
 } // namespace yamsc::aero
