@@ -175,8 +175,9 @@ void ElementDynamics::step_unsteady(double interval) {
     // UA steps by AeroDyn's p%dt, the coupling interval: the first step's length,
     // whatever the last bits of a later t_next - t (the chain apply() evaluated at
     // the step's start, the memo, is then the one the update takes). A step that
-    // differs by more than round-off (another step size) steps by its own length.
-    if (ua_dt_ == 0 || std::abs(interval - ua_dt_) > 1e-9 * ua_dt_) ua_dt_ = interval;
+    // differs by more than round-off (another step size) steps by its own length;
+    // the round-off of t + dt - t stays below 1e-6 of dt while t < 1e9 dt.
+    if (ua_dt_ == 0 || std::abs(interval - ua_dt_) > 1e-6 * ua_dt_) ua_dt_ = interval;
     const double dt = ua_dt_;
     ++generation_;
     std::size_t e = 0;
