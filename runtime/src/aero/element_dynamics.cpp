@@ -171,13 +171,14 @@ void ElementDynamics::sample(const RotorResult& r, DbemtInput& u, bool stale_phi
     dbemt_->set_disk_input(u, a_qs_.data(), r.v_avg_xh);
 }
 
-void ElementDynamics::step_unsteady(double dt) {
-    // The step's own t_next - t, which differs from the last step's in the last
-    // bits in about half the steps: there the chain apply() evaluated at the
-    // step's start (the memo) is not the one the update takes. A constant dt
-    // (AeroDyn's p%dt) would save that chain but move a turbulent run's
-    // trajectory by that round-off, which the closed loop amplifies.
-    ua_dt_ = dt;
+void ElementDynamics::step_unsteady(double interval) {
+    // UA steps by AeroDyn's p%dt, the coupling interval: the first step's length,
+    // whatever the last bits of a later t_next - t (the chain apply() evaluated at
+    // the step's start, the memo, is then the one the update takes). A step that
+    // differs by more than round-off (another step size) steps by its own length;
+    // the round-off of t + dt - t stays below 1e-6 of dt while t < 1e9 dt.
+    if (ua_dt_ == 0 || std::abs(interval - ua_dt_) > 1e-6 * ua_dt_) ua_dt_ = interval;
+    const double dt = ua_dt_;
     ++generation_;
     std::size_t e = 0;
     for (std::size_t k = 0; k < input_.blades.size(); ++k)

@@ -61,7 +61,7 @@ private:
                          const std::vector<std::vector<Eigen::Vector3d>>& node_omega,
                          std::vector<UnsteadyInput>& u) const;
     void start_dbemt(const RotorResult& r, double dt);
-    void step_unsteady(double dt);
+    void step_unsteady(double interval);
     void locate_ua_span(const RotorResult& r) const;
     bool ua_node(std::size_t blade, std::size_t node) const;
 
@@ -84,8 +84,8 @@ private:
     mutable std::vector<MinnemaPierceMemo> mp_memo_; // the chains apply computed
     std::vector<OyeState> oye_;
     std::vector<UnsteadyInput> ua_t_, ua_next_;
-    double ua_dt_ = 0;
-    long step_ = 0; // AeroDyn's n of the next update
+    double ua_dt_ = 0; // UA's step, AeroDyn's p%dt (step_unsteady)
+    long step_ = 0;    // AeroDyn's n of the next update
     // Counts the changes of the states apply reads (RotorCache's generation).
     std::uint64_t generation_ = 0;
     mutable std::vector<double> omega_key_;

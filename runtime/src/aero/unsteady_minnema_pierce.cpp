@@ -83,11 +83,12 @@ double f_c_from_lookup(const UnsteadyAirfoil& af, const PolarAt& at, double alph
 
 using Chain = MinnemaPierceChain;
 
-Chain kelvin_chain(const UnsteadyAirfoil& af, const UnsteadySettings& s, double c, double dt,
-                   const UnsteadyInput& u, const MinnemaPierceState& x) {
+// Written in place (the memo's entry): no copy of the chain.
+void kelvin_chain(const UnsteadyAirfoil& af, const UnsteadySettings& s, double c, double dt,
+                  const UnsteadyInput& u, const MinnemaPierceState& x, Chain& kc) {
     const UnsteadyConstants& k = af.constants();
     const double eta_e = s.f_lookup ? 1.0 : k.eta_e;
-    Chain kc{};
+    kc = Chain{};
     const double M = u.U / s.speed_of_sound;
     if (std::abs(M) >= 1)
         throw std::domain_error("unsteady aerodynamics: Mach number of 1 or more");
@@ -173,7 +174,6 @@ Chain kelvin_chain(const UnsteadyAirfoil& af, const UnsteadySettings& s, double 
             kc.cn_v = deficiency(kc.ds, kc.T_V, x.cn_v, kc.C_V, x.C_V);
         kc.cn_v = std::max(0.0, kc.cn_v);
     }
-    return kc;
 }
 
 UnsteadyOutput outputs(const UnsteadyAirfoil& af, const UnsteadySettings& s, double c,
@@ -329,7 +329,8 @@ UnsteadyOutput evaluate(const UnsteadyAirfoil& af, const UnsteadySettings& s, do
     if (x.first_pass) return outputs(af, s, chord, u, x, nullptr);
     MinnemaPierceMemo::Entry& e = memo.entries[memo.next];
     memo.next = 1 - memo.next;
-    e.chain = kelvin_chain(af, s, chord, dt, u, x);
+    e.valid = false; // until the chain is complete (it may throw)
+    kelvin_chain(af, s, chord, dt, u, x, e.chain);
     e.u = u;
     e.dt = dt;
     e.valid = true;
@@ -338,16 +339,21 @@ UnsteadyOutput evaluate(const UnsteadyAirfoil& af, const UnsteadySettings& s, do
 
 namespace {
 
-// The chain of (u, dt) from the state x: the memo's, else computed. The memo is
-// emptied, as the state is about to change.
-Chain chain_for_step(const UnsteadyAirfoil& af, const UnsteadySettings& s, double chord, double dt,
-                     const UnsteadyInput& u, const MinnemaPierceState& x, MinnemaPierceMemo& memo) {
-    const Chain* kept = nullptr;
+// The chain of (u, dt) from the state x: the memo's (no copy), else computed into
+// `own`.
+const Chain& chain_for_step(const UnsteadyAirfoil& af, const UnsteadySettings& s, double chord,
+                            double dt, const UnsteadyInput& u, const MinnemaPierceState& x,
+                            const MinnemaPierceMemo& memo, Chain& own) {
     for (const auto& e : memo.entries)
-        if (same_input(e, u, dt)) kept = &e.chain;
-    const Chain kc = kept ? *kept : kelvin_chain(af, s, chord, dt, u, x);
-    memo = MinnemaPierceMemo{};
-    return kc;
+        if (same_input(e, u, dt)) return e.chain;
+    kelvin_chain(af, s, chord, dt, u, x, own);
+    return own;
+}
+
+// The memo emptied, as the state has changed.
+void forget(MinnemaPierceMemo& memo) {
+    for (auto& e : memo.entries) e.valid = false;
+    memo.next = 0;
 }
 
 } // namespace
@@ -356,9 +362,11 @@ UnsteadyOutput step(const UnsteadyAirfoil& af, const UnsteadySettings& s, double
                     const UnsteadyInput& in, MinnemaPierceState& x, MinnemaPierceMemo& memo) {
     require_model(s);
     const UnsteadyInput u = fixed(in);
-    const Chain kc = chain_for_step(af, s, chord, dt, u, x, memo);
+    Chain own;
+    const Chain& kc = chain_for_step(af, s, chord, dt, u, x, memo, own);
     const UnsteadyOutput y = outputs(af, s, chord, u, x, x.first_pass ? nullptr : &kc);
     update(af.constants(), kc, x);
+    forget(memo);
     return y;
 }
 
@@ -366,7 +374,9 @@ void advance(const UnsteadyAirfoil& af, const UnsteadySettings& s, double chord,
              const UnsteadyInput& in, MinnemaPierceState& x, MinnemaPierceMemo& memo) {
     require_model(s);
     const UnsteadyInput u = fixed(in);
-    update(af.constants(), chain_for_step(af, s, chord, dt, u, x, memo), x);
+    Chain own;
+    update(af.constants(), chain_for_step(af, s, chord, dt, u, x, memo, own), x);
+    forget(memo);
 }
 
 } // namespace yamsc::aero
