@@ -40,7 +40,8 @@ InductionFactors filtered_induction(const Dbemt& dbemt, const DbemtInput& u, con
 }
 
 ElementSolution element_with_induction(const ElementInput& in, const BemOptions& opt, double rho,
-                                       InductionFactors f, const ElementSolution& solved) {
+                                       InductionFactors f, const ElementSolution& solved,
+                                       ElementCoefficients coefficients_from) {
     ElementSolution s;
     s.phi_bem = solved.phi_bem;
     s.valid = solved.valid;
@@ -60,7 +61,8 @@ ElementSolution element_with_induction(const ElementInput& in, const BemOptions&
     s.phi = std::atan2(wx, wy);
     s.alpha = s.phi - in.theta;
     s.vrel = std::sqrt(wx * wx + wy * wy);
-    set_coefficients(s, coefficients(in, s.alpha), in.chord, rho, opt);
+    if (coefficients_from == ElementCoefficients::polar)
+        set_coefficients(s, coefficients(in, s.alpha), in.chord, rho, opt);
     return s;
 }
 

@@ -99,12 +99,15 @@ void ElementDynamics::apply(BemRotor& rotor, const RotorMotion& motion,
             NodeResult& n = blades[k][j];
             // calculate_Inductions_from_DBEMT, then the skew correction and the
             // low-TSR blend on the filtered induction.
+            const bool unsteady = ua_on_ && ua_node(k, j);
             if (replaces_loads()) {
                 const InductionFactors f =
                     filtered_induction(*dbemt_, u_next_, x_, e, n.input, options_, n.bem);
-                n.bem = element_with_induction(n.input, options_, rho, f, n.bem);
+                n.bem = element_with_induction(n.input, options_, rho, f, n.bem,
+                                               unsteady ? ElementCoefficients::set_by_caller
+                                                        : ElementCoefficients::polar);
             }
-            if (!ua_on_ || !ua_node(k, j)) continue;
+            if (!unsteady) continue;
             // BEMT_CalcOutput with UA: the coefficients of UA_CalcOutput at the
             // element's inputs of this time.
             UnsteadyInput u;

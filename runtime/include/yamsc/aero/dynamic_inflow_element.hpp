@@ -25,11 +25,19 @@ InductionFactors filtered_induction(const Dbemt& dbemt, const DbemtInput& u, con
                                     std::size_t e, const ElementInput& in, const BemOptions& opt,
                                     const ElementSolution& solved);
 
+// Where the coefficients of an element with given inductions come from: the
+// steady polar, or the caller (unsteady aerodynamics sets its own right after, so
+// the polar's would be looked up for nothing).
+enum class ElementCoefficients { polar, set_by_caller };
+
 // The element with the inductions f (DBEMT's, or any) instead of the quasi-steady
 // ones: the skew redistribution (except at a fixed-induction tip or hub node), the
-// blend in.weight, then phi, alpha, Vrel, the coefficients and the loads per length
-// for air density rho. phi_bem, valid and F are those of `solved`. Allocates nothing.
-ElementSolution element_with_induction(const ElementInput& in, const BemOptions& opt, double rho,
-                                       InductionFactors f, const ElementSolution& solved);
+// blend in.weight, then phi, alpha, Vrel, and with `coefficients` polar the
+// coefficients and the loads per length for air density rho. phi_bem, valid and F
+// are those of `solved`. Allocates nothing.
+ElementSolution
+element_with_induction(const ElementInput& in, const BemOptions& opt, double rho,
+                       InductionFactors f, const ElementSolution& solved,
+                       ElementCoefficients coefficients = ElementCoefficients::polar);
 
 } // namespace yamsc::aero
