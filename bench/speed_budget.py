@@ -29,25 +29,19 @@ import argparse
 import json
 import os
 import re
-import resource
 import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "bench"))
+from bem_speed import cpu  # noqa: E402  (CPU time of a child process)
 DECK = ROOT / "tests/data/reference/operating/deck"
 DT = 0.00625
 OPENFAST_STEADY_CPU_PER_S = (66.0 / 200, 78.0 / 200)
 OPENFAST_TURBULENT_CPU = ROOT / "tests/data/reference/turbulence/openfast_cpu.txt"
 OPENFAST_TURBULENT_TMAX = 360.0
-
-
-def cpu(cmd: list[str], cwd: Path) -> float:
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    subprocess.run(cmd, check=True, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
 
 def main() -> int:
