@@ -64,7 +64,8 @@ double inflow_angle(double vx, double vy, double a, double ap) {
 }
 
 // Brent's method on [lo, hi] with f(lo), f(hi) of opposite signs: stops when the
-// bracket is below opt.angle_tolerance or |f| below opt.tolerance (AeroDyn's sub_brent).
+// bracket is below x_tolerance (AeroDyn's sub_brent: opt.angle_tolerance) or |f|
+// below opt.tolerance.
 // `at_b`: the residual at the returned root, when the search evaluated it there;
 // `slope`: df/dphi by the last two points (a warm bracket's next step).
 struct BrentResult {
@@ -79,9 +80,8 @@ double secant_slope(double x0, double f0, double x1, double f1) {
 }
 
 BrentResult brent(const ElementTerms& el, double lo, double hi, double flo, double fhi,
-                  bool hi_valid, Residual& rb) {
+                  bool hi_valid, Residual& rb, double x_tolerance) {
     const BemOptions& opt = el.opt;
-    const double x_tolerance = opt.angle_tolerance;
     const double eps = std::numeric_limits<double>::epsilon();
     double a = lo, b = hi, fa = flo, fb = fhi;
     double c = a, fc = fa, d = b - a, e = d;
@@ -201,9 +201,15 @@ bool warm_bracket(const ElementTerms& el, double guess, double f_guess, BracketM
             inner_valid = r.valid;
             continue;
         }
+        // A warm bracket starts a few micro-radians wide, where AeroDyn's angle
+        // tolerance would end the search at once, anywhere in it: only |f| below
+        // opt.tolerance ends it, as it ends AeroDyn's wide searches, so that the
+        // root does not depend on the history that placed the bracket.
+        const double x_tolerance = 0.0;
         const BrentResult root =
-            towards_near ? brent(el, probe, inner, r.f, f_inner, inner_valid, scratch[3])
-                         : brent(el, inner, probe, f_inner, r.f, r.valid, scratch[3]);
+            towards_near
+                ? brent(el, probe, inner, r.f, f_inner, inner_valid, scratch[3], x_tolerance)
+                : brent(el, inner, probe, f_inner, r.f, r.valid, scratch[3], x_tolerance);
         if (!root.valid) return false;
         remember_slope(memory, root.slope);
         out = {root.x, true, root.at_b};
@@ -277,7 +283,8 @@ SolvedPhi solve_phi(const ElementTerms& el, Residual (&scratch)[4], BracketMemor
                 f1 = f_guess;
             }
         }
-        const BrentResult root = brent(el, lo, hi, f1, f2, hi_valid, scratch[3]);
+        const BrentResult root =
+            brent(el, lo, hi, f1, f2, hi_valid, scratch[3], opt.angle_tolerance);
         if (root.valid) {
             if (memory && i == 0) {
                 memory->ends_known = true;
