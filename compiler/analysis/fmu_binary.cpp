@@ -133,9 +133,10 @@ std::string build_unit_binary(const UnitSources& sources, const std::string& com
                       sources.external_prototypes + compiler_identity(compiler) + "\n" +
                       joined_words(cxx_flags) + "\n" + joined_words(tools.link_flags);
     if (!sources.external.empty()) key += file_bytes(sources.external);
+    // The archives are the unit's runtime: a rebuilt one is another unit.
     for (const std::vector<std::string>* files : {&tools.archives, &tools.hidden_archives})
-        for (const std::string& a : *files) key += "\n" + compiler_identity(a);
-    key += "\n" + compiler_identity(tools.exports);
+        for (const std::string& a : *files) key += "\n" + file_identity(a);
+    key += "\n" + file_identity(tools.exports);
     const std::string library =
         ModelCache(cache_folder("")).library_path("fmu_unit", driver::digest(key));
     if (::access(library.c_str(), R_OK) == 0) {

@@ -95,6 +95,12 @@ std::string compiler_identity(const std::string& compiler) {
     return compiler + " -> " + (resolved.empty() ? std::string("?") : file_stamp(resolved));
 }
 
+std::string file_identity(const std::string& path) {
+    char resolved[PATH_MAX];
+    if (path.empty() || !::realpath(path.c_str(), resolved)) return path + " -> ?";
+    return path + " -> " + file_stamp(resolved);
+}
+
 std::string program_identity() {
     char self[PATH_MAX];
     const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);

@@ -21,6 +21,11 @@ std::string compiler_of(const std::string& configured);
 /// nothing is run to find out.
 std::string compiler_identity(const std::string& compiler);
 
+/// A file a build reads (an archive, a linker script) as a key: its resolved
+/// path, size and modification time; "?" when it cannot be read. Unlike
+/// compiler_identity, it does not ask for a program.
+std::string file_identity(const std::string& path);
+
 /// yamsc as a key: its version and the size and modification time of the
 /// running executable, so a rebuilt yamsc never loads another build's models.
 std::string program_identity();

@@ -178,3 +178,22 @@ TEST_CASE("compile estimates: the median rate of the last compiles recorded") {
     CHECK(e.measured_here);
     CHECK(e.seconds == doctest::Approx(60.0));
 }
+
+TEST_CASE("a file a build reads is keyed by its contents' stamp, executable or not") {
+    // The units of `yamsc fmu` link the runtime's archives: a rebuilt archive
+    // (not executable, so not a program to look up) must change the unit's key.
+    const std::string dir = scratch_dir("jit_cache", "file_identity");
+    const std::string archive = dir + "/libsome.a";
+    write_file(archive, "one");
+    const std::string first = yamsc::analysis::file_identity(archive);
+    CHECK(has(first, archive + " -> "));
+    CHECK_FALSE(has(first, "-> ?"));
+    // Another spelling of the path: the same file's stamp after the arrow.
+    const auto stamp = [](const std::string& identity) {
+        return identity.substr(identity.find(" -> "));
+    };
+    CHECK(stamp(yamsc::analysis::file_identity(dir + "/./libsome.a")) == stamp(first));
+    write_file(archive, "longer");
+    CHECK(yamsc::analysis::file_identity(archive) != first);
+    CHECK(has(yamsc::analysis::file_identity(dir + "/missing.a"), "-> ?"));
+}
