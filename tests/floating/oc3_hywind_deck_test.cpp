@@ -4,12 +4,10 @@
 // aerodynamics, gives the system's frequencies beside the published ones
 // (docs/validation.md, Floating: the OC3-Hywind turbine from its deck).
 #include "floating_support.hpp"
+#include "modes_at_rest.hpp"
 
 #include "analysis/loaded_model.hpp"
 #include "codegen/routines.hpp"
-
-#include <yamsc/modal.hpp>
-#include <yamsc/trim.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -41,14 +39,7 @@ std::map<std::string, double> frequencies(const std::string& model,
     auto l = analysis::load(model, set, "", false, err, {}, codegen::abi_routines());
     REQUIRE_MESSAGE(l, err.str());
     const runtime::ModelView v = analysis::with_load_blocks(*l, blocks);
-    std::vector<double> u(static_cast<std::size_t>(v.nu), 0.0);
-    const std::vector<double> zero(static_cast<std::size_t>(v.nq), 0.0);
-    const runtime::TrimResult t =
-        runtime::trim(v, zero, zero, u, std::vector<bool>(zero.size(), false));
-    REQUIRE(t.converged);
-    std::vector<double> x(t.q);
-    x.insert(x.end(), t.qd.begin(), t.qd.end());
-    const auto modes = runtime::modal_analysis(runtime::state_matrix_from_view(v, x, u), v.nq);
+    const auto modes = test_support::modes_at_rest(v);
     std::map<std::string, double> f, share;
     for (const runtime::Mode& m : modes) {
         std::vector<double> weighed(m.shape.size());

@@ -8,6 +8,7 @@
 #include "analysis/sea_state_setup.hpp"
 #include "codegen/routines.hpp"
 #include "diag/errors.hpp"
+#include "modes_at_rest.hpp"
 #include "openfast/from_openfast.hpp"
 
 #include <yamsc/modal.hpp>
@@ -299,18 +300,9 @@ std::vector<double> frequencies_at_path(const std::string& name) {
     analysis::BlockOptions b = with_mooring();
     b.hydro = std::string(YAMSC_TEST_DATA_DIR) + "/hydro/oc3_spar_strip.dat";
     const runtime::ModelView v = analysis::with_load_blocks(*l, b);
-    std::vector<double> u(static_cast<std::size_t>(v.nu), 0.0);
-    const std::vector<double> zero(static_cast<std::size_t>(v.nq), 0.0);
-    const runtime::TrimResult t =
-        runtime::trim(v, zero, zero, u, std::vector<bool>(zero.size(), false));
-    REQUIRE(t.converged);
-    std::vector<double> x(t.q);
-    x.insert(x.end(), t.qd.begin(), t.qd.end());
     std::vector<double> f;
-    for (const runtime::Mode& m :
-         runtime::modal_analysis(runtime::state_matrix_from_view(v, x, u), v.nq))
-        f.push_back(m.freq_hz);
-    REQUIRE(f.size() == zero.size());
+    for (const runtime::Mode& m : test_support::modes_at_rest(v)) f.push_back(m.freq_hz);
+    REQUIRE(f.size() == static_cast<std::size_t>(v.nq));
     for (std::size_t i = 0; i < f.size(); ++i)
         MESSAGE(name << " mode " << i + 1 << ": " << f[i] << " Hz");
     return f;
